@@ -1,0 +1,553 @@
+"""The bearing-pair friction model: thermal coupling (fits, preload) + equilibrium + friction.
+
+Composition (Yu 2017 §1–3; Ning §1–2):
+
+1. :func:`thermal_state` — everything that depends on temperature only: the mounted geometry
+   (Yu eq 10–13), the clearance and free contact angle, the loop closure (eq 14–15), the
+   preload at zero external load, the lubricant viscosity (eq 18).
+2. :func:`load_state` — the pair under external axial and radial loads: per-ball loads and
+   contact angles (Jones), the speed-independent torques (eq 1–7, Ning), preload, axial
+   stiffness, maximum contact pressure and the seized flag.
+3. :func:`bearing_outputs` — the speed-dependent part: Palmgren's viscous torque (eq 8), the
+   total (eq 9), breakaway versus running torque, the regularised signed friction torque and
+   the power loss.
+
+:class:`BearingModel` caches 1 and 2, so that a change of speed costs only step 3 and a change
+of load does not re-solve the thermal state.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+from collections import OrderedDict
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from ._checks import check_choice, check_finite, check_positive, check_temperature
+from .equilibrium import _axial_state, _ring_stiffness
+from .fits import RadialFit, mounted_geometry
+from .friction import (
+    BallSetTorques,
+    FrictionCoefficients,
+    ball_set_torques,
+    palmgren_viscous_torque,
+    regularised_friction_torque,
+)
+from .geometry import BallBearing, RaceGeometry
+from .preload import (
+    PreloadLoop,
+    loop_interference,
+    pair_axial_stiffness,
+    pair_equilibrium,
+    pair_offsets,
+    shim_for_preload,
+)
+from .viscosity import WaltherViscosity
+
+LUBRICATIONS = ("grease", "solid")
+DEFAULT_COEFFICIENTS = FrictionCoefficients()
+#: Static load limit: 4200 MPa maximum Hertz pressure for ball bearings (ISO 76:2006, the basis
+#: of the basic static load rating). Above it the pair is reported as seized.
+PRESSURE_LIMIT = 4.2e9
+
+
+@dataclass(frozen=True)
+class Mounting:
+    """Seats and preload loop of a bearing pair (catalogue: ``data/mountings.toml``).
+
+    Attributes
+    ----------
+    key, name : catalogue key and description
+    bearing_key : designation of the bearing it was made for
+    assembly_temperature : T0 [K] at which fits, shim and preload are set
+    fit : :class:`fits.RadialFit`
+    loop : :class:`preload.PreloadLoop`
+    assembly_preload : preload at T0 [N]; when given, the shim is derived from it
+    provenance : ((field, source), ...)
+    """
+
+    key: str
+    name: str
+    bearing_key: str
+    assembly_temperature: float
+    fit: RadialFit
+    loop: PreloadLoop
+    assembly_preload: float | None = None
+    provenance: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self):
+        check_temperature("assembly_temperature", self.assembly_temperature)
+        if self.assembly_preload is not None:
+            check_positive("assembly_preload", self.assembly_preload, "N")
+
+    def source(self, field: str) -> str:
+        return dict(self.provenance).get(field, "")
+
+
+@dataclass(frozen=True)
+class BearingPair:
+    """Configuration of a preloaded pair of angular-contact ball bearings in a frame.
+
+    Attributes
+    ----------
+    bearing : :class:`geometry.BallBearing`
+    mounting : :class:`Mounting`
+    lubrication : "grease" (Yu 2017 eq 9) or "solid" (Ning)
+    lubricant : viscosity model (grease); None for a dry film
+    coefficients : :class:`friction.FrictionCoefficients`
+    regularisation_speed : width ω_r of the smooth sign through zero speed [rad/s]
+    stribeck_speed : decay speed ω_s of the breakaway excess [rad/s]
+    pressure_limit : maximum Hertz pressure above which the pair is seized [Pa]
+    differential_sliding : include Heathcote sliding; None: True for solid, False for grease
+    thermal_coupling : False ignores the fit pressures (Yu Fig 3 "without coupling")
+    """
+
+    bearing: BallBearing
+    mounting: Mounting
+    lubrication: str = "grease"
+    lubricant: WaltherViscosity | None = None
+    coefficients: FrictionCoefficients = DEFAULT_COEFFICIENTS
+    regularisation_speed: float = 1e-3
+    stribeck_speed: float = 1e-2
+    pressure_limit: float = PRESSURE_LIMIT
+    differential_sliding: bool | None = None
+    thermal_coupling: bool = True
+
+    def __post_init__(self):
+        check_choice("lubrication", self.lubrication, LUBRICATIONS)
+        if self.lubrication == "grease" and self.lubricant is None:
+            raise ValueError("lubrication = 'grease' needs a lubricant viscosity model")
+        check_positive("regularisation_speed", self.regularisation_speed, "rad/s")
+        check_positive("stribeck_speed", self.stribeck_speed, "rad/s")
+        check_positive("pressure_limit", self.pressure_limit, "Pa")
+
+    @property
+    def sliding(self) -> bool:
+        if self.differential_sliding is None:
+            return self.lubrication == "solid"
+        return self.differential_sliding
+
+    @classmethod
+    def from_catalog(cls, mounting: str, lubricant: str | None = None, **overrides):
+        """Pair built from catalogue keys: ``mounting`` (``data/mountings.toml``; it names its
+        bearing) and ``lubricant`` (``data/lubricants.toml``; a dry film gives solid
+        lubrication). Other fields as keyword overrides."""
+        from . import catalog
+
+        mnt = catalog.mounting(mounting)
+        kwargs = {"bearing": catalog.bearing(mnt.bearing_key), "mounting": mnt}
+        if lubricant is not None:
+            visc = catalog.lubricant(lubricant)
+            kwargs["lubricant"] = visc
+            kwargs["lubrication"] = "solid" if visc is None else "grease"
+        kwargs.update(overrides)
+        return cls(**kwargs)
+
+
+MOUNTING_CHANGES = (
+    "outer_interference",
+    "inner_interference",
+    "shim",
+    "loop_stiffness",
+    "assembly_preload",
+    "assembly_temperature",
+)
+
+
+def with_mounting(pair: BearingPair, **changes) -> BearingPair:
+    """A copy of ``pair`` with mounting values changed: ``outer_interference``,
+    ``inner_interference`` (diametral, m), ``shim`` (m; clears ``assembly_preload``),
+    ``loop_stiffness`` (N/m, None = from the members), ``assembly_preload`` (N),
+    ``assembly_temperature`` (K)."""
+    unknown = set(changes) - set(MOUNTING_CHANGES)
+    if unknown:
+        raise ValueError(f"mounting change {sorted(unknown)} is not one of {MOUNTING_CHANGES}")
+    m = pair.mounting
+    fit = dataclasses.replace(
+        m.fit,
+        **{k: changes[k] for k in ("outer_interference", "inner_interference") if k in changes},
+    )
+    loop = m.loop
+    if "shim" in changes:
+        loop = dataclasses.replace(loop, shim=changes["shim"])
+    if "loop_stiffness" in changes:
+        loop = dataclasses.replace(loop, stiffness=changes["loop_stiffness"])
+    preload = m.assembly_preload
+    if "shim" in changes:
+        preload = None
+    preload = changes.get("assembly_preload", preload)
+    mounting = dataclasses.replace(
+        m,
+        fit=fit,
+        loop=loop,
+        assembly_preload=preload,
+        assembly_temperature=changes.get("assembly_temperature", m.assembly_temperature),
+    )
+    return dataclasses.replace(pair, mounting=mounting)
+
+
+@functools.lru_cache(maxsize=64)
+def assembly_geometry(pair: BearingPair) -> RaceGeometry:
+    """Mounted geometry at the assembly temperature."""
+    m = pair.mounting
+    return mounted_geometry(
+        pair.bearing, m.fit, m.assembly_temperature, m.assembly_temperature, pair.thermal_coupling
+    ).race
+
+
+@functools.lru_cache(maxsize=64)
+def effective_shim(pair: BearingPair) -> float:
+    """The shim [m]: the loop's, or the one that gives ``assembly_preload`` at T0."""
+    m = pair.mounting
+    if m.assembly_preload is None:
+        return m.loop.shim
+    return shim_for_preload(assembly_geometry(pair), m.assembly_preload, loop_stiffness(pair))
+
+
+def loop_stiffness(pair: BearingPair) -> float:
+    """Structural axial stiffness of the preload loop [N/m] (inf: rigid)."""
+    return pair.mounting.loop.structural_stiffness
+
+
+def loop_closure(pair: BearingPair, temperature):
+    """C(T) = 2·h(T0) + s − Σ σ·L·α·(T − T0) [m] (see :mod:`preload`)."""
+    m = pair.mounting
+    loop = m.loop
+    if effective_shim(pair) != loop.shim:
+        loop = PreloadLoop(loop.members, effective_shim(pair), loop.stiffness)
+    h0 = float(assembly_geometry(pair).first_contact_offset)
+    return 2.0 * h0 + loop_interference(loop, temperature, m.assembly_temperature)
+
+
+@dataclass(frozen=True)
+class ThermalState:
+    """Temperature-only state of the pair (arrays over temperature, or scalars).
+
+    Attributes
+    ----------
+    temperature : T [K]
+    geometry : mounted :class:`RaceGeometry`
+    outer_fit_pressure, inner_fit_pressure : Lamé pressures [Pa]
+    closure : loop closure C [m]
+    loop_stiffness : k_loop [N/m]
+    kinematic_viscosity : ν [m²/s] (0 for a dry film)
+    preload_offset : offset of each bearing at zero external load [m]
+    """
+
+    temperature: np.ndarray
+    geometry: RaceGeometry
+    outer_fit_pressure: np.ndarray
+    inner_fit_pressure: np.ndarray
+    closure: np.ndarray
+    loop_stiffness: float
+    kinematic_viscosity: np.ndarray
+    preload_offset: np.ndarray
+
+    @property
+    def clearance(self):
+        """Operating diametral clearance Pd [m]."""
+        return self.geometry.clearance
+
+    @property
+    def free_contact_angle(self):
+        """Free contact angle at the operating clearance [rad]."""
+        return self.geometry.free_contact_angle
+
+
+def thermal_state(pair: BearingPair, temperature) -> ThermalState:
+    """Temperature-only state at ``temperature`` [K] (scalar or array); Yu 2017 eq 10–18."""
+    t = np.asarray(check_temperature("temperature", temperature), dtype=float)
+    m = pair.mounting
+    mounted = mounted_geometry(
+        pair.bearing, m.fit, t, m.assembly_temperature, pair.thermal_coupling
+    )
+    closure = loop_closure(pair, t)
+    k = loop_stiffness(pair)
+    offsets = pair_offsets(mounted.race, closure, k, 0.0)
+    visc = np.zeros_like(t) if pair.lubricant is None else pair.lubricant.kinematic_viscosity(t)
+    return ThermalState(
+        temperature=t,
+        geometry=mounted.race,
+        outer_fit_pressure=mounted.outer_fit_pressure,
+        inner_fit_pressure=mounted.inner_fit_pressure,
+        closure=closure,
+        loop_stiffness=k,
+        kinematic_viscosity=np.asarray(visc),
+        preload_offset=offsets.offset_a,
+    )
+
+
+@dataclass(frozen=True)
+class LoadState:
+    """Speed-independent state of the pair under load (arrays or scalars).
+
+    Attributes
+    ----------
+    force_a, force_b : axial forces of bearings A and B [N]
+    preload : loop force (F_A + F_B)/2 [N]
+    contact_angle : load-weighted operating contact angle of bearing A [rad] (the free
+        contact angle when A carries no load)
+    axial_stiffness : stiffness of the shaft in the pair [N/m]
+    max_contact_pressure : largest Hertz pressure over all contacts [Pa]
+    seized : max_contact_pressure ≥ the pair's pressure_limit
+    torques : speed-independent torques of both bearings (:class:`friction.BallSetTorques`)
+    converged : the load equilibrium was solved
+    """
+
+    force_a: np.ndarray
+    force_b: np.ndarray
+    preload: np.ndarray
+    contact_angle: np.ndarray
+    axial_stiffness: np.ndarray
+    max_contact_pressure: np.ndarray
+    seized: np.ndarray
+    torques: BallSetTorques
+    converged: bool = True
+
+
+def _torques(pair: BearingPair, geom: RaceGeometry, load, alpha, inner, outer, count=1):
+    t = ball_set_torques(
+        load,
+        alpha,
+        inner,
+        outer,
+        geom.pitch_diameter,
+        geom.ball_diameter,
+        geom.inner_groove_radius,
+        geom.outer_groove_radius,
+        pair.coefficients,
+        pair.lubrication,
+        pair.sliding,
+    )
+    if count == 1:
+        return t
+    return BallSetTorques(*(count * getattr(t, f.name) for f in fields(BallSetTorques)))
+
+
+def _add(t1: BallSetTorques, t2: BallSetTorques) -> BallSetTorques:
+    return BallSetTorques(*(getattr(t1, f.name) + getattr(t2, f.name) for f in fields(t1)))
+
+
+def _max_pressure(load, inner, outer):
+    return np.maximum(inner.max_pressure(load), outer.max_pressure(load)).max(axis=-1)
+
+
+def load_state(pair: BearingPair, thermal: ThermalState, axial_load=0.0, radial_load=0.0):
+    """State of the pair at ``thermal`` under ``axial_load`` [N] (pressing bearing A) and
+    ``radial_load`` [N]. Vectorised over temperature when the radial load is zero (every ball
+    of a bearing alike, Yu eq 4); a radial load is solved per ball (Jones) with the pair
+    equilibrium of :func:`preload.pair_equilibrium` (scalar temperature)."""
+    f_ext = check_finite("axial_load", axial_load, "N")
+    f_r = check_finite("radial_load", radial_load, "N")
+    geom, k = thermal.geometry, thermal.loop_stiffness
+    if np.any(np.asarray(f_r) != 0):
+        return _combined_load_state(pair, thermal, float(f_ext), float(f_r))
+    if np.all(np.asarray(f_ext) == 0):
+        a_a = a_b = thermal.preload_offset
+    else:
+        off = pair_offsets(geom, thermal.closure, k, f_ext)
+        a_a, a_b = off.offset_a, off.offset_b
+    sa, sb = _axial_state(geom, a_a), _axial_state(geom, a_b)
+    z = geom.n_balls
+
+    def torques(s):
+        e = (s.inner, s.outer)
+        one = [type(c)(*(np.asarray(getattr(c, f.name))[..., None] for f in fields(c))) for c in e]
+        q = np.asarray(s.ball_load)[..., None]
+        return _torques(pair, geom, q, np.asarray(s.contact_angle)[..., None], *one, count=z), (
+            q,
+            one,
+        )
+
+    ta, (qa, ea) = torques(sa)
+    tb, (qb, eb) = torques(sb)
+    p_max = np.maximum(_max_pressure(qa, *ea), _max_pressure(qb, *eb))
+    loaded = sa.ball_load > 0
+    angle = np.where(loaded, sa.contact_angle, geom.free_contact_angle)
+    return LoadState(
+        force_a=sa.axial_force,
+        force_b=sb.axial_force,
+        preload=0.5 * (sa.axial_force + sb.axial_force),
+        contact_angle=angle,
+        axial_stiffness=pair_axial_stiffness(sa.axial_stiffness, sb.axial_stiffness, k),
+        max_contact_pressure=p_max,
+        seized=p_max >= pair.pressure_limit,
+        torques=_add(ta, tb),
+    )
+
+
+def _combined_load_state(pair, thermal, f_ext, f_r) -> LoadState:
+    if np.ndim(thermal.temperature):
+        raise ValueError("a radial load needs a scalar temperature (one thermal state)")
+    geom, k = thermal.geometry, thermal.loop_stiffness
+    st = pair_equilibrium(geom, float(thermal.closure), k, f_ext, f_r)
+    la, lb = st.balls_a, st.balls_b
+    t = _add(
+        _torques(pair, geom, la.load, la.contact_angle, la.inner, la.outer),
+        _torques(pair, geom, lb.load, lb.contact_angle, lb.inner, lb.outer),
+    )
+    t = BallSetTorques(*(np.asarray(getattr(t, f.name))[0] for f in fields(t)))
+    qa = la.load[0]
+    angle = (
+        float(np.sum(qa * la.contact_angle[0]) / np.sum(qa))
+        if qa.sum() > 0
+        else geom.free_contact_angle
+    )
+    ka = _ring_stiffness(geom, la)[0, 0, 0]
+    kb = _ring_stiffness(geom, lb)[0, 0, 0]
+    p_max = max(
+        float(_max_pressure(la.load, la.inner, la.outer)[0]),
+        float(_max_pressure(lb.load, lb.inner, lb.outer)[0]),
+    )
+    fa, fb = float(la.axial_force[0]), float(lb.axial_force[0])
+    return LoadState(
+        force_a=fa,
+        force_b=fb,
+        preload=0.5 * (fa + fb),
+        contact_angle=angle,
+        axial_stiffness=float(pair_axial_stiffness(ka, kb, k)),
+        max_contact_pressure=p_max,
+        seized=p_max >= pair.pressure_limit,
+        torques=t,
+        converged=st.converged,
+    )
+
+
+@dataclass(frozen=True)
+class BearingOutputs:
+    """Everything the BearingFriction FMU reports (DESIGN §3), SI; arrays or floats.
+
+    friction_torque [N·m] signed like speed (opposes rotation), running_torque and
+    breakaway_torque [N·m], hysteresis/spin/sliding/viscous_torque [N·m], preload [N],
+    contact_angle [rad], radial_clearance [m], kinematic_viscosity [m²/s], axial_stiffness
+    [N/m], power_loss [W], seized; plus inner_ring_torque/outer_ring_torque [N·m],
+    max_contact_pressure [Pa], outer/inner_fit_pressure [Pa], force_a/force_b [N].
+    """
+
+    friction_torque: float
+    running_torque: float
+    breakaway_torque: float
+    hysteresis_torque: float
+    spin_torque: float
+    sliding_torque: float
+    viscous_torque: float
+    preload: float
+    contact_angle: float
+    radial_clearance: float
+    kinematic_viscosity: float
+    axial_stiffness: float
+    power_loss: float
+    seized: bool
+    inner_ring_torque: float
+    outer_ring_torque: float
+    max_contact_pressure: float
+    outer_fit_pressure: float
+    inner_fit_pressure: float
+    force_a: float
+    force_b: float
+
+    def as_dict(self) -> dict:
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
+def bearing_outputs(
+    pair: BearingPair, thermal: ThermalState, load: LoadState, speed
+) -> BearingOutputs:
+    """Speed-dependent outputs at ``speed`` [rad/s] (Yu 2017 eq 8–9; regularised sign)."""
+    w = check_finite("speed", speed, "rad/s")
+    t = load.torques
+    s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
+    dm = thermal.geometry.pitch_diameter
+    viscous = 2.0 * palmgren_viscous_torque(thermal.kinematic_viscosity, w, dm, s0)
+    viscous_rest = 2.0 * palmgren_viscous_torque(thermal.kinematic_viscosity, 0.0, dm, s0)
+    coulomb = t.hysteresis + t.spin + t.sliding
+    excess = (pair.coefficients.static_friction_ratio - 1.0) * (t.spin + t.sliding)
+    running = coulomb + viscous
+    signed = regularised_friction_torque(
+        w, running, excess, pair.regularisation_speed, pair.stribeck_speed
+    )
+    return BearingOutputs(
+        friction_torque=signed,
+        running_torque=running,
+        breakaway_torque=coulomb + excess + viscous_rest,
+        hysteresis_torque=t.hysteresis,
+        spin_torque=t.spin,
+        sliding_torque=t.sliding,
+        viscous_torque=viscous,
+        preload=load.preload,
+        contact_angle=load.contact_angle,
+        radial_clearance=thermal.clearance,
+        kinematic_viscosity=thermal.kinematic_viscosity,
+        axial_stiffness=load.axial_stiffness,
+        power_loss=signed * w,
+        seized=load.seized,
+        inner_ring_torque=t.inner_ring,
+        outer_ring_torque=t.outer_ring,
+        max_contact_pressure=load.max_contact_pressure,
+        outer_fit_pressure=thermal.outer_fit_pressure,
+        inner_fit_pressure=thermal.inner_fit_pressure,
+        force_a=load.force_a,
+        force_b=load.force_b,
+    )
+
+
+def _scalar(x):
+    return bool(x) if isinstance(x, (bool, np.bool_)) else float(x)
+
+
+class BearingModel:
+    """Cached evaluation of a :class:`BearingPair` at (temperature, speed, axial, radial load).
+
+    The thermal state is cached per temperature and the load state per (temperature, axial
+    load, radial load), each in a small LRU; a change of speed alone costs only the
+    Palmgren and regularisation terms.
+    """
+
+    def __init__(self, pair: BearingPair, cache_size: int = 8):
+        self.pair = pair
+        self._cache_size = cache_size
+        self._thermal: OrderedDict[float, ThermalState] = OrderedDict()
+        self._load: OrderedDict[tuple[float, float, float], LoadState] = OrderedDict()
+
+    def _remember(self, cache: OrderedDict, key, make):
+        try:
+            cache.move_to_end(key)
+            return cache[key]
+        except KeyError:
+            value = make()
+            cache[key] = value
+            if len(cache) > self._cache_size:
+                cache.popitem(last=False)
+            return value
+
+    def thermal(self, temperature: float) -> ThermalState:
+        """Cached :func:`thermal_state` at one temperature [K]."""
+        t = float(check_temperature("temperature", temperature))
+        return self._remember(self._thermal, t, lambda: thermal_state(self.pair, t))
+
+    def load(self, temperature: float, axial_load: float = 0.0, radial_load: float = 0.0):
+        """Cached :func:`load_state` at one temperature [K] and loads [N]."""
+        th = self.thermal(temperature)
+        key = (float(th.temperature), float(axial_load), float(radial_load))
+        return self._remember(
+            self._load, key, lambda: load_state(self.pair, th, axial_load, radial_load)
+        )
+
+    def evaluate(
+        self, temperature: float, speed: float, axial_load: float = 0.0, radial_load: float = 0.0
+    ) -> BearingOutputs:
+        """All outputs at one operating point (floats)."""
+        if not math.isfinite(speed):
+            raise ValueError(f"speed = {speed!r} rad/s is outside the valid range (-inf, inf)")
+        th = self.thermal(temperature)
+        out = bearing_outputs(self.pair, th, self.load(temperature, axial_load, radial_load), speed)
+        return BearingOutputs(**{k: _scalar(v) for k, v in out.as_dict().items()})
+
+    def curves(self, temperatures, speed: float, axial_load: float = 0.0) -> BearingOutputs:
+        """Outputs over an array of temperatures [K] at one speed and axial load, vectorised
+        (zero radial load)."""
+        th = thermal_state(self.pair, temperatures)
+        return bearing_outputs(self.pair, th, load_state(self.pair, th, axial_load, 0.0), speed)

@@ -1,0 +1,234 @@
+"""Friction torque of a ball bearing: elastic hysteresis, ball spin, differential (Heathcote)
+sliding and Palmgren's viscous torque, plus the breakaway/running distinction and a smooth
+regularisation through zero speed.
+
+Grease-lubricated bearing (Yu 2017): M = M_R + M_K + M_L (eq 9) with
+  eq 1–3  hysteresis: each contact resists rolling with F = 3·α_r·b·Q/(16·R), R = Dw/2 the
+          ball radius (Johnson 1985, Contact Mechanics, ch. 9: the hysteresis rolling moment
+          3·α·b·Q/16 divided by the rolling radius; Yu calls R the "Hertz contact radius"),
+          acting at the race contact radius d/2 = (dm ∓ Dw·cos α)/2 (eq 2), summed (eq 3);
+  eq 5–7  spin: M'_K = (3/8)·μ·Q·a·E(e) per contact (Harris & Kotzalas 2007), the larger of
+          inner and outer, projected on the bearing axis by sin α (eq 7);
+  eq 8    Palmgren's viscous torque, see :func:`palmgren_viscous_torque`.
+Solid-lubricated bearing (Ning; equations missing from the received text, reconstructed):
+  hysteresis as above at both races (Ning cites Snare / Jones; same rolling-resistance form);
+  differential sliding at both races (Heathcote slip, :func:`heathcote_sliding_force`; Ning's
+  M_di, M_do with the variables f, Q, a, α, μ, dm, Dw he lists); spin at the inner race only
+  ("outer-race control", Jones 1960), projected by sin α_i; no viscous term.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ._checks import check_nonnegative, check_positive, check_range
+from .units import CST, MM, NMM, RPM
+
+
+def race_contact_radius(pitch_diameter, ball_diameter, contact_angle, race: str):
+    """Radius of the race contact about the bearing axis, (dm ∓ Dw·cos α)/2 [m] (Yu 2017
+    eq 2: − for the inner, + for the outer race)."""
+    sign = -1.0 if race == "inner" else 1.0
+    return 0.5 * (pitch_diameter + sign * ball_diameter * np.cos(contact_angle))
+
+
+def hysteresis_rolling_force(load, semi_minor_axis, ball_diameter, loss_factor):
+    """Rolling resistance of one contact from elastic hysteresis, F_SE = 3·b·α_r·Q/(16·R) [N]
+    (Yu 2017 eq 1) with R = Dw/2 the ball radius (Johnson 1985, ch. 9).
+
+    load Q [N], semi_minor_axis b [m] (rolling direction), ball_diameter Dw [m],
+    loss_factor α_r [-] (energy lost per cycle, < 1 % for metals per Yu)."""
+    return 3.0 * loss_factor * semi_minor_axis * load / (8.0 * ball_diameter)
+
+
+def spin_moment(load, semi_major_axis, e_integral, friction_coefficient):
+    """Spin friction moment of one contact about its normal, M'_K = (3/8)·μ·Q·a·E(e) [N·m]
+    (Yu 2017 eq 6; Harris & Kotzalas 2007). load Q [N], semi_major_axis a [m], e_integral E(e)
+    [-] the complete elliptic integral of the second kind, friction_coefficient μ [-]."""
+    return 0.375 * friction_coefficient * load * semi_major_axis * e_integral
+
+
+def _heathcote_constant() -> float:
+    # Rolling lines at |y| = u0·a where the Hertz line load (1 − u²) splits the contact into
+    # equal halves: u0 − u0³/3 = 1/3 (Heathcote 1921; Johnson 1985 ch. 8: u0 ≈ 0.347).
+    u0 = brentq(lambda u: u - u**3 / 3.0 - 1.0 / 3.0, 0.0, 1.0, xtol=1e-15)
+    c = u0 * u0
+    inner = c * u0 - (c + 1.0) * u0**3 / 3.0 + u0**5 / 5.0  # ∫0^u0 (1−u²)(c−u²) du
+    full = c - (c + 1.0) / 3.0 + 0.2  # ∫0^1 (1−u²)(c−u²) du
+    return 0.75 * 2.0 * (2.0 * inner - full)  # (3/4)·∫_{-1}^{1} (1−u²)|c−u²| du
+
+
+HEATHCOTE = _heathcote_constant()  # ≈ 0.1611
+
+
+def heathcote_sliding_force(load, semi_major_axis, ball_diameter, groove_radius, friction):
+    """Rolling resistance of one contact from differential (Heathcote) sliding [N]:
+    F_d = C_H·μ·Q·a²/(R_c·Dw),  C_H = (3/4)∫(1−u²)|u0² − u²|du ≈ 0.161,
+    R_c = 2·r·Dw/(2·r + Dw) the radius of the deformed contact surface (harmonic mean of ball
+    and groove radii). For a close groove (R_c → Dw/2) this is Johnson's (1985, ch. 8)
+    F ≈ 0.08·μ·Q·(a/R)², R = Dw/2. Reconstructs Ning's M_di, M_do (equations missing from
+    the received text).
+
+    load Q [N], semi_major_axis a [m], ball_diameter Dw [m], groove_radius r [m],
+    friction μ [-]."""
+    r_c = 2.0 * groove_radius * ball_diameter / (2.0 * groove_radius + ball_diameter)
+    return HEATHCOTE * friction * load * semi_major_axis**2 / (r_c * ball_diameter)
+
+
+PALMGREN_THRESHOLD = 2000.0  # ν·n [cSt·rpm] below which eq 8 is speed-independent
+
+
+def palmgren_viscous_torque(kinematic_viscosity, speed, pitch_diameter, s0):
+    """Viscous friction torque of one grease-lubricated bearing [N·m] (Palmgren; Yu 2017 eq 8):
+
+        M_L = 1e-7·s0·(ν0·n)^(2/3)·dm³  [N·mm]   for ν0·n ≥ 2000,
+        M_L = 160e-7·s0·dm³             [N·mm]   for ν0·n < 2000,
+
+    ν0 in cSt, n in rpm, dm in mm (the equation's own units; converted here). The printed 160
+    is 2000^(2/3) = 158.7 rounded up, which makes eq 8 jump by 0.8 % at ν0·n = 2000; the
+    continuous form (max(ν0·n, 2000))^(2/3) is used so that the torque has no step in speed
+    or temperature.
+
+    kinematic_viscosity ν0 [m²/s], speed ω [rad/s] (sign ignored), pitch_diameter dm [m],
+    s0 [-] the bearing/lubrication factor (f0 in Palmgren's notation).
+    """
+    nu_n = kinematic_viscosity / CST * np.abs(speed) / RPM
+    dm_mm = pitch_diameter / MM
+    return 1e-7 * s0 * np.maximum(nu_n, PALMGREN_THRESHOLD) ** (2.0 / 3.0) * dm_mm**3 * NMM
+
+
+def regularised_friction_torque(
+    speed, running_torque, breakaway_excess, regularisation_speed, stribeck_speed
+):
+    """Friction torque opposing rotation, smooth through zero speed [N·m]:
+
+        M(ω) = tanh(ω/ω_r) · (M_run(|ω|) + ΔM_break·exp(−|ω|/ω_s))
+
+    speed ω [rad/s] (signed), running_torque M_run [N·m] at |ω|, breakaway_excess
+    ΔM_break = breakaway − running-at-rest [N·m] ≥ 0, regularisation_speed ω_r [rad/s] (width
+    of the smooth sign), stribeck_speed ω_s [rad/s] (decay of the static excess). The sign
+    regularisation and Stribeck decay follow Andersson, Söderberg & Björklund (2007),
+    Tribology International 40:580. Signed like ``speed``.
+    """
+    check_positive("regularisation_speed", regularisation_speed, "rad/s")
+    check_positive("stribeck_speed", stribeck_speed, "rad/s")
+    return np.tanh(speed / regularisation_speed) * (
+        running_torque + breakaway_excess * np.exp(-np.abs(speed) / stribeck_speed)
+    )
+
+
+@dataclass(frozen=True)
+class FrictionCoefficients:
+    """Coefficients of the friction model.
+
+    Attributes
+    ----------
+    hysteresis_loss : α_r, elastic hysteresis loss factor [-] (Yu eq 1; < 1 % for metals)
+    sliding_friction : μ, coefficient of sliding friction in spin and differential sliding [-]
+    static_friction_ratio : μ_static/μ ≥ 1 for the breakaway torque [-]
+    palmgren_s0 : s0 of Yu eq 8 [-] (grease only)
+    provenance : ((field, source), ...)
+    """
+
+    hysteresis_loss: float = 0.007
+    sliding_friction: float = 0.05
+    static_friction_ratio: float = 1.2
+    palmgren_s0: float = 1.0
+    provenance: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self):
+        check_range("hysteresis_loss", self.hysteresis_loss, 0.0, 1.0)
+        check_range("sliding_friction", self.sliding_friction, 0.0, 2.0)
+        check_range("static_friction_ratio", self.static_friction_ratio, 1.0, 10.0)
+        check_nonnegative("palmgren_s0", self.palmgren_s0)
+
+    def source(self, field: str) -> str:
+        return dict(self.provenance).get(field, "")
+
+
+@dataclass(frozen=True)
+class BallSetTorques:
+    """Speed-independent friction torques of one bearing's ball set [N·m] (arrays).
+
+    hysteresis (Yu eq 3), spin (Yu eq 7 / Ning inner-race spin), sliding (Heathcote, Ning),
+    inner_ring, outer_ring: the same total split by race (Ning Fig 10a).
+    """
+
+    hysteresis: np.ndarray
+    spin: np.ndarray
+    sliding: np.ndarray
+    inner_ring: np.ndarray
+    outer_ring: np.ndarray
+
+    @property
+    def total(self):
+        return self.hysteresis + self.spin + self.sliding
+
+
+def ball_set_torques(
+    load,
+    contact_angle,
+    inner,
+    outer,
+    pitch_diameter,
+    ball_diameter,
+    inner_groove_radius,
+    outer_groove_radius,
+    coefficients: FrictionCoefficients,
+    lubrication: str,
+    differential_sliding: bool,
+) -> BallSetTorques:
+    """Friction torques about the bearing axis of one bearing's balls (sum over the trailing
+    ball axis).
+
+    Parameters
+    ----------
+    load : Q_j [N], shape S + (Z,)
+    contact_angle : α_j [rad], same shape
+    inner, outer : :class:`hertz.ContactConstants` of the inner / outer contacts (same shape)
+    pitch_diameter, ball_diameter, inner_groove_radius, outer_groove_radius : dm, Dw, r_i, r_o
+        [m], shape S (broadcast against S + (Z,) by a trailing axis)
+    coefficients : α_r, μ (see :class:`FrictionCoefficients`)
+    lubrication : "grease" (Yu eq 7: spin at the race with the larger spin moment) or "solid"
+        (Ning: outer-race control, spin at the inner race)
+    differential_sliding : include Heathcote sliding (Ning); Yu eq 9 has no such term
+
+    Yu 2017 eq 1–3, 5–7; Ning (reconstructed, see module docstring).
+    """
+
+    def g(x):
+        return np.asarray(x)[..., None]
+
+    dm, dw = g(pitch_diameter), g(ball_diameter)
+    a_i, b_i = inner.semi_axes(load)
+    a_o, b_o = outer.semi_axes(load)
+    r_in = race_contact_radius(dm, dw, contact_angle, "inner")
+    r_out = race_contact_radius(dm, dw, contact_angle, "outer")
+    alpha_r, mu = coefficients.hysteresis_loss, coefficients.sliding_friction
+    hyst_i = hysteresis_rolling_force(load, b_i, dw, alpha_r) * r_in
+    hyst_o = hysteresis_rolling_force(load, b_o, dw, alpha_r) * r_out
+    if differential_sliding:
+        slide_i = heathcote_sliding_force(load, a_i, dw, g(inner_groove_radius), mu) * r_in
+        slide_o = heathcote_sliding_force(load, a_o, dw, g(outer_groove_radius), mu) * r_out
+    else:
+        slide_i = slide_o = np.zeros_like(load)
+    sin_a = np.abs(np.sin(contact_angle))
+    spin_i = spin_moment(load, a_i, inner.e_integral, mu) * sin_a
+    spin_o = spin_moment(load, a_o, outer.e_integral, mu) * sin_a
+    if lubrication == "solid":
+        spin_o = np.zeros_like(spin_o)
+    else:
+        inner_spins = spin_i >= spin_o
+        spin_i, spin_o = np.where(inner_spins, spin_i, 0.0), np.where(inner_spins, 0.0, spin_o)
+    inner_ring = np.sum(hyst_i + slide_i + spin_i, axis=-1)
+    outer_ring = np.sum(hyst_o + slide_o + spin_o, axis=-1)
+    return BallSetTorques(
+        hysteresis=np.sum(hyst_i + hyst_o, axis=-1),
+        spin=np.sum(spin_i + spin_o, axis=-1),
+        sliding=np.sum(slide_i + slide_o, axis=-1),
+        inner_ring=inner_ring,
+        outer_ring=outer_ring,
+    )

@@ -1,0 +1,197 @@
+"""Hertz point contact of a ball in a groove.
+
+References: Harris & Kotzalas (2007), *Essential Concepts of Bearing Technology*, 5th ed.,
+ch. 2 (curvature sum and difference) and ch. 6 (contact stress and deformation); Johnson (1985),
+*Contact Mechanics*, ch. 4. Yu 2017 eq 1–6 use the semi-axes a, b and the complete elliptic
+integral of the second kind computed here.
+
+Notation: Σρ curvature sum [1/m], F(ρ) curvature difference [-], k = a/b ellipticity (a across
+the rolling direction), m = e² = 1 − 1/k² the parameter of the complete elliptic integrals K(m),
+E(m) (scipy.special.ellipk / ellipe), η = (1 − ν1²)/E1 + (1 − ν2²)/E2 [1/Pa].
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.interpolate import PchipInterpolator
+from scipy.special import ellipe, ellipk
+
+from ._checks import check_choice, check_nonnegative, check_positive, check_range
+
+RACES = ("inner", "outer")
+
+
+def curvature_sum_difference(ball_diameter, pitch_diameter, groove_curvature, contact_angle, race):
+    """Curvature sum Σρ [1/m] and difference F(ρ) [-] of a ball–groove contact.
+
+    Parameters
+    ----------
+    ball_diameter : Dw [m]
+    pitch_diameter : dm [m]
+    groove_curvature : f = r/Dw [-], > 0.5
+    contact_angle : α [rad]
+    race : "inner" or "outer"
+
+    With γ = Dw·cos α/dm (Harris & Kotzalas 2007, ch. 2):
+    inner  Σρ = (4 − 1/f + 2γ/(1−γ))/Dw,  F = (1/f + 2γ/(1−γ)) / (4 − 1/f + 2γ/(1−γ));
+    outer  Σρ = (4 − 1/f − 2γ/(1+γ))/Dw,  F = (1/f − 2γ/(1+γ)) / (4 − 1/f − 2γ/(1+γ)).
+    """
+    check_choice("race", race, RACES)
+    dw = check_positive("ball_diameter", ball_diameter, "m")
+    dm = check_positive("pitch_diameter", pitch_diameter, "m")
+    f = check_range("groove_curvature", groove_curvature, 0.5, None, lo_open=True)
+    alpha = check_range("contact_angle", contact_angle, -np.pi / 2, np.pi / 2, unit="rad")
+    return _curvature(dw, dm, f, alpha, race)
+
+
+def _curvature(dw, dm, f, alpha, race):
+    gamma = dw * np.cos(alpha) / dm
+    race_term = 2.0 * gamma / (1.0 - gamma) if race == "inner" else -2.0 * gamma / (1.0 + gamma)
+    denom = 4.0 - 1.0 / f + race_term
+    return denom / dw, (1.0 / f + race_term) / denom
+
+
+def curvature_difference_of_ellipticity(k):
+    """F(ρ) as an explicit function of the ellipticity k = a/b ≥ 1 (the Hertz relation):
+    F = ((k² + 1)·E(m) − 2·K(m)) / ((k² − 1)·E(m)),  m = 1 − 1/k².
+    Harris & Kotzalas 2007, ch. 6. Returns 0 at k = 1 (circular contact).
+    """
+    k = np.asarray(check_range("k", k, 1.0, None), dtype=float)
+    m = 1.0 - 1.0 / k**2
+    e_int = ellipe(m)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        out = ((k**2 + 1.0) * e_int - 2.0 * ellipk(m)) / ((k**2 - 1.0) * e_int)
+    out = np.where(k == 1.0, 0.0, out)
+    return out if out.ndim else float(out)
+
+
+# The inverse k(F) has no closed form. F(k) above is explicit and monotonic, so it is
+# tabulated once on a dense logarithmic grid of k and inverted by monotone (PCHIP)
+# interpolation of ln k against F; tests check the inverse against a bracketing root finder.
+_K_MAX = 1.0e4
+_LOG_K = np.concatenate([[0.0], np.linspace(np.log(1.0 + 1e-4), np.log(_K_MAX), 6000)])
+_F_OF_K = curvature_difference_of_ellipticity(np.exp(_LOG_K))
+_F_MAX = float(_F_OF_K[-1])
+_LOG_K_OF_F = PchipInterpolator(_F_OF_K, _LOG_K, extrapolate=False)
+
+
+def ellipticity(curvature_difference):
+    """Ellipticity k = a/b [-] of the contact ellipse for curvature difference F(ρ) [-].
+
+    Solves F(ρ) = ((k² + 1)E(m) − 2K(m)) / ((k² − 1)E(m)), m = 1 − 1/k² (Harris & Kotzalas
+    2007, ch. 6) for k in [1, 1e4]; F(ρ) must lie in [0, F(k=1e4)) ≈ [0, 0.99999).
+    """
+    f = check_range("curvature_difference", curvature_difference, 0.0, _F_MAX, hi_open=True)
+    out = np.exp(_LOG_K_OF_F(f))
+    return out if np.ndim(out) else float(out)
+
+
+@dataclass(frozen=True)
+class ContactConstants:
+    """Load-independent constants of one ball–groove contact (arrays broadcast together).
+
+    The load-dependent quantities follow as a = a_coef·Q^(1/3), b = b_coef·Q^(1/3),
+    δ = (Q/stiffness)^(2/3), p0 = 3Q/(2πab).
+
+    Attributes
+    ----------
+    curvature_sum : Σρ [1/m]
+    ellipticity : k = a/b [-]
+    k_integral, e_integral : complete elliptic integrals K(m), E(m), m = 1 − 1/k² [-]
+    a_coef, b_coef : semi-axis coefficients [m/N^(1/3)]
+    stiffness : load–deflection constant K in Q = K·δ^1.5 [N/m^1.5]
+    """
+
+    curvature_sum: np.ndarray
+    ellipticity: np.ndarray
+    k_integral: np.ndarray
+    e_integral: np.ndarray
+    a_coef: np.ndarray
+    b_coef: np.ndarray
+    stiffness: np.ndarray
+
+    def semi_axes(self, load):
+        """(a, b) [m] for normal load ``load`` [N] ≥ 0."""
+        q13 = np.cbrt(load)
+        return self.a_coef * q13, self.b_coef * q13
+
+    def deflection(self, load):
+        """Normal approach δ [m] for load [N] ≥ 0."""
+        return (load / self.stiffness) ** (2.0 / 3.0)
+
+    def max_pressure(self, load):
+        """Maximum Hertz pressure p0 = 3Q/(2πab) [Pa] (0 where the load is 0)."""
+        a, b = self.semi_axes(load)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            p = 1.5 * load / (np.pi * a * b)
+        return np.where(load > 0, p, 0.0)
+
+
+def contact_constants(curvature_sum, curvature_difference, compliance) -> ContactConstants:
+    """Hertz constants of a point contact (Harris & Kotzalas 2007, ch. 6; Johnson 1985, ch. 4).
+
+    Parameters
+    ----------
+    curvature_sum : Σρ [1/m], > 0
+    curvature_difference : F(ρ) [-] in [0, 1)
+    compliance : η = (1 − ν1²)/E1 + (1 − ν2²)/E2 [1/Pa], > 0
+
+    a = (3k²·E·η·Q/(π·Σρ))^(1/3),  b = (3·E·η·Q/(π·k·Σρ))^(1/3),
+    δ = (K/π)·(π/(2k²E))^(1/3)·(3ηQ/(2Σρ))^(2/3)·Σρ,
+    with K, E the complete elliptic integrals of parameter m = 1 − 1/k².
+    For k = 1 (E = K = π/2) these reduce to Hertz's sphere: a = (3QR/(4E*))^(1/3), δ = a²/R.
+    """
+    rho = check_positive("curvature_sum", curvature_sum, "1/m")
+    eta = check_positive("compliance", compliance, "1/Pa")
+    k = ellipticity(curvature_difference)
+    return _constants(rho, k, eta)
+
+
+def _constants(rho, k, eta) -> ContactConstants:
+    m = 1.0 - 1.0 / k**2
+    k_int = ellipk(m)
+    e_int = ellipe(m)
+    base = 3.0 * eta / (np.pi * rho)
+    a_coef = np.cbrt(base * k**2 * e_int)
+    b_coef = np.cbrt(base * e_int / k)
+    delta_star = (2.0 * k_int / np.pi) * np.cbrt(np.pi / (2.0 * k**2 * e_int))
+    c_delta = 0.5 * delta_star * (1.5 * eta / rho) ** (2.0 / 3.0) * rho
+    return ContactConstants(
+        curvature_sum=rho,
+        ellipticity=k,
+        k_integral=k_int,
+        e_integral=e_int,
+        a_coef=a_coef,
+        b_coef=b_coef,
+        stiffness=c_delta**-1.5,
+    )
+
+
+def groove_contact(
+    ball_diameter, pitch_diameter, groove_curvature, contact_angle, compliance, race
+) -> ContactConstants:
+    """Hertz constants of the ball–inner or ball–outer groove contact at contact angle α [rad].
+
+    Combines :func:`curvature_sum_difference` and :func:`contact_constants`; all arguments
+    broadcast (ball_diameter [m], pitch_diameter [m], groove_curvature [-], compliance [1/Pa]).
+    """
+    rho, f_rho = curvature_sum_difference(
+        ball_diameter, pitch_diameter, groove_curvature, contact_angle, race
+    )
+    return contact_constants(rho, f_rho, compliance)
+
+
+def combined_stiffness(k_inner, k_outer):
+    """Load–deflection constant of the two contacts of one ball in series [N/m^1.5]:
+    K_n = (K_i^(−2/3) + K_o^(−2/3))^(−3/2) (Harris & Kotzalas 2007, ch. 7)."""
+    check_positive("k_inner", k_inner, "N/m^1.5")
+    check_positive("k_outer", k_outer, "N/m^1.5")
+    return (k_inner ** (-2.0 / 3.0) + k_outer ** (-2.0 / 3.0)) ** -1.5
+
+
+def hertz_load(stiffness, deflection):
+    """Normal load Q = K·max(δ, 0)^1.5 [N] (Harris & Kotzalas 2007, ch. 7)."""
+    check_nonnegative("stiffness", stiffness, "N/m^1.5")
+    return stiffness * np.maximum(deflection, 0.0) ** 1.5

@@ -1,0 +1,317 @@
+"""Axial thermal coupling: preload of a bearing pair in a frame–shaft loop (Yu 2017 eq 14–17;
+Ning §2.2).
+
+The two bearings (A and B, face-to-face or back-to-back: identical for axial and radial
+loads, tilt is not modelled) sit in a closed loop of parts: "opening" members (Yu: the frame
+of length L + 2·b0) whose growth relieves the preload, and "closing" members (Yu: the shaft L
+and the two bearing widths; Ning: the bearings and the spacer) whose growth increases it.
+
+Compatibility (Yu eq 14–15 rewritten with the general geometry of :mod:`geometry`):
+
+    a_A + a_B + N/k_loop = C(T),   C(T) = 2·h(T0) + s − Σ_j σ_j·L_j·α_j·(T − T0)
+
+with a_A, a_B the axial offsets of the groove curvature centres of the two bearings, h(T0) the
+first-contact offset at assembly, s the shim (Yu's washer δp: the axial interference added
+after the play is taken up), σ_j = +1 for opening and −1 for closing members, N = (F_A + F_B)/2
+the loop force and k_loop the structural axial stiffness of the loop (Yu eq 15's 1/C1, by
+default Σ L/(E·A) of the members with a section; a compliant yoke is modelled by setting it).
+Equilibrium adds F_A − F_B = F_ext.
+
+Notes on the printed equations:
+- Yu eq 14 assigns steel's expansion and modulus to the frame and aluminium's to the shaft,
+  against the stated materials (cast-aluminium frame, 45-steel shaft). Both readings are
+  offered as data (mountings ``yu2017_gimbal`` and ``yu2017_gimbal_printed``); the stated
+  reading also lets the steel bearing widths 2·b0 grow, which eq 14 leaves out.
+- Yu eq 16–17 (Harris's thrust relation in terms of the free contact angle) are singular once
+  the clearance is negative; the general geometry (:func:`equilibrium.axial_state`) replaces
+  them and reduces to them for positive clearance.
+- Yu's Pe (axial play) and δp: read literally, eq 14 with Pe = 2·h (≈ 96 µm for the mounted
+  71803) would leave a 0.03 mm washer without any preload; the washer is read here as the
+  interference added after the play is taken up at assembly.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize.elementwise import bracket_root, find_root
+
+from ._checks import check_choice, check_finite, check_positive, check_temperature
+from .equilibrium import _geometry_args, _geometry_from_args, axial_force, offset_for_axial_force
+from .geometry import RaceGeometry
+from .materials import Material
+
+ROLES = {"opening": 1.0, "closing": -1.0}
+
+
+@dataclass(frozen=True)
+class LoopMember:
+    """One part of the preload loop.
+
+    Attributes
+    ----------
+    name : e.g. "frame", "shaft", "bearings", "spacer"
+    role : "opening" (growth relieves the preload) or "closing"
+    length : axial length L [m]
+    material : its :class:`Material`
+    area : cross-section A [m²] for the loop compliance L/(E·A); None: not counted
+    """
+
+    name: str
+    role: str
+    length: float
+    material: Material
+    area: float | None = None
+
+    def __post_init__(self):
+        check_choice("role", self.role, ROLES)
+        check_positive("length", self.length, "m")
+        if self.area is not None:
+            check_positive("area", self.area, "m²")
+
+
+@dataclass(frozen=True)
+class PreloadLoop:
+    """The preload loop of a bearing pair.
+
+    Attributes
+    ----------
+    members : the parts
+    shim : axial interference added after the play is taken up at assembly [m] (Yu's δp)
+    stiffness : structural axial stiffness of the loop [N/m]; None: Σ L/(E·A) of the members
+    provenance : ((field, source), ...)
+    """
+
+    members: tuple[LoopMember, ...]
+    shim: float = 0.0
+    stiffness: float | None = None
+    provenance: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self):
+        check_finite("shim", self.shim, "m")
+        if self.stiffness is not None:
+            check_positive("stiffness", self.stiffness, "N/m")
+
+    @property
+    def structural_stiffness(self) -> float:
+        """k_loop [N/m]: the override, else 1/Σ L/(E·A) (Yu eq 15's C1); inf when no member has
+        a section (rigid loop)."""
+        if self.stiffness is not None:
+            return self.stiffness
+        compliance = sum(
+            m.length / (m.material.youngs_modulus * m.area) for m in self.members if m.area
+        )
+        return 1.0 / compliance if compliance > 0 else np.inf
+
+
+def loop_interference(loop: PreloadLoop, temperature, assembly_temperature: float):
+    """Axial interference of the loop [m] at temperature T [K]:
+    s − Σ_j σ_j·L_j·α_j·(T − T0) (Yu 2017 eq 14–15, the thermal part C2 − 2·b0 with sign)."""
+    t = check_temperature("temperature", temperature)
+    dt = np.asarray(t) - check_temperature("assembly_temperature", assembly_temperature)
+    growth = sum(ROLES[m.role] * m.length * m.material.expansion for m in loop.members)
+    return loop.shim - growth * dt
+
+
+def _pair_residual(p, z, closure, k_loop, geom):
+    f_sum = axial_force(p + z, geom) + axial_force(p - z, geom)
+    return 2.0 * p + (0.0 if np.isinf(k_loop) else f_sum / (2.0 * k_loop)) - closure
+
+
+def _solve_offset(z, closure, k_loop, geom: RaceGeometry):
+    """Mean offset p solving the loop compatibility for shaft displacement z (elementwise)."""
+    z, closure = np.broadcast_arrays(np.asarray(z, float), np.asarray(closure, float))
+    if np.isinf(k_loop):
+        return 0.5 * closure
+    shape = z.shape
+    args = _geometry_args(geom, shape)
+
+    def residual(p, zz, cc, *g):
+        return _pair_residual(
+            p, zz, cc, k_loop, _geometry_from_args(g, geom.n_balls, geom.compliance)
+        )
+
+    span = np.abs(z) + 1e-12
+    lo = np.minimum(0.0, 0.5 * closure) - span
+    hi = np.maximum(0.0, 0.5 * closure) + span
+    br = bracket_root(residual, lo, hi, args=(z, closure, *args))
+    return find_root(residual, br.bracket, args=(z, closure, *args), tolerances={"xatol": 1e-16}).x
+
+
+@dataclass(frozen=True)
+class PairOffsets:
+    """Axial state of the pair (arrays).
+
+    Attributes
+    ----------
+    offset_a, offset_b : axial offsets of bearings A and B [m]
+    force_a, force_b : their axial forces [N]
+    loop_force : N = (F_A + F_B)/2 [N] (the preload)
+    """
+
+    offset_a: np.ndarray
+    offset_b: np.ndarray
+    force_a: np.ndarray
+    force_b: np.ndarray
+
+    @property
+    def loop_force(self):
+        return 0.5 * (self.force_a + self.force_b)
+
+
+def pair_offsets(geom: RaceGeometry, closure, loop_stiffness: float, external_load=0.0):
+    """Offsets and forces of the pair under an axial load F_ext [N] on the shaft (pressing
+    bearing A), for loop closure C [m] and loop stiffness k [N/m] (elementwise over arrays).
+
+    Solves F_A − F_B = F_ext and a_A + a_B + (F_A + F_B)/(2k) = C with a_A = p + z,
+    a_B = p − z: an outer bracketing root in z around an inner one in p (both monotonic,
+    scipy.optimize.elementwise.find_root), so it cannot fail to converge. Yu 2017 eq 14–17
+    with the general geometry; returns :class:`PairOffsets`.
+    """
+    c = np.asarray(check_finite("closure", closure, "m"), dtype=float)
+    f_ext = np.asarray(check_finite("external_load", external_load, "N"), dtype=float)
+    k = float(check_positive("loop_stiffness", loop_stiffness, "N/m"))
+    shape = np.broadcast_shapes(c.shape, f_ext.shape, np.shape(geom.clearance))
+    c, f_ext = np.broadcast_to(c, shape), np.broadcast_to(f_ext, shape)
+    args = _geometry_args(geom, shape)
+
+    def residual(z, ff, cc, *g):
+        gg = _geometry_from_args(g, geom.n_balls, geom.compliance)
+        p = _solve_offset(z, cc, k, gg)
+        return axial_force(p + z, gg) - axial_force(p - z, gg) - ff
+
+    z = np.zeros(shape)
+    loaded = f_ext != 0
+    if loaded.any():
+        flat = (f_ext[loaded], c[loaded], *(a[loaded] for a in args))
+        step = 0.01 * np.broadcast_to(geom.curvature_distance, shape)[loaded]
+        lo = np.where(flat[0] > 0, 0.0, -step)
+        hi = np.where(flat[0] > 0, step, 0.0)
+        br = bracket_root(residual, lo, hi, args=flat)
+        z[loaded] = find_root(residual, br.bracket, args=flat, tolerances={"xatol": 1e-16}).x
+    p = _solve_offset(z, c, k, geom)
+    a_a, a_b = p + z, p - z
+    return PairOffsets(a_a, a_b, axial_force(a_a, geom), axial_force(a_b, geom))
+
+
+def pair_axial_stiffness(stiffness_a, stiffness_b, loop_stiffness: float):
+    """Axial stiffness of the shaft in the pair [N/m] from the bearings' dFa/da [N/m] and the
+    loop stiffness k [N/m]: K = k_A + k_B − (k_A − k_B)²/(4k + k_A + k_B) (differentiating the
+    two conditions of :func:`pair_offsets`); 2·k_b for a symmetric pair."""
+    ka, kb = np.asarray(stiffness_a), np.asarray(stiffness_b)
+    if np.isinf(loop_stiffness):
+        return ka + kb
+    return ka + kb - (ka - kb) ** 2 / (4.0 * loop_stiffness + ka + kb)
+
+
+def shim_for_preload(geom_assembly: RaceGeometry, preload: float, loop_stiffness: float) -> float:
+    """Shim s [m] that gives the preload ``preload`` [N] at assembly (inverse of the loop
+    compatibility at T0): s = 2·a(P) + P/k − 2·h(T0), a(P) the offset carrying P."""
+    p_force = check_positive("preload", preload, "N")
+    a = float(offset_for_axial_force(geom_assembly, p_force))
+    h = float(geom_assembly.first_contact_offset)
+    loop_term = 0.0 if np.isinf(loop_stiffness) else p_force / loop_stiffness
+    return 2.0 * a + loop_term - 2.0 * h
+
+
+@dataclass(frozen=True)
+class PairState:
+    """Pair under combined axial and radial load (scalar; see :func:`pair_equilibrium`).
+
+    Attributes
+    ----------
+    offset_a, offset_b : axial offsets [m]
+    radial_a, radial_b : radial displacements of the shaft in A and B [m]
+    balls_a, balls_b : per-ball :class:`equilibrium.BallLoads`
+    converged : force balance met to a relative 1e-9
+    """
+
+    offset_a: float
+    offset_b: float
+    radial_a: float
+    radial_b: float
+    balls_a: object
+    balls_b: object
+    converged: bool
+
+
+def pair_equilibrium(
+    geom: RaceGeometry, closure: float, loop_stiffness: float, axial_load: float, radial_load: float
+) -> PairState:
+    """Equilibrium of the pair under an axial load F_ext [N] (pressing bearing A) and a radial
+    load F_r [N] shared equally by A and B (load midway between them; the tilt of each
+    bearing is neglected, the span being long against the ball set). Scalar geometry.
+
+    Unknowns: mean offset p (when the loop is compliant), shaft displacement z, radial
+    displacements δr_A, δr_B; equations F_A − F_B = F_ext, Fr_A = Fr_B = F_r/2 and the loop
+    compatibility of :func:`pair_offsets`. Newton–Powell (scipy.optimize.root, hybr) with the
+    analytic stiffness, started from the axial solution. Jones (1960) ball loads per bearing.
+    """
+    from scipy.optimize import root
+
+    from .equilibrium import _ball_loads, _ring_stiffness
+
+    f_ext = check_finite("axial_load", axial_load, "N")
+    f_r = check_finite("radial_load", radial_load, "N")
+    k = float(check_positive("loop_stiffness", loop_stiffness, "N/m"))
+    rigid = np.isinf(k)
+    start = pair_offsets(geom, closure, k, f_ext)
+    a_len = float(geom.curvature_distance)
+    scale = max(abs(f_ext), abs(f_r), float(start.loop_force), 1e-3)
+    zero = np.zeros(1)
+
+    def loads(p, z, da, db):
+        la = _ball_loads(geom, np.atleast_1d(p + z)[:, None], np.atleast_1d(da)[:, None], zero)
+        lb = _ball_loads(geom, np.atleast_1d(p - z)[:, None], np.atleast_1d(db)[:, None], zero)
+        return la, lb
+
+    la0, _ = loads(float(start.offset_a[()] + start.offset_b[()]) / 2, 0.0, 0.0, 0.0)
+    krr = float(_ring_stiffness(geom, la0)[0, 1, 1])
+    dr0 = 0.5 * f_r / krr if krr > 0 else np.sign(f_r) * 0.5 * max(float(geom.clearance), 0.0)
+    p0 = 0.5 * float(start.offset_a[()] + start.offset_b[()])
+    z0 = 0.5 * float(start.offset_a[()] - start.offset_b[()])
+
+    def unpack(x):
+        if rigid:
+            return 0.5 * closure, x[0] * a_len, x[1] * a_len, x[2] * a_len
+        return x[0] * a_len, x[1] * a_len, x[2] * a_len, x[3] * a_len
+
+    def fun(x):
+        p, z, da, db = unpack(x)
+        la, lb = loads(p, z, da, db)
+        ja, jb = _ring_stiffness(geom, la)[0], _ring_stiffness(geom, lb)[0]
+        fa, fb = la.axial_force[0], lb.axial_force[0]
+        res = [fa - fb - f_ext, la.radial_force[0] - 0.5 * f_r, lb.radial_force[0] - 0.5 * f_r]
+        jac = [
+            [ja[0, 0] - jb[0, 0], ja[0, 0] + jb[0, 0], ja[0, 1], -jb[0, 1]],
+            [ja[1, 0], ja[1, 0], ja[1, 1], 0.0],
+            [jb[1, 0], -jb[1, 0], 0.0, jb[1, 1]],
+        ]
+        if not rigid:
+            res.append(0.5 * (fa + fb) - k * (closure - 2.0 * p))
+            jac.append(
+                [
+                    0.5 * (ja[0, 0] + jb[0, 0]) + 2.0 * k,
+                    0.5 * (ja[0, 0] - jb[0, 0]),
+                    0.5 * ja[0, 1],
+                    0.5 * jb[0, 1],
+                ]
+            )
+        jac = np.array(jac) * a_len
+        if rigid:
+            jac = jac[:, 1:]
+        return np.array(res) / scale, jac / scale
+
+    x0 = np.array([z0, dr0, dr0]) / a_len if rigid else np.array([p0, z0, dr0, dr0]) / a_len
+    best = None
+    for method in ("hybr", "lm"):
+        sol = root(fun, x0, jac=True, method=method, options={"xtol": 1e-14})
+        resid = float(np.abs(fun(sol.x)[0]).max())
+        if best is None or resid < best[1]:
+            best = (sol.x, resid)
+        if resid < 1e-9:
+            break
+    p, z, da, db = unpack(best[0])
+    la, lb = loads(p, z, da, db)
+    return PairState(p + z, p - z, da, db, la, lb, best[1] < 1e-9)

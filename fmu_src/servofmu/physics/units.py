@@ -1,0 +1,70 @@
+"""Unit conversions used at the edges (papers' tables, display, data files).
+
+Everything inside servofmu is SI: K, m, N, N·m, rad, rad/s, Pa, Pa·s, m²/s.
+"""
+
+from __future__ import annotations
+
+import math
+
+ZERO_CELSIUS = 273.15  # K
+RPM = 2.0 * math.pi / 60.0  # rad/s per rev/min
+CST = 1.0e-6  # m²/s per centistokes
+MM = 1.0e-3  # m per mm
+UM = 1.0e-6  # m per µm
+NMM = 1.0e-3  # N·m per N·mm
+GPA = 1.0e9  # Pa per GPa
+DEG = math.pi / 180.0  # rad per degree
+
+
+def celsius_to_kelvin(t_c):
+    """°C → K."""
+    return t_c + ZERO_CELSIUS
+
+
+def kelvin_to_celsius(t_k):
+    """K → °C."""
+    return t_k - ZERO_CELSIUS
+
+
+def rpm_to_rad_per_s(n):
+    """rev/min → rad/s."""
+    return n * RPM
+
+
+def rad_per_s_to_rpm(omega):
+    """rad/s → rev/min."""
+    return omega / RPM
+
+
+# Factors to SI for the unit strings allowed in the data files (physics/data/*.toml).
+TO_SI = {
+    "m": 1.0,
+    "mm": MM,
+    "um": UM,
+    "Pa": 1.0,
+    "MPa": 1.0e6,
+    "GPa": GPA,
+    "1/K": 1.0,
+    "rad": 1.0,
+    "deg": DEG,
+    "-": 1.0,
+    "N": 1.0,
+    "N/m": 1.0,
+    "m2": 1.0,
+    "mm2": MM * MM,
+    "K": 1.0,
+    "cSt": CST,
+    "m2/s": 1.0,
+    "kg/m3": 1.0,
+}
+
+
+def to_si(value: float, unit: str) -> float:
+    """Convert ``value`` given in ``unit`` (a key of :data:`TO_SI`, or ``degC``) to SI."""
+    if unit == "degC":
+        return celsius_to_kelvin(value)
+    try:
+        return value * TO_SI[unit]
+    except KeyError:
+        raise ValueError(f"unit = {unit!r} is not one of {sorted([*TO_SI, 'degC'])}") from None
