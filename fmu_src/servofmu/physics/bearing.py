@@ -18,6 +18,7 @@ of load does not re-solve the thermal state.
 
 from __future__ import annotations
 
+import bisect
 import dataclasses
 import functools
 import math
@@ -25,6 +26,7 @@ from collections import OrderedDict
 from dataclasses import dataclass, fields
 
 import numpy as np
+from scipy.optimize.elementwise import find_root
 
 from ._checks import check_choice, check_finite, check_positive, check_temperature
 from .equilibrium import _axial_state, _ring_stiffness
@@ -32,14 +34,15 @@ from .fits import RadialFit, mounted_geometry
 from .friction import (
     BallSetTorques,
     FrictionCoefficients,
+    _regularised,
     ball_set_torques,
     palmgren_viscous_torque,
-    regularised_friction_torque,
 )
 from .geometry import BallBearing, RaceGeometry
 from .preload import (
     PreloadLoop,
     loop_interference,
+    mean_offset,
     pair_axial_stiffness,
     pair_equilibrium,
     pair_offsets,
@@ -280,7 +283,7 @@ def thermal_state(pair: BearingPair, temperature) -> ThermalState:
     )
 
 
-@dataclass(frozen=True)
+@dataclass(slots=True)
 class LoadState:
     """Speed-independent state of the pair under load (arrays or scalars).
 
@@ -342,31 +345,38 @@ def load_state(pair: BearingPair, thermal: ThermalState, axial_load=0.0, radial_
     equilibrium of :func:`preload.pair_equilibrium` (scalar temperature)."""
     f_ext = check_finite("axial_load", axial_load, "N")
     f_r = check_finite("radial_load", radial_load, "N")
-    geom, k = thermal.geometry, thermal.loop_stiffness
     if np.any(np.asarray(f_r) != 0):
         return _combined_load_state(pair, thermal, float(f_ext), float(f_r))
     if np.all(np.asarray(f_ext) == 0):
         a_a = a_b = thermal.preload_offset
     else:
-        off = pair_offsets(geom, thermal.closure, k, f_ext)
+        off = pair_offsets(thermal.geometry, thermal.closure, thermal.loop_stiffness, f_ext)
         a_a, a_b = off.offset_a, off.offset_b
-    sa, sb = _axial_state(geom, a_a), _axial_state(geom, a_b)
+    return axial_load_state(pair, thermal, a_a, a_b)
+
+
+def axial_load_state(pair: BearingPair, thermal: ThermalState, offset_a, offset_b) -> LoadState:
+    """:class:`LoadState` of the pair with bearings A and B at axial offsets ``offset_a``,
+    ``offset_b`` [m] and no radial load: every ball of a bearing alike (Yu eq 4), so the
+    torques are Z times one ball's (elementwise over arrays)."""
+    geom, k = thermal.geometry, thermal.loop_stiffness
+    sa, sb = _axial_state(geom, offset_a), _axial_state(geom, offset_b)
     z = geom.n_balls
 
-    def torques(s):
-        e = (s.inner, s.outer)
-        one = [type(c)(*(np.asarray(getattr(c, f.name))[..., None] for f in fields(c))) for c in e]
-        q = np.asarray(s.ball_load)[..., None]
-        return _torques(pair, geom, q, np.asarray(s.contact_angle)[..., None], *one, count=z), (
-            q,
-            one,
-        )
+    def ball(s):
+        """One ball of the state with a trailing ball axis of length 1."""
+        contacts = [
+            type(c)(*(np.asarray(getattr(c, f.name))[..., None] for f in fields(c)))
+            for c in (s.inner, s.outer)
+        ]
+        return np.asarray(s.ball_load)[..., None], np.asarray(s.contact_angle)[..., None], contacts
 
-    ta, (qa, ea) = torques(sa)
-    tb, (qb, eb) = torques(sb)
+    (qa, ala, ea), (qb, alb, eb) = ball(sa), ball(sb)
+    t = _add(
+        _torques(pair, geom, qa, ala, *ea, count=z), _torques(pair, geom, qb, alb, *eb, count=z)
+    )
     p_max = np.maximum(_max_pressure(qa, *ea), _max_pressure(qb, *eb))
-    loaded = sa.ball_load > 0
-    angle = np.where(loaded, sa.contact_angle, geom.free_contact_angle)
+    angle = np.where(sa.ball_load > 0, sa.contact_angle, geom.free_contact_angle)
     return LoadState(
         force_a=sa.axial_force,
         force_b=sb.axial_force,
@@ -375,7 +385,7 @@ def load_state(pair: BearingPair, thermal: ThermalState, axial_load=0.0, radial_
         axial_stiffness=pair_axial_stiffness(sa.axial_stiffness, sb.axial_stiffness, k),
         max_contact_pressure=p_max,
         seized=p_max >= pair.pressure_limit,
-        torques=_add(ta, tb),
+        torques=t,
     )
 
 
@@ -416,7 +426,7 @@ def _combined_load_state(pair, thermal, f_ext, f_r) -> LoadState:
     )
 
 
-@dataclass(frozen=True)
+@dataclass(slots=True)
 class BearingOutputs:
     """Everything the BearingFriction FMU reports (DESIGN §3), SI; arrays or floats.
 
@@ -457,7 +467,7 @@ def bearing_outputs(
     pair: BearingPair, thermal: ThermalState, load: LoadState, speed
 ) -> BearingOutputs:
     """Speed-dependent outputs at ``speed`` [rad/s] (Yu 2017 eq 8–9; regularised sign)."""
-    w = check_finite("speed", speed, "rad/s")
+    w = speed if type(speed) is float else check_finite("speed", speed, "rad/s")
     t = load.torques
     s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
     dm = thermal.geometry.pitch_diameter
@@ -466,9 +476,7 @@ def bearing_outputs(
     coulomb = t.hysteresis + t.spin + t.sliding
     excess = (pair.coefficients.static_friction_ratio - 1.0) * (t.spin + t.sliding)
     running = coulomb + viscous
-    signed = regularised_friction_torque(
-        w, running, excess, pair.regularisation_speed, pair.stribeck_speed
-    )
+    signed = _regularised(w, running, excess, pair.regularisation_speed, pair.stribeck_speed)
     return BearingOutputs(
         friction_torque=signed,
         running_torque=running,
@@ -494,23 +502,117 @@ def bearing_outputs(
     )
 
 
-def _scalar(x):
-    return bool(x) if isinstance(x, (bool, np.bool_)) else float(x)
+def to_floats(obj):
+    """The dataclass ``obj`` with every 0-d array field (recursively) made a Python float or
+    bool, for the per-step scalar path."""
+    changes = {}
+    for f in fields(obj):
+        v = getattr(obj, f.name)
+        if dataclasses.is_dataclass(v):
+            changes[f.name] = to_floats(v)
+        elif isinstance(v, (np.ndarray, np.generic)) and np.ndim(v) == 0:
+            changes[f.name] = bool(v) if v.dtype == bool else float(v)
+    return dataclasses.replace(obj, **changes)
+
+
+class AxialLoadTable:
+    """The pair's speed-independent state versus external axial load at one temperature.
+
+    Tabulated once on ``size`` shaft displacements z ≥ 0 (every node solved exactly with
+    :func:`preload.mean_offset` and :func:`axial_load_state`, in one vectorised call) up to
+    1.5 times the pressure limit, mirrored for z < 0 (bearings A and B swap), and interpolated
+    linearly in the load; loads beyond the table return None (the caller solves exactly).
+    """
+
+    def __init__(self, pair: BearingPair, thermal: ThermalState, size: int = 513):
+        geom, k, c = thermal.geometry, thermal.loop_stiffness, thermal.closure
+        p0 = float(thermal.preload_offset)
+        a_lim = _offset_at_pressure(geom, 1.5 * pair.pressure_limit)
+        z = np.linspace(0.0, max(a_lim - min(p0, 0.0), 1e-9) * 1.05, size)
+        p = mean_offset(z, np.full_like(z, c), k, geom)
+        ls = axial_load_state(pair, thermal, p + z, p - z)
+        sb = _axial_state(geom, p - z)
+        angle_b = np.where(sb.ball_load > 0, sb.contact_angle, float(geom.free_contact_angle))
+        t = ls.torques
+        columns = [
+            np.asarray(ls.force_a) - np.asarray(ls.force_b),  # the external load: the key
+            ls.force_a,
+            ls.force_b,
+            ls.contact_angle,
+            angle_b,
+            ls.preload,
+            ls.axial_stiffness,
+            ls.max_contact_pressure,
+            *(getattr(t, f.name) for f in fields(BallSetTorques)),
+        ]
+        self.rows = [tuple(r) for r in np.column_stack([np.asarray(x, float) for x in columns])]
+        self.load = [r[0] for r in self.rows]
+        self.pressure_limit = pair.pressure_limit
+
+    def lookup(self, axial_load: float) -> LoadState | None:
+        """Interpolated :class:`LoadState` (floats) at ``axial_load`` [N], or None."""
+        f = abs(axial_load)
+        loads = self.load
+        if f > loads[-1]:
+            return None
+        i = min(max(bisect.bisect_right(loads, f) - 1, 0), len(loads) - 2)
+        lo, hi = self.rows[i], self.rows[i + 1]
+        w = (f - lo[0]) / (hi[0] - lo[0])
+        _, fa, fb, ang_a, ang_b, preload, stiffness, p_max, *torques = (
+            a + w * (b - a) for a, b in zip(lo, hi, strict=True)
+        )
+        if axial_load < 0:  # mirror: bearing B carries the load
+            fa, fb, ang_a = fb, fa, ang_b
+        return LoadState(
+            fa,
+            fb,
+            preload,
+            ang_a,
+            stiffness,
+            p_max,
+            p_max >= self.pressure_limit,
+            BallSetTorques(*torques),
+        )
+
+
+def _offset_at_pressure(geom: RaceGeometry, pressure: float) -> float:
+    """Axial offset [m] of one bearing at which its largest contact pressure reaches
+    ``pressure`` [Pa] under pure axial load."""
+
+    def excess(a):
+        s = _axial_state(geom, a)
+        q = s.ball_load
+        return np.maximum(s.inner.max_pressure(q), s.outer.max_pressure(q)) - pressure
+
+    lo = float(geom.first_contact_offset)
+    hi = lo + float(geom.curvature_distance)
+    while float(excess(hi)) < 0:
+        hi += float(geom.curvature_distance)
+    return float(find_root(excess, (lo, hi), tolerances={"xrtol": 1e-6}).x)
 
 
 class BearingModel:
     """Cached evaluation of a :class:`BearingPair` at (temperature, speed, axial, radial load).
 
-    The thermal state is cached per temperature and the load state per (temperature, axial
-    load, radial load), each in a small LRU; a change of speed alone costs only the
-    Palmgren and regularisation terms.
+    Caches, each a small LRU: the thermal state per temperature; the axial-load table per
+    temperature (:class:`AxialLoadTable`, built the first time an axial load is asked for at
+    that temperature); the state under a radial load per (temperature, axial, radial load),
+    solved exactly. A change of speed alone costs only the Palmgren and regularisation terms,
+    evaluated in Python floats.
     """
 
     def __init__(self, pair: BearingPair, cache_size: int = 8):
         self.pair = pair
         self._cache_size = cache_size
         self._thermal: OrderedDict[float, ThermalState] = OrderedDict()
+        self._tables: OrderedDict[float, AxialLoadTable] = OrderedDict()
         self._load: OrderedDict[tuple[float, float, float], LoadState] = OrderedDict()
+        # the operating point of the previous call (the per-step fast path)
+        self._last_t = None
+        self._last_loads = None
+        self._th: ThermalState | None = None
+        self._table: AxialLoadTable | None = None
+        self._state: LoadState | None = None
 
     def _remember(self, cache: OrderedDict, key, make):
         try:
@@ -524,30 +626,59 @@ class BearingModel:
             return value
 
     def thermal(self, temperature: float) -> ThermalState:
-        """Cached :func:`thermal_state` at one temperature [K]."""
+        """Cached :func:`thermal_state` at one temperature [K], fields as floats."""
         t = float(check_temperature("temperature", temperature))
-        return self._remember(self._thermal, t, lambda: thermal_state(self.pair, t))
+        return self._remember(self._thermal, t, lambda: to_floats(thermal_state(self.pair, t)))
 
     def load(self, temperature: float, axial_load: float = 0.0, radial_load: float = 0.0):
-        """Cached :func:`load_state` at one temperature [K] and loads [N]."""
+        """Exact :func:`load_state` at one temperature [K] and loads [N] (fields as floats)."""
         th = self.thermal(temperature)
-        key = (float(th.temperature), float(axial_load), float(radial_load))
+        return to_floats(load_state(self.pair, th, axial_load, radial_load))
+
+    def _load_fast(self, th: ThermalState, axial_load: float, radial_load: float) -> LoadState:
+        t = th.temperature
+        if radial_load == 0.0:
+            if axial_load == 0.0:
+                return self._remember(
+                    self._load,
+                    (t, 0.0, 0.0),
+                    lambda: to_floats(
+                        axial_load_state(self.pair, th, th.preload_offset, th.preload_offset)
+                    ),
+                )
+            if self._table is None:
+                self._table = self._remember(self._tables, t, lambda: AxialLoadTable(self.pair, th))
+            hit = self._table.lookup(axial_load)
+            if hit is not None:
+                return hit
+        key = (t, axial_load, radial_load)
         return self._remember(
-            self._load, key, lambda: load_state(self.pair, th, axial_load, radial_load)
+            self._load, key, lambda: to_floats(load_state(self.pair, th, axial_load, radial_load))
         )
 
     def evaluate(
         self, temperature: float, speed: float, axial_load: float = 0.0, radial_load: float = 0.0
     ) -> BearingOutputs:
-        """All outputs at one operating point (floats)."""
+        """All outputs at one operating point, as floats (the per-step path of the FMU).
+
+        Axial loads are read from the per-temperature :class:`AxialLoadTable` (linear
+        interpolation between exactly solved nodes; :meth:`load` gives the exact value)."""
+        if (axial_load, radial_load) != self._last_loads or temperature != self._last_t:
+            for name, v in (("axial_load", axial_load), ("radial_load", radial_load)):
+                if not math.isfinite(v):
+                    raise ValueError(f"{name} = {v!r} N is outside the valid range (-inf, inf)")
+            if temperature != self._last_t:
+                self._th = self.thermal(temperature)
+                self._table = None
+                self._last_t = temperature
+            self._state = self._load_fast(self._th, float(axial_load), float(radial_load))
+            self._last_loads = (axial_load, radial_load)
         if not math.isfinite(speed):
             raise ValueError(f"speed = {speed!r} rad/s is outside the valid range (-inf, inf)")
-        th = self.thermal(temperature)
-        out = bearing_outputs(self.pair, th, self.load(temperature, axial_load, radial_load), speed)
-        return BearingOutputs(**{k: _scalar(v) for k, v in out.as_dict().items()})
+        return bearing_outputs(self.pair, self._th, self._state, float(speed))
 
     def curves(self, temperatures, speed: float, axial_load: float = 0.0) -> BearingOutputs:
         """Outputs over an array of temperatures [K] at one speed and axial load, vectorised
-        (zero radial load)."""
+        and exact (zero radial load)."""
         th = thermal_state(self.pair, temperatures)
         return bearing_outputs(self.pair, th, load_state(self.pair, th, axial_load, 0.0), speed)

@@ -105,6 +105,14 @@ class PreloadLoop:
         return 1.0 / compliance if compliance > 0 else np.inf
 
 
+def check_loop_stiffness(value) -> float:
+    """Loop stiffness [N/m]: > 0, with +inf meaning a rigid loop."""
+    k = float(value)
+    if not k > 0:
+        raise ValueError(f"loop_stiffness = {k!r} N/m is outside the valid range (0, inf]")
+    return k
+
+
 def loop_interference(loop: PreloadLoop, temperature, assembly_temperature: float):
     """Axial interference of the loop [m] at temperature T [K]:
     s − Σ_j σ_j·L_j·α_j·(T − T0) (Yu 2017 eq 14–15, the thermal part C2 − 2·b0 with sign)."""
@@ -119,8 +127,9 @@ def _pair_residual(p, z, closure, k_loop, geom):
     return 2.0 * p + (0.0 if np.isinf(k_loop) else f_sum / (2.0 * k_loop)) - closure
 
 
-def _solve_offset(z, closure, k_loop, geom: RaceGeometry):
-    """Mean offset p solving the loop compatibility for shaft displacement z (elementwise)."""
+def mean_offset(z, closure, k_loop, geom: RaceGeometry):
+    """Mean offset p [m] of the pair (a_A = p + z, a_B = p − z) that satisfies the loop
+    compatibility for shaft displacement z [m] (elementwise bracketing root)."""
     z, closure = np.broadcast_arrays(np.asarray(z, float), np.asarray(closure, float))
     if np.isinf(k_loop):
         return 0.5 * closure
@@ -171,14 +180,14 @@ def pair_offsets(geom: RaceGeometry, closure, loop_stiffness: float, external_lo
     """
     c = np.asarray(check_finite("closure", closure, "m"), dtype=float)
     f_ext = np.asarray(check_finite("external_load", external_load, "N"), dtype=float)
-    k = float(check_positive("loop_stiffness", loop_stiffness, "N/m"))
+    k = check_loop_stiffness(loop_stiffness)
     shape = np.broadcast_shapes(c.shape, f_ext.shape, np.shape(geom.clearance))
     c, f_ext = np.broadcast_to(c, shape), np.broadcast_to(f_ext, shape)
     args = _geometry_args(geom, shape)
 
     def residual(z, ff, cc, *g):
         gg = _geometry_from_args(g, geom.n_balls, geom.compliance)
-        p = _solve_offset(z, cc, k, gg)
+        p = mean_offset(z, cc, k, gg)
         return axial_force(p + z, gg) - axial_force(p - z, gg) - ff
 
     z = np.zeros(shape)
@@ -190,7 +199,7 @@ def pair_offsets(geom: RaceGeometry, closure, loop_stiffness: float, external_lo
         hi = np.where(flat[0] > 0, step, 0.0)
         br = bracket_root(residual, lo, hi, args=flat)
         z[loaded] = find_root(residual, br.bracket, args=flat, tolerances={"xatol": 1e-16}).x
-    p = _solve_offset(z, c, k, geom)
+    p = mean_offset(z, c, k, geom)
     a_a, a_b = p + z, p - z
     return PairOffsets(a_a, a_b, axial_force(a_a, geom), axial_force(a_b, geom))
 
@@ -209,6 +218,7 @@ def shim_for_preload(geom_assembly: RaceGeometry, preload: float, loop_stiffness
     """Shim s [m] that gives the preload ``preload`` [N] at assembly (inverse of the loop
     compatibility at T0): s = 2·a(P) + P/k − 2·h(T0), a(P) the offset carrying P."""
     p_force = check_positive("preload", preload, "N")
+    loop_stiffness = check_loop_stiffness(loop_stiffness)
     a = float(offset_for_axial_force(geom_assembly, p_force))
     h = float(geom_assembly.first_contact_offset)
     loop_term = 0.0 if np.isinf(loop_stiffness) else p_force / loop_stiffness
@@ -254,7 +264,7 @@ def pair_equilibrium(
 
     f_ext = check_finite("axial_load", axial_load, "N")
     f_r = check_finite("radial_load", radial_load, "N")
-    k = float(check_positive("loop_stiffness", loop_stiffness, "N/m"))
+    k = check_loop_stiffness(loop_stiffness)
     rigid = np.isinf(k)
     start = pair_offsets(geom, closure, k, f_ext)
     a_len = float(geom.curvature_distance)
