@@ -1,0 +1,19 @@
+import pytest
+
+from servofmu.physics import catalog
+from servofmu.physics.bearing import BearingPair
+
+
+@pytest.fixture(scope="session")
+def b71803():
+    return catalog.bearing("71803")
+
+
+@pytest.fixture(scope="session")
+def yu_pair():
+    return BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+
+
+@pytest.fixture(scope="session")
+def ning_pair():
+    return BearingPair.from_catalog("ning_space_shaft", "mos2_film")
