@@ -34,9 +34,9 @@ from .fits import RadialFit, mounted_geometry
 from .friction import (
     BallSetTorques,
     FrictionCoefficients,
+    _palmgren,
     _regularised,
     ball_set_torques,
-    palmgren_viscous_torque,
 )
 from .geometry import BallBearing, RaceGeometry
 from .preload import (
@@ -471,8 +471,8 @@ def bearing_outputs(
     t = load.torques
     s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
     dm = thermal.geometry.pitch_diameter
-    viscous = 2.0 * palmgren_viscous_torque(thermal.kinematic_viscosity, w, dm, s0)
-    viscous_rest = 2.0 * palmgren_viscous_torque(thermal.kinematic_viscosity, 0.0, dm, s0)
+    viscous = 2.0 * _palmgren(thermal.kinematic_viscosity, w, dm, s0)
+    viscous_rest = 2.0 * _palmgren(thermal.kinematic_viscosity, 0.0, dm, s0)
     coulomb = t.hysteresis + t.spin + t.sliding
     excess = (pair.coefficients.static_friction_ratio - 1.0) * (t.spin + t.sliding)
     running = coulomb + viscous

@@ -51,6 +51,7 @@ def contact_constants_at(geom: RaceGeometry, alpha, expand: bool = False):
     """(inner, outer) :class:`~hertz.ContactConstants` and the series constant K_n [N/m^1.5]
     at contact angle(s) ``alpha`` [rad]. With ``expand`` the geometry fields get a trailing
     axis so that ``alpha`` may carry a ball axis."""
+    alpha = check_finite("alpha", alpha, "rad")
     inner = _groove_constants(geom, alpha, "inner", expand)
     outer = _groove_constants(geom, alpha, "outer", expand)
     k_n = (inner.stiffness ** (-2.0 / 3.0) + outer.stiffness ** (-2.0 / 3.0)) ** -1.5
@@ -209,7 +210,8 @@ def _axial_state(geom: RaceGeometry, a) -> AxialState:
 def axial_force(offset, geom: RaceGeometry):
     """Axial force Fa(a) [N] of one bearing at axial offset a [m]: odd, non-decreasing in a,
     zero inside the axial play (|a| < h) when the clearance is positive."""
-    return _axial_state(geom, np.asarray(offset, dtype=float)).axial_force
+    a = np.asarray(check_finite("offset", offset, "m"), dtype=float)
+    return _axial_state(geom, a).axial_force
 
 
 def _geometry_args(geom: RaceGeometry, shape):

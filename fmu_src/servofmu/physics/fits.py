@@ -99,11 +99,19 @@ def _fit_pressure(delta, d, d_b, d_o, m_in: Material, m_out: Material):
     return np.maximum(delta, 0.0) / (k_in + k_out)
 
 
+def _check_annulus(bore, outer_diameter):
+    d_b = check_positive("bore", bore, "m")
+    d_o = check_positive("outer_diameter", outer_diameter, "m")
+    if np.any(np.asarray(d_b) >= np.asarray(d_o)):
+        raise ValueError(f"bore = {bore!r} m must be below outer_diameter = {outer_diameter!r} m")
+
+
 def bore_change_under_external_pressure(pressure, outer_diameter, bore, material: Material):
     """Change of the bore diameter [m] of an annulus (bore d_b, outside D) under external
     pressure p [Pa]: Δd_b = −2·p·D²·d_b / (E·(D² − d_b²)) (Lamé; Yu 2017 eq 13, third line,
     the outer raceway of a ring pressed into a housing)."""
     p = check_nonnegative("pressure", pressure, "Pa")
+    _check_annulus(bore, outer_diameter)
     return (
         -2.0
         * p
@@ -118,6 +126,7 @@ def outside_change_under_internal_pressure(pressure, bore, outer_diameter, mater
     pressure p [Pa]: ΔD = 2·p·d²·D / (E·(D² − d²)) (Lamé; the inner raceway of a ring pressed
     onto a shaft, Ning §2.1)."""
     p = check_nonnegative("pressure", pressure, "Pa")
+    _check_annulus(bore, outer_diameter)
     return (
         2.0
         * p

@@ -25,13 +25,28 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from ._checks import check_nonnegative, check_positive, check_range
+from ._checks import (
+    check_choice,
+    check_finite,
+    check_nonnegative,
+    check_positive,
+    check_range,
+)
 from .units import CST, MM, NMM, RPM
 
 
 def race_contact_radius(pitch_diameter, ball_diameter, contact_angle, race: str):
     """Radius of the race contact about the bearing axis, (dm ∓ Dw·cos α)/2 [m] (Yu 2017
-    eq 2: − for the inner, + for the outer race)."""
+    eq 2: − for the inner, + for the outer race). pitch_diameter dm [m], ball_diameter Dw [m],
+    contact_angle α [rad]."""
+    check_choice("race", race, ("inner", "outer"))
+    check_positive("pitch_diameter", pitch_diameter, "m")
+    check_positive("ball_diameter", ball_diameter, "m")
+    check_finite("contact_angle", contact_angle, "rad")
+    return _race_radius(pitch_diameter, ball_diameter, contact_angle, race)
+
+
+def _race_radius(pitch_diameter, ball_diameter, contact_angle, race):
     sign = -1.0 if race == "inner" else 1.0
     return 0.5 * (pitch_diameter + sign * ball_diameter * np.cos(contact_angle))
 
@@ -42,6 +57,14 @@ def hysteresis_rolling_force(load, semi_minor_axis, ball_diameter, loss_factor):
 
     load Q [N], semi_minor_axis b [m] (rolling direction), ball_diameter Dw [m],
     loss_factor α_r [-] (energy lost per cycle, < 1 % for metals per Yu)."""
+    check_nonnegative("load", load, "N")
+    check_nonnegative("semi_minor_axis", semi_minor_axis, "m")
+    check_positive("ball_diameter", ball_diameter, "m")
+    check_range("loss_factor", loss_factor, 0.0, 1.0)
+    return _hysteresis(load, semi_minor_axis, ball_diameter, loss_factor)
+
+
+def _hysteresis(load, semi_minor_axis, ball_diameter, loss_factor):
     return 3.0 * loss_factor * semi_minor_axis * load / (8.0 * ball_diameter)
 
 
@@ -49,6 +72,14 @@ def spin_moment(load, semi_major_axis, e_integral, friction_coefficient):
     """Spin friction moment of one contact about its normal, M'_K = (3/8)·μ·Q·a·E(e) [N·m]
     (Yu 2017 eq 6; Harris & Kotzalas 2007). load Q [N], semi_major_axis a [m], e_integral E(e)
     [-] the complete elliptic integral of the second kind, friction_coefficient μ [-]."""
+    check_nonnegative("load", load, "N")
+    check_nonnegative("semi_major_axis", semi_major_axis, "m")
+    check_range("e_integral", e_integral, 1.0, np.pi / 2)
+    check_nonnegative("friction_coefficient", friction_coefficient)
+    return _spin(load, semi_major_axis, e_integral, friction_coefficient)
+
+
+def _spin(load, semi_major_axis, e_integral, friction_coefficient):
     return 0.375 * friction_coefficient * load * semi_major_axis * e_integral
 
 
@@ -75,6 +106,15 @@ def heathcote_sliding_force(load, semi_major_axis, ball_diameter, groove_radius,
 
     load Q [N], semi_major_axis a [m], ball_diameter Dw [m], groove_radius r [m],
     friction μ [-]."""
+    check_nonnegative("load", load, "N")
+    check_nonnegative("semi_major_axis", semi_major_axis, "m")
+    check_positive("ball_diameter", ball_diameter, "m")
+    check_positive("groove_radius", groove_radius, "m")
+    check_nonnegative("friction", friction)
+    return _heathcote(load, semi_major_axis, ball_diameter, groove_radius, friction)
+
+
+def _heathcote(load, semi_major_axis, ball_diameter, groove_radius, friction):
     r_c = 2.0 * groove_radius * ball_diameter / (2.0 * groove_radius + ball_diameter)
     return HEATHCOTE * friction * load * semi_major_axis**2 / (r_c * ball_diameter)
 
@@ -110,6 +150,14 @@ def palmgren_viscous_torque(kinematic_viscosity, speed, pitch_diameter, s0):
     kinematic_viscosity ν0 [m²/s], speed ω [rad/s] (sign ignored), pitch_diameter dm [m],
     s0 [-] the bearing/lubrication factor (f0 in Palmgren's notation).
     """
+    check_nonnegative("kinematic_viscosity", kinematic_viscosity, "m²/s")
+    check_finite("speed", speed, "rad/s")
+    check_positive("pitch_diameter", pitch_diameter, "m")
+    check_nonnegative("s0", s0)
+    return _palmgren(kinematic_viscosity, speed, pitch_diameter, s0)
+
+
+def _palmgren(kinematic_viscosity, speed, pitch_diameter, s0):
     nu_n = kinematic_viscosity / CST * abs(speed) / RPM
     dm_mm = pitch_diameter / MM
     return 1e-7 * s0 * _maximum(nu_n, PALMGREN_THRESHOLD) ** (2.0 / 3.0) * dm_mm**3 * NMM
@@ -128,6 +176,9 @@ def regularised_friction_torque(
     regularisation and Stribeck decay follow Andersson, Söderberg & Björklund (2007),
     Tribology International 40:580. Signed like ``speed``.
     """
+    check_finite("speed", speed, "rad/s")
+    check_nonnegative("running_torque", running_torque, "N·m")
+    check_nonnegative("breakaway_excess", breakaway_excess, "N·m")
     check_positive("regularisation_speed", regularisation_speed, "rad/s")
     check_positive("stribeck_speed", stribeck_speed, "rad/s")
     return _regularised(
@@ -224,19 +275,19 @@ def ball_set_torques(
     dm, dw = g(pitch_diameter), g(ball_diameter)
     a_i, b_i = inner.semi_axes(load)
     a_o, b_o = outer.semi_axes(load)
-    r_in = race_contact_radius(dm, dw, contact_angle, "inner")
-    r_out = race_contact_radius(dm, dw, contact_angle, "outer")
+    r_in = _race_radius(dm, dw, contact_angle, "inner")
+    r_out = _race_radius(dm, dw, contact_angle, "outer")
     alpha_r, mu = coefficients.hysteresis_loss, coefficients.sliding_friction
-    hyst_i = hysteresis_rolling_force(load, b_i, dw, alpha_r) * r_in
-    hyst_o = hysteresis_rolling_force(load, b_o, dw, alpha_r) * r_out
+    hyst_i = _hysteresis(load, b_i, dw, alpha_r) * r_in
+    hyst_o = _hysteresis(load, b_o, dw, alpha_r) * r_out
     if differential_sliding:
-        slide_i = heathcote_sliding_force(load, a_i, dw, g(inner_groove_radius), mu) * r_in
-        slide_o = heathcote_sliding_force(load, a_o, dw, g(outer_groove_radius), mu) * r_out
+        slide_i = _heathcote(load, a_i, dw, g(inner_groove_radius), mu) * r_in
+        slide_o = _heathcote(load, a_o, dw, g(outer_groove_radius), mu) * r_out
     else:
         slide_i = slide_o = np.zeros_like(load)
     sin_a = np.abs(np.sin(contact_angle))
-    spin_i = spin_moment(load, a_i, inner.e_integral, mu) * sin_a
-    spin_o = spin_moment(load, a_o, outer.e_integral, mu) * sin_a
+    spin_i = _spin(load, a_i, inner.e_integral, mu) * sin_a
+    spin_o = _spin(load, a_o, outer.e_integral, mu) * sin_a
     if lubrication == "solid":
         spin_o = np.zeros_like(spin_o)
     else:

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_positive, check_range
+from ._checks import check_finite, check_positive, check_range
 from .materials import Material, reduced_compliance
 
 
@@ -51,7 +51,10 @@ def diametral_clearance(inner_groove_diameter, outer_groove_diameter, ball_diame
 
     Negative values mean a radial interference of the balls between the grooves.
     """
-    return outer_groove_diameter - inner_groove_diameter - 2.0 * ball_diameter
+    d_i = check_positive("inner_groove_diameter", inner_groove_diameter, "m")
+    d_o = check_positive("outer_groove_diameter", outer_groove_diameter, "m")
+    dw = check_positive("ball_diameter", ball_diameter, "m")
+    return d_o - d_i - 2.0 * dw
 
 
 def free_contact_angle(clearance, curvature_distance):
@@ -79,7 +82,7 @@ def first_contact_offset(clearance, curvature_distance):
     for Pd ≤ 0 (balls already in contact). Harris & Kotzalas 2007, ch. 2 (axial play Pe = 2h).
     """
     a = np.asarray(check_positive("curvature_distance", curvature_distance, "m"))
-    pd = np.clip(np.asarray(clearance, dtype=float), 0.0, 2.0 * a)
+    pd = np.clip(np.asarray(check_finite("clearance", clearance, "m"), dtype=float), 0.0, 2.0 * a)
     out = np.sqrt(np.maximum(a**2 - (a - 0.5 * pd) ** 2, 0.0))
     return out if out.ndim else float(out)
 
@@ -211,6 +214,22 @@ class RaceGeometry:
     n_balls: int
     compliance: float
 
+    def __post_init__(self):
+        dw = check_positive("ball_diameter", self.ball_diameter, "m")
+        check_positive("inner_race_diameter", self.inner_race_diameter, "m")
+        check_positive("outer_race_diameter", self.outer_race_diameter, "m")
+        for name in ("inner_groove_radius", "outer_groove_radius"):
+            r = check_positive(name, getattr(self, name), "m")
+            bad = np.asarray(r) <= 0.5 * np.asarray(dw)
+            if np.any(bad):
+                raise ValueError(
+                    f"{name} = {float(np.asarray(r)[bad].flat[0])!r} m must exceed half the ball "
+                    f"diameter (curvature factor > 0.5)"
+                )
+        if not (isinstance(self.n_balls, (int, np.integer)) and self.n_balls >= 3):
+            raise ValueError(f"n_balls = {self.n_balls!r} must be an integer >= 3")
+        check_positive("compliance", self.compliance, "1/Pa")
+
     @property
     def pitch_diameter(self):
         """dm = (d_i + d_o)/2 [m]."""
@@ -219,9 +238,7 @@ class RaceGeometry:
     @property
     def clearance(self):
         """Diametral clearance Pd [m] (negative: radial interference)."""
-        return diametral_clearance(
-            self.inner_race_diameter, self.outer_race_diameter, self.ball_diameter
-        )
+        return self.outer_race_diameter - self.inner_race_diameter - 2.0 * self.ball_diameter
 
     @property
     def curvature_distance(self):

@@ -114,12 +114,12 @@ class ContactConstants:
 
     def semi_axes(self, load):
         """(a, b) [m] for normal load ``load`` [N] ≥ 0."""
-        q13 = np.cbrt(load)
+        q13 = np.cbrt(check_nonnegative("load", load, "N"))
         return self.a_coef * q13, self.b_coef * q13
 
     def deflection(self, load):
         """Normal approach δ [m] for load [N] ≥ 0."""
-        return (load / self.stiffness) ** (2.0 / 3.0)
+        return (check_nonnegative("load", load, "N") / self.stiffness) ** (2.0 / 3.0)
 
     def max_pressure(self, load):
         """Maximum Hertz pressure p0 = 3Q/(2πab) [Pa] (0 where the load is 0)."""
@@ -194,4 +194,5 @@ def combined_stiffness(k_inner, k_outer):
 def hertz_load(stiffness, deflection):
     """Normal load Q = K·max(δ, 0)^1.5 [N] (Harris & Kotzalas 2007, ch. 7)."""
     check_nonnegative("stiffness", stiffness, "N/m^1.5")
+    check_range("deflection", deflection, unit="m")
     return stiffness * np.maximum(deflection, 0.0) ** 1.5

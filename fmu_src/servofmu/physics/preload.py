@@ -37,7 +37,13 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize.elementwise import bracket_root, find_root
 
-from ._checks import check_choice, check_finite, check_positive, check_temperature
+from ._checks import (
+    check_choice,
+    check_finite,
+    check_nonnegative,
+    check_positive,
+    check_temperature,
+)
 from .equilibrium import _geometry_args, _geometry_from_args, axial_force, offset_for_axial_force
 from .geometry import RaceGeometry
 from .materials import Material
@@ -129,7 +135,11 @@ def _pair_residual(p, z, closure, k_loop, geom):
 
 def mean_offset(z, closure, k_loop, geom: RaceGeometry):
     """Mean offset p [m] of the pair (a_A = p + z, a_B = p − z) that satisfies the loop
-    compatibility for shaft displacement z [m] (elementwise bracketing root)."""
+    compatibility for shaft displacement z [m] (elementwise bracketing root), for loop closure
+    ``closure`` [m] and loop stiffness ``k_loop`` [N/m] (inf: rigid)."""
+    z = check_finite("z", z, "m")
+    closure = check_finite("closure", closure, "m")
+    k_loop = check_loop_stiffness(k_loop)
     z, closure = np.broadcast_arrays(np.asarray(z, float), np.asarray(closure, float))
     if np.isinf(k_loop):
         return 0.5 * closure
@@ -208,7 +218,9 @@ def pair_axial_stiffness(stiffness_a, stiffness_b, loop_stiffness: float):
     """Axial stiffness of the shaft in the pair [N/m] from the bearings' dFa/da [N/m] and the
     loop stiffness k [N/m]: K = k_A + k_B − (k_A − k_B)²/(4k + k_A + k_B) (differentiating the
     two conditions of :func:`pair_offsets`); 2·k_b for a symmetric pair."""
-    ka, kb = np.asarray(stiffness_a), np.asarray(stiffness_b)
+    ka = np.asarray(check_nonnegative("stiffness_a", stiffness_a, "N/m"))
+    kb = np.asarray(check_nonnegative("stiffness_b", stiffness_b, "N/m"))
+    loop_stiffness = check_loop_stiffness(loop_stiffness)
     if np.isinf(loop_stiffness):
         return ka + kb
     return ka + kb - (ka - kb) ** 2 / (4.0 * loop_stiffness + ka + kb)
@@ -264,6 +276,7 @@ def pair_equilibrium(
 
     f_ext = check_finite("axial_load", axial_load, "N")
     f_r = check_finite("radial_load", radial_load, "N")
+    closure = check_finite("closure", closure, "m")
     k = check_loop_stiffness(loop_stiffness)
     rigid = np.isinf(k)
     start = pair_offsets(geom, closure, k, f_ext)
