@@ -28,6 +28,7 @@ lint: $(STAMP)
 ## benchmarks (not part of the test run)
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_bearing.py
+	$(BIN)/python benchmarks/bench_actuator.py
 
 clean:
 	rm -rf $(VENV) $(OUT) .pytest_cache .ruff_cache

@@ -114,3 +114,27 @@ def test_cli_rejects_unknown_paper(capsys):
     with pytest.raises(SystemExit):
         cli.main(["paper", "smith1999"])
     assert "invalid choice" in capsys.readouterr().err
+
+
+@pytest.fixture(scope="module")
+def liu(tmp_path_factory):
+    return run("liu2014", tmp_path_factory.mktemp("liu"))
+
+
+def test_liu_report(liu):
+    r = rows(liu)
+    for m in ("100", "200", "300"):
+        assert r[f"table1.series.{m}"].status == "reproduced"
+    assert (
+        r["table1.F3.100"].status == "calibrated" and r["table1.K_rod.100"].status == "calibrated"
+    )
+    assert r["table1.F3.300"].status == "reproduced"  # eq 10–11 linear in M
+    assert r["table1.K_rod.300"].status == "not-reproduced"  # eq 9–20 cannot stiffen
+    assert r["extension.measured.100"].status == "calibrated"
+    assert r["extension.measured.300"].computed > r["extension.measured.100"].computed
+    names = {p.split("/")[-1] for p in liu.files}
+    assert {
+        "fig2_reduction_ratio.png",
+        "stiffness_vs_load.csv",
+        "stiffness_vs_temperature.png",
+    } <= names

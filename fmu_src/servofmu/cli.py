@@ -7,6 +7,7 @@ import sys
 from pathlib import Path
 
 from . import __version__
+from .papers import PAPERS
 
 
 def _paper(args) -> int:
@@ -27,7 +28,7 @@ def build_parser() -> argparse.ArgumentParser:
         "paper",
         help="reproduce a source paper: validation report, CSV curves, PNG figures",
     )
-    p.add_argument("name", choices=("yu2017", "ning"), help="which paper")
+    p.add_argument("name", choices=PAPERS, help="which paper")
     p.add_argument("--json", action="store_true", help="print the report as JSON")
     p.add_argument("--out", help="directory for CSV and PNG files (default out/NAME)")
     p.set_defaults(func=_paper)

@@ -1,9 +1,9 @@
 """Reproductions of the source papers: validation reports, CSV curves and PNG figures.
 
-``servofmu paper yu2017|ning [--json] [--out DIR]``; see :mod:`.report` for the format.
+``servofmu paper yu2017|ning|liu2014 [--json] [--out DIR]``; see :mod:`.report` for the format.
 """
 
-PAPERS = ("yu2017", "ning")
+PAPERS = ("yu2017", "ning", "liu2014")
 
 
 def run(paper: str, out_dir):
@@ -12,6 +12,8 @@ def run(paper: str, out_dir):
         from . import yu2017 as mod
     elif paper == "ning":
         from . import ning as mod
+    elif paper == "liu2014":
+        from . import liu2014 as mod
     else:
         raise ValueError(f"paper = {paper!r} is not one of {PAPERS}")
     return mod.reproduce(out_dir)

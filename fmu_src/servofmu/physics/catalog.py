@@ -191,3 +191,50 @@ def mounting(key: str):
         assembly_preload=q("assembly_preload") if "assembly_preload" in entry else None,
         provenance=tuple(sorted(prov.items())),
     )
+
+
+@functools.cache
+def actuator(key: str, **overrides):
+    """The :class:`actuator.Actuator` ``key`` from ``data/actuators.toml``, with the
+    reflected stiffnesses of the data turned into intrinsic ones at the reference angle.
+    ``overrides`` (SI) replace data values before that conversion (used by the calibration)."""
+    import dataclasses
+
+    from .actuator import Actuator, kinematics
+
+    entry = _lookup("actuators", key)
+    v, prov = {}, {}
+    for field, spec in entry.items():
+        if isinstance(spec, dict):
+            v[field], prov[field] = quantity(spec, field)
+    reflected = {
+        "gear_stiffness": v.pop("gear_stiffness_reflected"),
+        "screw_stiffness": v.pop("screw_stiffness_reflected"),
+        "housing_stiffness": v.pop("housing_stiffness_reflected"),
+    }
+    ref_angle = v.pop("reference_angle")
+    for field, value in overrides.items():
+        if field not in v:
+            raise ValueError(f"actuator override {field!r} is not one of {sorted(v)}")
+        v[field] = value
+        prov[field] = "override"
+    act = Actuator(
+        key=key,
+        name=entry["name"],
+        support_mounting=entry.get("support_mounting", ""),
+        gear_stiffness=1.0,
+        screw_stiffness=1.0,
+        housing_stiffness=1.0,
+        **v,
+    )
+    lever2 = float(kinematics(act, ref_angle).lever) ** 2
+    screw_rev = (2.0 * math.pi / act.screw_lead) ** 2
+    intrinsic = {
+        "gear_stiffness": reflected["gear_stiffness"] / (screw_rev * lever2),
+        "screw_stiffness": reflected["screw_stiffness"] / lever2,
+        "housing_stiffness": reflected["housing_stiffness"] / lever2,
+    }
+    for f in intrinsic:
+        prov[f] = "derived: " + prov.pop(f"{f}_reflected") + ", through the kinematics"
+    prov.pop("reference_angle", None)
+    return dataclasses.replace(act, **intrinsic, provenance=tuple(sorted(prov.items())))

@@ -1,0 +1,374 @@
+"""Stiffness of an electromechanical actuator: gear train → ball screw → crank-slider linkage
+→ output shaft, in a housing (Liu Yuan, Wang Yongle, Cao Donghai, Liu Tao 2014, "A stiffness
+calculation method of servo mechanism", Navigation Positioning and Timing 2014(2):46–49),
+plus the screw's support bearings as a Hertzian element (this project's extension).
+
+Geometry of the crank-slider (Liu Fig 5; the figure is lost, this layout satisfies eq 9–16):
+the output shaft C is the origin; the crank CB of length L1 stands at angle θ from the slide
+direction x, B = L1·(cos θ, sin θ); the connecting rod BA of length L2 joins the ball-screw nut
+A, which slides on y = Y1: A = (L1·cos θ + L2·cos γ, Y1) with
+
+    sin γ = (L1·sin θ − Y1)/L2                       (eq 9, corrected: printed inverted).
+
+The output (rudder) angle is δ = θ − θ0, counter-clockwise positive. The nut position x_A(θ)
+is solved exactly (eq 2–3 without the small-angle expansion), and its derivative
+dx/dθ = −L1·(sin θ + cos θ·tan γ) is the kinematic lever that reflects every axial
+stiffness of the screw line to the output shaft: K_out = (dx/dθ)²·k_axial.
+
+Reduction ratios (eq 1, 4, 5): i_s = 2π·L1/p (eq 1: the nut travel read as the arc of the
+crank of length L1 — Liu names that lever "L", the connecting rod's name in eq 9, but only
+the crank radius makes the ratio dimensionless), i = i_g·(2π/p)·|dx/dθ| (eq 4), and
+i_r = i/(i_g·i_s) = |dx/dθ|/L1 (eq 5): 1 where the rod is square to the crank.
+
+Series stiffness at the output (eq 6–8):
+    1/K = 1/((i_s·i_r)²·K_gear) + 1/(i_r²·K_screw) + 1/K_rod + 1/K_body (+ 1/K_support)
+with K_gear torsional at the screw shaft, K_screw = k_screw·L1² the screw's axial stiffness
+at the crank radius (so i_r²·K_screw = (dx/dθ)²·k_screw), K_body = (dx/dθ)²·k_body.
+
+Linkage stiffness (eq 9–20): rod force F2 = M/(L1·sin β) (eq 10), screw force
+F3 = F2·cos γ (eq 11), the crank and rod stretch by N·L/(E·A) (eq 12–13), the deformed
+mechanism is closed again with the nut held (eq 14–16, solved exactly as the intersection of
+two circles), the output shaft twists by M·l/(G·I1) (eq 17) and the output arm bends as a
+cantilever by M·l³/(3·E·I·L1) (eq 18, corrected: the printed form lacks the second moment of
+area I), adding arctan(M·l²/(3·E·I·L1)) to the rotation (eq 19), and K_rod = M/Δθ (eq 20).
+Every term is linear in M for small deflections: eq 9–20 give a load-independent K_rod.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import numpy as np
+
+from ._checks import check_finite, check_positive, check_range, check_temperature
+from .units import DEG
+
+
+@dataclass(frozen=True)
+class Actuator:
+    """Parameters of the actuator (SI). Build from the catalogue with
+    :func:`catalog.actuator`.
+
+    Attributes
+    ----------
+    key, name : catalogue key and description
+    gear_ratio : i_g [-]
+    screw_lead : p [m/rev]
+    crank_length : L1 [m]
+    rod_length : L2 [m]
+    neutral_crank_angle : θ0 [rad], crank angle at zero output angle
+    neutral_rod_angle : γ0 [rad], rod angle at zero output angle (sets Y1)
+    crank_area, rod_area : A1, A2 [m²] (eq 12–13)
+    arm_length : l [m] (eq 17–19)
+    shaft_polar_moment : I1 [m⁴] (torsion, eq 17)
+    arm_second_moment : I [m⁴] (bending, eq 18–19)
+    youngs_modulus, shear_modulus : E, G [Pa] of the linkage
+    gear_stiffness : K_gear, torsional at the screw shaft [N·m/rad]
+    screw_stiffness : k_screw, axial [N/m]
+    housing_stiffness : k_body, axial along the screw [N/m]
+    support_mounting : catalogue key of the screw's support-bearing pair (or "")
+    seat_stiffness : axial stiffness in series with the support bearings [N/m] (inf: rigid)
+    provenance : ((field, source), ...)
+    """
+
+    key: str
+    name: str
+    gear_ratio: float
+    screw_lead: float
+    crank_length: float
+    rod_length: float
+    neutral_crank_angle: float
+    neutral_rod_angle: float
+    crank_area: float
+    rod_area: float
+    arm_length: float
+    shaft_polar_moment: float
+    arm_second_moment: float
+    youngs_modulus: float
+    shear_modulus: float
+    gear_stiffness: float
+    screw_stiffness: float
+    housing_stiffness: float
+    support_mounting: str = ""
+    seat_stiffness: float = np.inf
+    provenance: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self):
+        for name in (
+            "gear_ratio",
+            "screw_lead",
+            "crank_length",
+            "rod_length",
+            "crank_area",
+            "rod_area",
+            "arm_length",
+            "shaft_polar_moment",
+            "arm_second_moment",
+            "youngs_modulus",
+            "shear_modulus",
+            "gear_stiffness",
+            "screw_stiffness",
+            "housing_stiffness",
+        ):
+            check_positive(name, getattr(self, name))
+        check_range(
+            "neutral_crank_angle", self.neutral_crank_angle, 0.0, np.pi, lo_open=True, hi_open=True
+        )
+        check_range(
+            "neutral_rod_angle",
+            self.neutral_rod_angle,
+            -np.pi / 2,
+            np.pi / 2,
+            lo_open=True,
+            hi_open=True,
+        )
+        if not self.seat_stiffness > 0:
+            raise ValueError(
+                f"seat_stiffness = {self.seat_stiffness!r} N/m must be > 0 (inf: rigid)"
+            )
+        if (
+            abs(self.slide_offset - self.crank_length * np.sin(self.neutral_crank_angle))
+            > self.rod_length
+        ):
+            raise ValueError("the linkage cannot close at the neutral position")
+
+    @property
+    def slide_offset(self) -> float:
+        """Y1 [m]: height of the slide above the output shaft (from θ0 and γ0, eq 9)."""
+        return self.crank_length * np.sin(self.neutral_crank_angle) - self.rod_length * np.sin(
+            self.neutral_rod_angle
+        )
+
+    def source(self, field: str) -> str:
+        return dict(self.provenance).get(field, "")
+
+
+@dataclass(frozen=True)
+class Kinematics:
+    """Crank-slider state at output angles δ (arrays).
+
+    Attributes
+    ----------
+    crank_angle : θ = θ0 + δ [rad]
+    rod_angle : γ [rad] (eq 9)
+    transmission_angle : β, between crank BC and rod BA at B [rad]
+    nut_position : x_A [m] (eq 2–3)
+    lever : dx_A/dθ [m/rad] (signed)
+    """
+
+    crank_angle: np.ndarray
+    rod_angle: np.ndarray
+    transmission_angle: np.ndarray
+    nut_position: np.ndarray
+    lever: np.ndarray
+
+
+def _sin_rod_angle(act: Actuator, theta):
+    return (act.crank_length * np.sin(theta) - act.slide_offset) / act.rod_length
+
+
+def kinematics(act: Actuator, output_angle) -> Kinematics:
+    """Exact crank-slider kinematics at output angle δ [rad] (Liu 2014 eq 2–3, 9): rod angle,
+    transmission angle, nut position and its derivative. Raises ValueError where the linkage
+    cannot close (|sin γ| ≥ 1)."""
+    delta = np.asarray(check_finite("output_angle", output_angle, "rad"), dtype=float)
+    theta = act.neutral_crank_angle + delta
+    s = _sin_rod_angle(act, theta)
+    if np.any(np.abs(s) >= 1.0):
+        bad = float(np.asarray(delta)[np.abs(s) >= 1.0].flat[0])
+        raise ValueError(
+            f"output_angle = {bad!r} rad is outside the linkage's reach: sin γ = "
+            f"(L1·sin θ − Y1)/L2 reaches ±1 (crank {act.crank_length!r} m, rod "
+            f"{act.rod_length!r} m)"
+        )
+    gamma = np.arcsin(s)
+    l1 = act.crank_length
+    x = l1 * np.cos(theta) + act.rod_length * np.cos(gamma)
+    lever = -l1 * (np.sin(theta) + np.cos(theta) * np.tan(gamma))
+    # β: angle at B between B→C (−crank direction) and B→A (rod direction)
+    bc = -np.stack([np.cos(theta), np.sin(theta)])
+    ba = np.stack([np.cos(gamma), -np.sin(gamma)])
+    beta = np.arccos(np.clip(np.sum(bc * ba, axis=0), -1.0, 1.0))
+    dead = np.abs(lever) < 1e-6 * l1
+    if np.any(dead):
+        bad = float(np.asarray(delta)[dead].flat[0])
+        raise ValueError(
+            f"output_angle = {bad!r} rad puts the linkage at a dead centre (crank and rod in "
+            "line): no moment can be carried"
+        )
+    return Kinematics(theta, gamma, beta, x, lever)
+
+
+@dataclass(frozen=True)
+class ReductionRatios:
+    """Liu 2014 eq 1, 4, 5 at output angles δ: ``screw`` i_s = 2π·L1/p, ``linkage``
+    i_r = |dx/dθ|/L1, ``total`` i = i_g·i_s·i_r (motor radians per output radian)."""
+
+    screw: float
+    linkage: np.ndarray
+    total: np.ndarray
+
+
+def reduction_ratio(act: Actuator, output_angle) -> ReductionRatios:
+    """Reduction ratios at output angle δ [rad] (Liu 2014 eq 1, 4–5)."""
+    lever = np.abs(kinematics(act, output_angle).lever)
+    i_s = 2.0 * np.pi * act.crank_length / act.screw_lead
+    i_r = lever / act.crank_length
+    return ReductionRatios(screw=i_s, linkage=i_r, total=act.gear_ratio * i_s * i_r)
+
+
+def screw_force(act: Actuator, output_angle, load_torque):
+    """Axial force in the screw F3 = M·cos γ/(L1·sin β) = M/|dx/dθ| [N] (Liu 2014 eq 10–11;
+    the second form is virtual work) for hinge moment M [N·m] at output angle δ [rad]."""
+    m = np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float)
+    return m / np.abs(kinematics(act, output_angle).lever)
+
+
+def linkage_rotation(act: Actuator, output_angle, load_torque) -> np.ndarray:
+    """Elastic rotation Δθ [rad] of the output shaft under hinge moment M [N·m] with the nut
+    held (Liu 2014 eq 10–19, eq 18–19 with the second moment of area I)."""
+    m = np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float)
+    kin = kinematics(act, output_angle)
+    l1, l2, e = act.crank_length, act.rod_length, act.youngs_modulus
+    sin_b, cos_b = np.sin(kin.transmission_angle), np.cos(kin.transmission_angle)
+    f2 = m / (l1 * sin_b)  # eq 10: rod force (compression for M > 0)
+    # eq 12–13: crank carries F2·cos β along its length, the rod F2 (compression shortens)
+    l1_new = l1 + f2 * cos_b * l1 / (e * act.crank_area)
+    l2_new = l2 - f2 * l2 / (e * act.rod_area)
+    # eq 14–16: close the mechanism again with the nut A fixed: B' is the intersection of the
+    # circles |CB'| = L1', |AB'| = L2' on the side of the undeformed B
+    ax, ay = kin.nut_position, act.slide_offset
+    d2 = ax**2 + ay**2
+    d = np.sqrt(d2)
+    along = (l1_new**2 - l2_new**2 + d2) / (2.0 * d)
+    across = np.sqrt(np.maximum(l1_new**2 - along**2, 0.0))
+    ux, uy = ax / d, ay / d
+    bx0, by0 = l1 * np.cos(kin.crank_angle), l1 * np.sin(kin.crank_angle)
+    side = np.sign(ux * by0 - uy * bx0)  # which of the two intersections is B
+    bx = along * ux - side * across * uy
+    by = along * uy + side * across * ux
+    theta_new = np.arctan2(by, bx)
+    d_theta1 = np.angle(np.exp(1j * (theta_new - kin.crank_angle)))
+    torsion = m * act.arm_length / (act.shear_modulus * act.shaft_polar_moment)  # eq 17
+    bending = np.arctan(
+        m * act.arm_length**2 / (3.0 * e * act.arm_second_moment * l1)
+    )  # eq 18–19, with I
+    return np.abs(d_theta1) * np.sign(m) + torsion + bending
+
+
+def linkage_stiffness(act: Actuator, output_angle, load_torque):
+    """K_rod = M/Δθ [N·m/rad] (Liu 2014 eq 20); at M = 0 the limit for a small moment."""
+    m = np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float)
+    probe = np.where(m == 0.0, 1.0, m)
+    return probe / linkage_rotation(act, output_angle, probe)
+
+
+@dataclass(frozen=True)
+class StiffnessBreakdown:
+    """Stiffness of the actuator at the output shaft and its parts (arrays), N·m/rad.
+
+    gear, screw, linkage, housing, support_bearing : each element reflected to the output
+    (Liu eq 8; support_bearing is this project's extension, inf when none); total : the
+    series sum (eq 6); deflection : M/total [rad]; reduction_ratio : i [-]; screw_force : F3
+    [N]; shares : each element's compliance over the total compliance (Liu Fig 3–4).
+    """
+
+    gear: np.ndarray
+    screw: np.ndarray
+    linkage: np.ndarray
+    housing: np.ndarray
+    support_bearing: np.ndarray
+    total: np.ndarray
+    deflection: np.ndarray
+    reduction_ratio: np.ndarray
+    screw_force: np.ndarray
+
+    ELEMENTS = ("gear", "screw", "linkage", "housing", "support_bearing")
+
+    def share(self, element: str):
+        """Compliance share of ``element`` [-]."""
+        return self.total / getattr(self, element)
+
+
+def series_stiffness(*stiffnesses):
+    """1/K = Σ 1/K_i (Liu 2014 eq 6), elementwise [unit of the inputs]; an infinite (rigid)
+    element drops out."""
+    ks = np.broadcast_arrays(*(np.asarray(k, dtype=float) for k in stiffnesses))
+    for i, k in enumerate(ks):
+        if np.any(~(k > 0)):
+            raise ValueError(f"stiffness[{i}] = {float(k[~(k > 0)].flat[0])!r} must be > 0")
+    return 1.0 / sum(1.0 / k for k in ks)
+
+
+def stiffness_breakdown(
+    act: Actuator, output_angle, load_torque, temperature=293.15
+) -> StiffnessBreakdown:
+    """Stiffness of the actuator at the output shaft (Liu 2014 eq 6–20 and the support-bearing
+    extension) for output angle δ [rad], hinge moment M [N·m] and temperature T [K], all
+    broadcast together. Elastic moduli are temperature-independent; the support-bearing
+    preload follows the thermal coupling of :mod:`bearing`."""
+    delta, m, t = np.broadcast_arrays(
+        np.asarray(check_finite("output_angle", output_angle, "rad"), dtype=float),
+        np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float),
+        np.asarray(check_temperature("temperature", temperature), dtype=float),
+    )
+    kin = kinematics(act, delta)
+    lever2 = kin.lever**2
+    ratios = reduction_ratio(act, delta)
+    gear = (2.0 * np.pi / act.screw_lead) ** 2 * lever2 * act.gear_stiffness  # (i_s·i_r)²·K_gear
+    screw = lever2 * act.screw_stiffness  # i_r²·K_screw with K_screw = k_screw·L1²
+    housing = lever2 * act.housing_stiffness
+    linkage = linkage_stiffness(act, delta, m)
+    f3 = np.abs(m) / np.abs(kin.lever)
+    support = lever2 * support_axial_stiffness(act, f3, t)
+    total = series_stiffness(gear, screw, linkage, housing, support)
+    return StiffnessBreakdown(
+        gear=gear,
+        screw=screw,
+        linkage=linkage,
+        housing=housing,
+        support_bearing=support,
+        total=total,
+        deflection=m / total,
+        reduction_ratio=ratios.total,
+        screw_force=f3,
+    )
+
+
+@functools.lru_cache(maxsize=8)
+def _support_pair(mounting: str):
+    from .bearing import BearingPair
+
+    return BearingPair.from_catalog(mounting, "mos2_film")
+
+
+def support_axial_stiffness(act: Actuator, screw_force, temperature):
+    """Secant axial stiffness F3/Δz [N/m] of the support-bearing pair under the screw force
+    F3 [N] at temperature T [K], in series with the seat stiffness (this project's extension
+    of Liu 2014: the Hertzian element that makes the stiffness rise with load). Δz is the
+    shaft displacement of the preloaded pair from its unloaded state (general geometry,
+    :func:`preload.pair_offsets`); at F3 = 0 the tangent stiffness. inf when the actuator has
+    no support mounting."""
+    f3, t = np.broadcast_arrays(
+        np.asarray(check_finite("screw_force", screw_force, "N"), dtype=float),
+        np.asarray(check_temperature("temperature", temperature), dtype=float),
+    )
+    if not act.support_mounting:
+        return np.full(f3.shape, np.inf)
+    from .bearing import axial_load_state, thermal_state
+    from .preload import pair_offsets
+
+    pair = _support_pair(act.support_mounting)  # its lubricant plays no part in stiffness
+    th = thermal_state(pair, t)
+    off = pair_offsets(th.geometry, th.closure, th.loop_stiffness, f3)
+    dz = 0.5 * (off.offset_a - off.offset_b)
+    tangent = axial_load_state(pair, th, th.preload_offset, th.preload_offset).axial_stiffness
+    with np.errstate(invalid="ignore", divide="ignore"):
+        bearing = np.where(f3 > 0, f3 / np.where(dz > 0, dz, 1.0), tangent)
+    return series_stiffness(bearing, act.seat_stiffness)
+
+
+def per_degree(stiffness):
+    """N·m/rad → N·m/° (Liu's unit), for display."""
+    return np.asarray(stiffness) * DEG

@@ -1,0 +1,162 @@
+import dataclasses
+import math
+import re
+
+import numpy as np
+import pytest
+
+from servofmu.physics import actuator as A
+from servofmu.physics import catalog
+from servofmu.physics.units import DEG
+
+
+@pytest.fixture(scope="module")
+def act():
+    return catalog.actuator("liu2014_ema")
+
+
+@pytest.fixture(scope="module")
+def bare(act):
+    """Liu's four elements only (no support bearings)."""
+    return dataclasses.replace(act, support_mounting="")
+
+
+def test_series_formula():
+    assert A.series_stiffness(2.0, 2.0) == pytest.approx(1.0)
+    assert A.series_stiffness(3.0, np.inf) == pytest.approx(3.0)  # rigid element drops out
+    k = A.series_stiffness(np.array([1.0, 4.0]), 4.0)
+    np.testing.assert_allclose(k, [0.8, 2.0])
+    with pytest.raises(ValueError, match=re.escape("stiffness[1] = -1.0")):
+        A.series_stiffness(1.0, -1.0)
+
+
+def test_lever_is_the_derivative_of_the_exact_position(act):
+    d = np.linspace(-30, 30, 13) * DEG
+    h = 1e-7
+    num = (A.kinematics(act, d + h).nut_position - A.kinematics(act, d - h).nut_position) / (2 * h)
+    np.testing.assert_allclose(A.kinematics(act, d).lever, num, rtol=1e-7)
+
+
+def test_eq10_11_agree_with_virtual_work(act):
+    # F3 = M·cos γ/(L1·sin β) (eq 10–11) must equal M/|dx/dθ| (virtual work)
+    d = np.linspace(-30, 30, 13) * DEG
+    kin = A.kinematics(act, d)
+    eq11 = 100.0 * np.cos(kin.rod_angle) / (act.crank_length * np.sin(kin.transmission_angle))
+    np.testing.assert_allclose(A.screw_force(act, d, 100.0), eq11, rtol=1e-12)
+
+
+def test_ratio_limits_and_symmetry(act):
+    r0 = A.reduction_ratio(act, 0.0)
+    assert float(r0.linkage) == pytest.approx(1.0, abs=1e-12)  # rod square to crank at 0°
+    assert float(r0.total) == pytest.approx(
+        act.gear_ratio * 2 * math.pi * act.crank_length / act.screw_lead
+    )
+    d = np.linspace(0, 30, 31) * DEG
+    up, down = A.reduction_ratio(act, d).total, A.reduction_ratio(act, -d).total
+    # finite rod: γ is even in δ (sin γ = L1·(cos δ − 1)/L2), and with θ = 90° + δ
+    # |dx/dθ| = L1·(cos δ − sin δ·tan γ), so the curve's odd part is exactly
+    # −2·L1·sin δ·tan γ (scaled by i/|dx/dθ|) and its even part 2·L1·cos δ
+    gamma = A.kinematics(act, d).rod_angle
+    np.testing.assert_allclose(gamma, A.kinematics(act, -d).rod_angle, atol=1e-15)
+    scale = float(r0.total) / act.crank_length
+    np.testing.assert_allclose(
+        up - down, -2 * scale * act.crank_length * np.sin(d) * np.tan(gamma), atol=1e-9
+    )
+    np.testing.assert_allclose(up + down, 2 * scale * act.crank_length * np.cos(d), rtol=1e-12)
+    assert np.all(np.diff(up + down) < 0)  # the even part is largest at the neutral position
+    # infinite rod (Scotch yoke): |dx/dθ| = L1·cos δ exactly, hence exactly symmetric
+    yoke = dataclasses.replace(act, rod_length=1e6)
+    np.testing.assert_allclose(A.reduction_ratio(yoke, d).linkage, np.cos(d), rtol=1e-6)
+
+
+def test_linkage_axial_part_matches_castigliano(act):
+    # independent small-deflection calculation: δθ = (N1²·L1/(E·A1) + N2²·L2/(E·A2))/M with
+    # N2 = M/(L1·sin β), N1 = N2·cos β (energy of the two two-force members)
+    axial_only = dataclasses.replace(act, shaft_polar_moment=1e6, arm_second_moment=1e6)
+    for deg in (-25.0, 0.0, 10.0, 30.0):
+        m = 50.0
+        kin = A.kinematics(act, deg * DEG)
+        n2 = m / (act.crank_length * math.sin(kin.transmission_angle))
+        n1 = n2 * math.cos(kin.transmission_angle)
+        e = act.youngs_modulus
+        ref = (
+            n1**2 * act.crank_length / (e * act.crank_area)
+            + n2**2 * act.rod_length / (e * act.rod_area)
+        ) / m
+        assert float(A.linkage_rotation(axial_only, deg * DEG, m)) == pytest.approx(ref, rel=1e-4)
+
+
+def test_torsion_and_bending_terms(act):
+    # eq 17 and eq 18–19 (with I): rigid members leave M·l/(G·I1) + arctan(M·l²/(3·E·I·L1))
+    rigid = dataclasses.replace(act, crank_area=1e6, rod_area=1e6)
+    m = 200.0
+    ref = m * act.arm_length / (act.shear_modulus * act.shaft_polar_moment) + math.atan(
+        m * act.arm_length**2 / (3 * act.youngs_modulus * act.arm_second_moment * act.crank_length)
+    )
+    assert float(A.linkage_rotation(rigid, 0.1, m)) == pytest.approx(ref, rel=1e-6)
+
+
+def test_eq9_to_20_are_linear_in_load(bare):
+    k = A.linkage_stiffness(bare, 10 * DEG, np.array([1.0, 100.0, 300.0]))
+    np.testing.assert_allclose(k, k[0], rtol=1e-4)
+
+
+def test_liu_reflected_values_hold_at_the_reference_angle(bare):
+    b = A.stiffness_breakdown(bare, 10 * DEG, 100.0)
+    assert float(A.per_degree(b.gear)) == pytest.approx(1096623.0, rel=1e-9)
+    assert float(A.per_degree(b.screw)) == pytest.approx(8256825.0, rel=1e-9)
+    assert float(A.per_degree(b.housing)) == pytest.approx(1696.8, rel=1e-9)
+    assert np.isinf(b.support_bearing)
+    assert float(b.deflection) == pytest.approx(100.0 / float(b.total))
+
+
+def test_support_bearing_stiffens_with_load_and_moves_with_temperature(act):
+    k = A.support_axial_stiffness(act, np.array([500.0, 2000.0, 6000.0]), 293.15)
+    assert np.all(np.diff(k) > 0)
+    kt = A.support_axial_stiffness(act, 2000.0, np.array([233.15, 293.15, 333.15]))
+    assert np.ptp(kt) > 0  # preload follows the thermal coupling
+    assert A.support_axial_stiffness(act, 0.0, 293.15) > 0  # tangent at zero load
+
+
+def test_vectorised_broadcasting(act):
+    b = A.stiffness_breakdown(
+        act, np.linspace(-0.3, 0.3, 7)[:, None], 150.0, np.array([250.0, 300.0])
+    )
+    assert b.total.shape == (7, 2)
+    shares = sum(b.share(e) for e in A.StiffnessBreakdown.ELEMENTS)
+    np.testing.assert_allclose(shares, 1.0)
+
+
+def _in_line_at(act, theta0):
+    """Geometry with the slide through the shaft axis (Y1 = 0): crank and rod in line at θ = 0."""
+    gamma0 = math.asin(act.crank_length * math.sin(theta0) / act.rod_length)
+    return dataclasses.replace(act, neutral_crank_angle=theta0, neutral_rod_angle=gamma0)
+
+
+@pytest.mark.parametrize(
+    "call, match",
+    [
+        (
+            lambda a: A.kinematics(dataclasses.replace(a, rod_length=0.06), 2.5),
+            "outside the linkage's reach",
+        ),
+        (lambda a: A.kinematics(a, float("nan")), "output_angle = nan"),
+        (lambda a: dataclasses.replace(a, rod_length=-0.1), "rod_length = -0.1"),
+        (lambda a: dataclasses.replace(a, housing_stiffness=0.0), "housing_stiffness = 0.0"),
+        (lambda a: dataclasses.replace(a, neutral_rod_angle=2.0), "neutral_rod_angle = 2.0"),
+        (lambda a: A.kinematics(_in_line_at(a, 0.5), -0.5), "dead centre"),
+        (lambda a: A.stiffness_breakdown(a, 0.1, 100.0, -3.0), "temperature = -3.0 K"),
+        (lambda a: A.screw_force(a, 0.1, float("inf")), "load_torque = inf"),
+    ],
+)
+def test_bad_input(act, call, match):
+    with pytest.raises(ValueError, match=re.escape(match)):
+        call(act)
+
+
+def test_data_file_holds_the_code_calibration(act):
+    from servofmu.papers import liu2014
+
+    _, fit = liu2014.calibrated_actuator()
+    for name, value in fit.items():
+        assert getattr(act, name) == pytest.approx(value, rel=1e-6), name
