@@ -254,16 +254,32 @@ def reproduce(out_dir) -> Report:
     )
     shares = {e: ang.share(e) for e in ("gear", "screw", "linkage", "housing")}
     write_csv(
-        out / "fig3_4_compliance_shares.csv",
+        out / "compliance_shares.csv",
         {"output_angle [deg]": ANGLES / DEG, **{f"{e}_share [-]": v for e, v in shares.items()}},
     )
+    for fig, element, title in (
+        ("fig3_gear_share", "gear", "Liu Fig 3: gear-train share of the compliance at 100 N·m"),
+        ("fig4_screw_share", "screw", "Liu Fig 4: ball-screw share of the compliance at 100 N·m"),
+    ):
+        write_csv(
+            out / f"{fig}.csv",
+            {"output_angle [deg]": ANGLES / DEG, f"{element}_share [-]": shares[element]},
+        )
+        plot(
+            out / f"{fig}.png",
+            ANGLES / DEG,
+            {element: shares[element]},
+            "output angle [°]",
+            "share of the total compliance [-]",
+            title,
+        )
     plot(
-        out / "fig3_4_compliance_shares.png",
+        out / "compliance_shares.png",
         ANGLES / DEG,
         shares,
         "output angle [°]",
         "share of the total compliance [-]",
-        "Liu Fig 3–4: compliance shares at 100 N·m",
+        "Compliance shares of Liu's four elements at 100 N·m",
         decorate=lambda ax: ax.set_yscale("log"),
     )
     i10 = int(np.argmin(np.abs(ANGLES - TEST_ANGLE)))
