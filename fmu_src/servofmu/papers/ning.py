@@ -20,9 +20,9 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import brentq
 
+from ..physics import catalog
 from ..physics.bearing import BearingModel, BearingPair, with_mounting
 from ..physics.fits import mounted_geometry
-from ..physics.friction import FrictionCoefficients
 from ..physics.units import MM, NMM, RPM, UM, celsius_to_kelvin
 from .common import bearing_parameters, material_parameters, mounting_parameters
 from .report import Parameter, Report, calibrated, compare, plot, trend, write_csv
@@ -38,14 +38,7 @@ INNER_FITS = np.arange(0.0, 10.01, 2.0) * UM  # Fig 10a axis values are lost: as
 TEST_SPEED = 10.0 * RPM  # rad/s, assumed (no viscous term: the torque does not depend on it)
 REFERENCE_C = 20.0
 PUBLISHED = {"inner_rate": -0.05, "outer_rate": 0.07, "hot": 40.0, "cold": -40.0}
-COEFFICIENTS = FrictionCoefficients(
-    hysteresis_loss=0.007,
-    sliding_friction=0.05,
-    provenance=(
-        ("hysteresis_loss", "assumed: bearing steel, below 1 %"),
-        ("sliding_friction", "assumed: sputtered MoS2 film in air, within the usual 0.01–0.1"),
-    ),
-)
+COEFFICIENTS = catalog.coefficients("ning_space_shaft")
 
 
 def pair_for(spacer_length: float | None = None, **mounting_changes) -> BearingPair:

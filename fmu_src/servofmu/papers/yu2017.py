@@ -46,8 +46,9 @@ READINGS = {"stated": "yu2017_gimbal", "printed": "yu2017_gimbal_printed"}
 #: Assumed constant test speed of the electrical method (Yu gives none; only s0·n^(2/3) is
 #: identifiable from eq 8, so this choice moves s0, not the fitted viscous curve at −40 °C).
 TEST_SPEED = 10.0 * DEG  # rad/s
-#: Elastic hysteresis loss factor for bearing steel (Yu: "less than 1 % for metals").
-HYSTERESIS_LOSS = 0.007
+#: Elastic hysteresis loss factor for bearing steel (Yu: "less than 1 % for metals"; assumed,
+#: data/coefficients.toml).
+HYSTERESIS_LOSS = catalog.coefficients("yu2017_gimbal").hysteresis_loss
 INTERFERENCES = (0.004e-3, 0.006e-3, 0.008e-3)  # Yu's Δ (radial) for Fig 4 [m]
 SHIMS = (0.0, 0.03e-3)  # Fig 6, 7 [m]
 PUBLISHED = {
@@ -86,6 +87,15 @@ def calibrate_s0(pair: BearingPair) -> float:
     )
     v1 = float(_curves(unit, np.array([-40.0])).viscous_torque[0])
     return PUBLISHED["viscous_m40"] * NMM / v1
+
+
+def calibrated_coefficients() -> tuple[float, float]:
+    """(s0, μ) fitted by code as in the report: s0 on the viscous 2.30 N·mm at −40 °C, then μ
+    on the geometric minimum 0.38 N·mm, both in the printed reading."""
+    base = FrictionCoefficients(hysteresis_loss=HYSTERESIS_LOSS)
+    s0 = calibrate_s0(pair_for("printed", coefficients=base))
+    with_s0 = dataclasses.replace(base, palmgren_s0=s0)
+    return s0, calibrate_mu(pair_for("printed", coefficients=with_s0))
 
 
 def calibrate_mu(pair: BearingPair) -> float:
@@ -141,12 +151,9 @@ def reproduce(out_dir) -> Report:
     t_k = celsius_to_kelvin(CURVE_C)
 
     # --- calibration (Fig 8 numbers named by the issue) -------------------------------
-    base = FrictionCoefficients(hysteresis_loss=HYSTERESIS_LOSS)
-    s0 = calibrate_s0(pair_for("printed", coefficients=base))
-    coeff = dataclasses.replace(base, palmgren_s0=s0)
-    mu = calibrate_mu(pair_for("printed", coefficients=coeff))
+    s0, mu = calibrated_coefficients()
     coeff = dataclasses.replace(
-        coeff,
+        FrictionCoefficients(hysteresis_loss=HYSTERESIS_LOSS, palmgren_s0=s0),
         sliding_friction=mu,
         provenance=(
             ("hysteresis_loss", "assumed: bearing steel, below 1 % (Yu §1.1)"),

@@ -1,6 +1,39 @@
 """Pure physics models (numpy in, numpy out, SI units), each citing its paper and equation.
 
 Modules: units, materials, viscosity, geometry, hertz, equilibrium, fits (radial thermal
-coupling), preload (axial thermal coupling), friction, bearing (the composed model), catalog
-(records kept as data in ``data/*.toml``).
+coupling), preload (axial thermal coupling), friction, bearing (the composed model),
+actuator (Liu 2014), motor, control, catalog (records kept as data in ``data/*.toml``).
 """
+
+MODULES = (
+    "units",
+    "materials",
+    "viscosity",
+    "geometry",
+    "hertz",
+    "equilibrium",
+    "fits",
+    "preload",
+    "friction",
+    "bearing",
+    "actuator",
+    "motor",
+    "control",
+    "catalog",
+)
+
+
+def load_all() -> None:
+    """Import every physics module and read every data table now.
+
+    FMUs built from servofmu share the first imported copy of the package in a process, and a
+    host may delete that FMU's extraction folder while others still run (fmpy's simulate_fmu
+    does): after this call nothing is read from disk any more.
+    """
+    import importlib
+
+    for name in MODULES:
+        importlib.import_module(f"{__name__}.{name}")
+    from .catalog import preload
+
+    preload()

@@ -302,12 +302,13 @@ def series_stiffness(*stiffnesses):
 
 
 def stiffness_breakdown(
-    act: Actuator, output_angle, load_torque, temperature=293.15
+    act: Actuator, output_angle, load_torque, temperature=293.15, support=None
 ) -> StiffnessBreakdown:
     """Stiffness of the actuator at the output shaft (Liu 2014 eq 6–20 and the support-bearing
     extension) for output angle δ [rad], hinge moment M [N·m] and temperature T [K], all
     broadcast together. Elastic moduli are temperature-independent; the support-bearing
-    preload follows the thermal coupling of :mod:`bearing`."""
+    preload follows the thermal coupling of :mod:`bearing`. ``support(F3, T)`` may replace
+    :func:`support_axial_stiffness` (the FMU passes its cached, tabulated version)."""
     delta, m, t = np.broadcast_arrays(
         np.asarray(check_finite("output_angle", output_angle, "rad"), dtype=float),
         np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float),
@@ -321,7 +322,8 @@ def stiffness_breakdown(
     housing = lever2 * act.housing_stiffness
     linkage = linkage_stiffness(act, delta, m)
     f3 = np.abs(m) / np.abs(kin.lever)
-    support = lever2 * support_axial_stiffness(act, f3, t)
+    axial = support_axial_stiffness(act, f3, t) if support is None else support(f3, t)
+    support = lever2 * axial
     total = series_stiffness(gear, screw, linkage, housing, support)
     return StiffnessBreakdown(
         gear=gear,
@@ -372,3 +374,36 @@ def support_axial_stiffness(act: Actuator, screw_force, temperature):
 def per_degree(stiffness):
     """N·m/rad → N·m/° (Liu's unit), for display."""
     return np.asarray(stiffness) * DEG
+
+
+class ActuatorModel:
+    """Scalar evaluation of an :class:`Actuator` for the per-step path of the FMU: the
+    support-bearing pair is read from the cached :class:`bearing.BearingModel` (its
+    per-temperature axial-load table) instead of the exact nested solve; everything else is
+    :func:`stiffness_breakdown`."""
+
+    def __init__(self, act: Actuator, support_pair=None):
+        """``support_pair``: a :class:`bearing.BearingPair` replacing the catalogue pair of
+        ``act.support_mounting`` (e.g. with another bearing or preload)."""
+        self.act = act
+        self._bearings = None
+        if act.support_mounting:
+            from .bearing import BearingModel
+
+            pair = support_pair or _support_pair(act.support_mounting)
+            self._bearings = BearingModel(pair)
+
+    def _support(self, screw_force, temperature):
+        f3, t = float(screw_force), float(temperature)
+        if self._bearings is None:
+            return np.inf
+        out = self._bearings.evaluate(t, 0.0, f3)
+        bearing = f3 / out.axial_displacement if f3 > 0 else out.axial_stiffness
+        return float(series_stiffness(bearing, self.act.seat_stiffness))
+
+    def evaluate(self, output_angle: float, load_torque: float, temperature: float):
+        """:class:`StiffnessBreakdown` with float fields at one operating point."""
+        b = stiffness_breakdown(
+            self.act, output_angle, load_torque, temperature, support=self._support
+        )
+        return StiffnessBreakdown(*(float(getattr(b, f)) for f in b.__dataclass_fields__))

@@ -297,6 +297,8 @@ class LoadState:
     max_contact_pressure : largest Hertz pressure over all contacts [Pa]
     seized : max_contact_pressure ≥ the pair's pressure_limit
     torques : speed-independent torques of both bearings (:class:`friction.BallSetTorques`)
+    axial_displacement : axial displacement of the shaft from its unloaded position,
+        z = (a_A − a_B)/2 [m] (positive towards bearing A)
     converged : the load equilibrium was solved
     """
 
@@ -308,6 +310,7 @@ class LoadState:
     max_contact_pressure: np.ndarray
     seized: np.ndarray
     torques: BallSetTorques
+    axial_displacement: np.ndarray = 0.0
     converged: bool = True
 
 
@@ -386,6 +389,7 @@ def axial_load_state(pair: BearingPair, thermal: ThermalState, offset_a, offset_
         max_contact_pressure=p_max,
         seized=p_max >= pair.pressure_limit,
         torques=t,
+        axial_displacement=0.5 * (np.asarray(offset_a) - np.asarray(offset_b)),
     )
 
 
@@ -422,6 +426,7 @@ def _combined_load_state(pair, thermal, f_ext, f_r) -> LoadState:
         max_contact_pressure=p_max,
         seized=p_max >= pair.pressure_limit,
         torques=t,
+        axial_displacement=0.5 * (st.offset_a - st.offset_b),
         converged=st.converged,
     )
 
@@ -434,7 +439,8 @@ class BearingOutputs:
     breakaway_torque [N·m], hysteresis/spin/sliding/viscous_torque [N·m], preload [N],
     contact_angle [rad], radial_clearance [m], kinematic_viscosity [m²/s], axial_stiffness
     [N/m], power_loss [W], seized; plus inner_ring_torque/outer_ring_torque [N·m],
-    max_contact_pressure [Pa], outer/inner_fit_pressure [Pa], force_a/force_b [N].
+    max_contact_pressure [Pa], outer/inner_fit_pressure [Pa], force_a/force_b [N],
+    axial_displacement [m].
     """
 
     friction_torque: float
@@ -458,9 +464,23 @@ class BearingOutputs:
     inner_fit_pressure: float
     force_a: float
     force_b: float
+    axial_displacement: float
 
     def as_dict(self) -> dict:
         return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
+def _speed_terms(pair: BearingPair, thermal: ThermalState, load: LoadState, w):
+    """(signed friction, running, viscous, Coulomb part, breakaway excess) at speed w [rad/s]
+    (Yu 2017 eq 8–9 and the regularised sign); floats in, floats out on the per-step path."""
+    t = load.torques
+    s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
+    viscous = 2.0 * _palmgren(thermal.kinematic_viscosity, w, thermal.geometry.pitch_diameter, s0)
+    coulomb = t.hysteresis + t.spin + t.sliding
+    excess = (pair.coefficients.static_friction_ratio - 1.0) * (t.spin + t.sliding)
+    running = coulomb + viscous
+    signed = _regularised(w, running, excess, pair.regularisation_speed, pair.stribeck_speed)
+    return signed, running, viscous, coulomb, excess
 
 
 def bearing_outputs(
@@ -469,14 +489,10 @@ def bearing_outputs(
     """Speed-dependent outputs at ``speed`` [rad/s] (Yu 2017 eq 8–9; regularised sign)."""
     w = speed if type(speed) is float else check_finite("speed", speed, "rad/s")
     t = load.torques
+    signed, running, viscous, coulomb, excess = _speed_terms(pair, thermal, load, w)
     s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
     dm = thermal.geometry.pitch_diameter
-    viscous = 2.0 * _palmgren(thermal.kinematic_viscosity, w, dm, s0)
     viscous_rest = 2.0 * _palmgren(thermal.kinematic_viscosity, 0.0, dm, s0)
-    coulomb = t.hysteresis + t.spin + t.sliding
-    excess = (pair.coefficients.static_friction_ratio - 1.0) * (t.spin + t.sliding)
-    running = coulomb + viscous
-    signed = _regularised(w, running, excess, pair.regularisation_speed, pair.stribeck_speed)
     return BearingOutputs(
         friction_torque=signed,
         running_torque=running,
@@ -499,6 +515,7 @@ def bearing_outputs(
         inner_fit_pressure=thermal.inner_fit_pressure,
         force_a=load.force_a,
         force_b=load.force_b,
+        axial_displacement=load.axial_displacement,
     )
 
 
@@ -543,9 +560,12 @@ class AxialLoadTable:
             ls.preload,
             ls.axial_stiffness,
             ls.max_contact_pressure,
+            z,
             *(getattr(t, f.name) for f in fields(BallSetTorques)),
         ]
-        self.rows = [tuple(r) for r in np.column_stack([np.asarray(x, float) for x in columns])]
+        self.rows = [
+            tuple(map(float, r)) for r in np.column_stack([np.asarray(x, float) for x in columns])
+        ]
         self.load = [r[0] for r in self.rows]
         self.pressure_limit = pair.pressure_limit
 
@@ -558,11 +578,11 @@ class AxialLoadTable:
         i = min(max(bisect.bisect_right(loads, f) - 1, 0), len(loads) - 2)
         lo, hi = self.rows[i], self.rows[i + 1]
         w = (f - lo[0]) / (hi[0] - lo[0])
-        _, fa, fb, ang_a, ang_b, preload, stiffness, p_max, *torques = (
+        _, fa, fb, ang_a, ang_b, preload, stiffness, p_max, disp, *torques = (
             a + w * (b - a) for a, b in zip(lo, hi, strict=True)
         )
         if axial_load < 0:  # mirror: bearing B carries the load
-            fa, fb, ang_a = fb, fa, ang_b
+            fa, fb, ang_a, disp = fb, fa, ang_b, -disp
         return LoadState(
             fa,
             fb,
@@ -570,8 +590,9 @@ class AxialLoadTable:
             ang_a,
             stiffness,
             p_max,
-            p_max >= self.pressure_limit,
+            bool(p_max >= self.pressure_limit),
             BallSetTorques(*torques),
+            disp,
         )
 
 
@@ -676,6 +697,16 @@ class BearingModel:
         if not math.isfinite(speed):
             raise ValueError(f"speed = {speed!r} rad/s is outside the valid range (-inf, inf)")
         return bearing_outputs(self.pair, self._th, self._state, float(speed))
+
+    def speed_outputs(self, speed: float) -> tuple[float, float, float, float]:
+        """(friction_torque, running_torque, viscous_torque, power_loss) at ``speed`` [rad/s]
+        for the operating point of the last :meth:`evaluate` call: the per-step path when
+        only the speed changed (the same equations, so the same numbers as evaluate)."""
+        if not math.isfinite(speed):
+            raise ValueError(f"speed = {speed!r} rad/s is outside the valid range (-inf, inf)")
+        w = float(speed)
+        signed, running, viscous, _, _ = _speed_terms(self.pair, self._th, self._state, w)
+        return signed, running, viscous, signed * w
 
     def curves(self, temperatures, speed: float, axial_load: float = 0.0) -> BearingOutputs:
         """Outputs over an array of temperatures [K] at one speed and axial load, vectorised

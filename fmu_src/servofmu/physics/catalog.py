@@ -238,3 +238,26 @@ def actuator(key: str, **overrides):
         prov[f] = "derived: " + prov.pop(f"{f}_reflected") + ", through the kinematics"
     prov.pop("reference_angle", None)
     return dataclasses.replace(act, **intrinsic, provenance=tuple(sorted(prov.items())))
+
+
+@functools.cache
+def coefficients(key: str):
+    """The :class:`friction.FrictionCoefficients` of mounting ``key`` from
+    ``data/coefficients.toml``."""
+    from .friction import FrictionCoefficients
+
+    entry = _lookup("coefficients", key)
+    values, prov = {}, []
+    for field, spec in entry.items():
+        values[field], src = quantity(spec, field)
+        prov.append((field, src))
+    return FrictionCoefficients(**values, provenance=tuple(prov))
+
+
+TABLES = ("materials", "lubricants", "bearings", "mountings", "actuators", "coefficients")
+
+
+def preload() -> None:
+    """Read every data table now (they are cached): see :func:`servofmu.physics.load_all`."""
+    for name in TABLES:
+        _table(name)

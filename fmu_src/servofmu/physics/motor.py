@@ -1,0 +1,92 @@
+"""Permanent-magnet DC motor with its load inertia (the DCMotor FMU's equations).
+
+    L·di/dt = V − R·i − k_e·ω
+    J·dω/dt = k_t·i − b·ω − T_load
+    dφ/dt  = ω
+
+with armature resistance R [Ω], inductance L [H], torque constant k_t [N·m/A], back-EMF
+constant k_e [V·s/rad], inertia J [kg·m²] and viscous damping b [N·m·s/rad] (a textbook
+model, e.g. Franklin, Powell & Emami-Naeini, *Feedback Control of Dynamic Systems*, ch. 2).
+
+The equations are linear with constant coefficients, so with the inputs (V, T_load) held over a
+communication step h the exact solution is x(t + h) = Φ(h)·x(t) + Γ(h)·u with Φ = e^{A·h} and
+Γ = ∫₀ʰ e^{A·τ}dτ·B (zero-order hold; both from one matrix exponential of the augmented
+matrix, scipy.linalg.expm). It is exact for any step and unconditionally stable, so one
+"sub-step" per communication step is as accurate as any number of them; the electrical time
+constant L/R (often well below the step) needs no special treatment.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.linalg import expm
+
+from ._checks import check_finite, check_nonnegative, check_positive
+
+
+@dataclass(frozen=True)
+class DCMotorParameters:
+    """Parameters of the motor and its load (SI). See module docstring for the equations."""
+
+    resistance: float = 2.0  # Ω
+    inductance: float = 1.0e-3  # H
+    torque_constant: float = 0.05  # N·m/A
+    back_emf_constant: float = 0.05  # V·s/rad
+    inertia: float = 2.0e-4  # kg·m²
+    viscous_damping: float = 1.0e-5  # N·m·s/rad
+
+    def __post_init__(self):
+        for name in ("resistance", "inductance", "torque_constant", "back_emf_constant", "inertia"):
+            check_positive(name, getattr(self, name))
+        check_nonnegative("viscous_damping", self.viscous_damping)
+
+
+def state_matrices(p: DCMotorParameters):
+    """(A, B) of x' = A·x + B·u with x = (i [A], ω [rad/s], φ [rad]), u = (V [V], T_load [N·m])."""
+    a = np.array(
+        [
+            [-p.resistance / p.inductance, -p.back_emf_constant / p.inductance, 0.0],
+            [p.torque_constant / p.inertia, -p.viscous_damping / p.inertia, 0.0],
+            [0.0, 1.0, 0.0],
+        ]
+    )
+    b = np.array([[1.0 / p.inductance, 0.0], [0.0, -1.0 / p.inertia], [0.0, 0.0]])
+    return a, b
+
+
+@functools.lru_cache(maxsize=32)
+def discretise(p: DCMotorParameters, step: float):
+    """(Φ, Γ) of the exact zero-order-hold step of length ``step`` [s]: the top blocks of
+    expm([[A, B], [0, 0]]·h) (Van Loan). Returned as nested tuples of floats."""
+    h = check_positive("step", step, "s")
+    a, b = state_matrices(p)
+    m = np.zeros((5, 5))
+    m[:3, :3], m[:3, 3:] = a * h, b * h
+    e = expm(m)
+    phi, gamma = e[:3, :3], e[:3, 3:]
+    return tuple(map(tuple, phi)), tuple(map(tuple, gamma))
+
+
+def step(p: DCMotorParameters, state, voltage: float, load_torque: float, h: float):
+    """Advance x = (i, ω, φ) by ``h`` [s] with voltage [V] and load torque [N·m] held; returns
+    the new (i, ω, φ) as floats (exact, see module docstring)."""
+    check_finite("voltage", voltage, "V")
+    check_finite("load_torque", load_torque, "N·m")
+    phi, gamma = discretise(p, float(h))
+    u = (voltage, load_torque)
+    return tuple(
+        phi[r][0] * state[0]
+        + phi[r][1] * state[1]
+        + phi[r][2] * state[2]
+        + gamma[r][0] * u[0]
+        + gamma[r][1] * u[1]
+        for r in range(3)
+    )
+
+
+def motor_torque(p: DCMotorParameters, current):
+    """Electromagnetic torque k_t·i [N·m] for current i [A]."""
+    return p.torque_constant * current
