@@ -29,6 +29,7 @@ lint: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_bearing.py
 	$(BIN)/python benchmarks/bench_actuator.py
+	$(BIN)/python benchmarks/bench_fmus.py
 
 clean:
 	rm -rf $(VENV) $(OUT) .pytest_cache .ruff_cache

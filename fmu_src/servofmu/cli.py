@@ -18,6 +18,34 @@ def _paper(args) -> int:
     return 0
 
 
+def _build(args) -> int:
+    from servofmu.build.fmu import FMUS, build_all
+
+    for path in build_all(Path(args.out), args.names or FMUS):
+        print(path)
+    return 0
+
+
+def _validate(args) -> int:
+    from servofmu.build.validate import validate
+
+    failed = 0
+    for path in args.fmus:
+        problems = validate(path)
+        print(f"{path}: {'OK' if not problems else f'{len(problems)} problem(s)'}")
+        for p in problems:
+            print(f"  - {p}")
+        failed += bool(problems)
+    return 1 if failed else 0
+
+
+def _host_env(args) -> int:
+    from servofmu.build.host import host_environment_text
+
+    print(host_environment_text())
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="servofmu", description="Temperature-aware servo-mechanism physics and FMUs."
@@ -32,6 +60,17 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print the report as JSON")
     p.add_argument("--out", help="directory for CSV and PNG files (default out/NAME)")
     p.set_defaults(func=_paper)
+    b = sub.add_parser("build", help="build the FMUs (pythonfmu) into build/out")
+    b.add_argument("names", nargs="*", help="FMUs to build (default: all four)")
+    b.add_argument("--out", default="build/out", help="output directory (default build/out)")
+    b.set_defaults(func=_build)
+    v = sub.add_parser(
+        "validate", help="validate FMUs (fmpy + servofmu checks); exit 1 on problems"
+    )
+    v.add_argument("fmus", nargs="+", help="FMU files")
+    v.set_defaults(func=_validate)
+    h = sub.add_parser("host-env", help="environment a non-Python FMI host must set for our FMUs")
+    h.set_defaults(func=_host_env)
     return parser
 
 

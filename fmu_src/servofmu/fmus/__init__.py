@@ -1,0 +1,10 @@
+"""The FMU slaves: module name = class name = modelIdentifier (BearingFriction,
+ActuatorStiffness, DCMotor, ServoController), over the machinery of :mod:`.slave`.
+
+Importing this package loads all of :mod:`servofmu.physics` and its data (see
+:func:`servofmu.physics.load_all`).
+"""
+
+from ..physics import load_all
+
+load_all()

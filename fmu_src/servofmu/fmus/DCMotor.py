@@ -1,0 +1,174 @@
+"""DCMotor FMU: armature circuit and rotor/load inertia, integrated exactly inside the FMU
+(zero-order hold of the linear equations, :mod:`servofmu.physics.motor`)."""
+
+from __future__ import annotations
+
+from servofmu.fmus.slave import ServoSlave, Var
+from servofmu.physics import motor
+from servofmu.physics.motor import DCMotorParameters
+
+_P = DCMotorParameters()
+_SRC = "assumed: a small brushed torque motor driving a gimbal axis"
+
+
+class DCMotor(ServoSlave):
+    """Permanent-magnet DC motor with its load inertia."""
+
+    description = "Permanent-magnet DC motor with rotor and load inertia (exact ZOH stepping)"
+    DEFAULT_EXPERIMENT = (0.0, 1.0, 1.0e-3)
+    PHYSICS = ("servofmu.physics.motor",)
+    VARIABLES = (
+        Var("voltage", "Real", "input", "Armature voltage", 0.0, "V", None, -1.0e3, 1.0e3),
+        Var(
+            "load_torque",
+            "Real",
+            "input",
+            "Load torque, subtracted from the motor torque",
+            0.0,
+            "N.m",
+            "N.mm",
+            -1.0e3,
+            1.0e3,
+        ),
+        Var("speed", "Real", "output", "Rotor speed", unit="rad/s", display_unit="rpm"),
+        Var("angle", "Real", "output", "Rotor angle", unit="rad", display_unit="deg"),
+        Var("current", "Real", "output", "Armature current", unit="A"),
+        Var(
+            "motor_torque",
+            "Real",
+            "output",
+            "Electromagnetic torque k_t·i",
+            unit="N.m",
+            display_unit="N.mm",
+        ),
+        Var(
+            "resistance",
+            "Real",
+            "parameter",
+            "Armature resistance R",
+            _P.resistance,
+            "Ohm",
+            None,
+            1e-6,
+            1e6,
+            source=_SRC,
+        ),
+        Var(
+            "inductance",
+            "Real",
+            "parameter",
+            "Armature inductance L",
+            _P.inductance,
+            "H",
+            "mH",
+            1e-9,
+            1e3,
+            source=_SRC,
+        ),
+        Var(
+            "torque_constant",
+            "Real",
+            "parameter",
+            "Torque constant k_t",
+            _P.torque_constant,
+            "N.m/A",
+            None,
+            1e-6,
+            1e3,
+            source=_SRC,
+        ),
+        Var(
+            "back_emf_constant",
+            "Real",
+            "parameter",
+            "Back-EMF constant k_e",
+            _P.back_emf_constant,
+            "V.s/rad",
+            None,
+            1e-6,
+            1e3,
+            source=_SRC,
+        ),
+        Var(
+            "inertia",
+            "Real",
+            "parameter",
+            "Rotor plus load inertia J",
+            _P.inertia,
+            "kg.m2",
+            None,
+            1e-12,
+            1e6,
+            source=_SRC,
+        ),
+        Var(
+            "viscous_damping",
+            "Real",
+            "parameter",
+            "Viscous damping b",
+            _P.viscous_damping,
+            "N.m.s/rad",
+            None,
+            0.0,
+            1e6,
+            source=_SRC,
+        ),
+        Var(
+            "initial_current",
+            "Real",
+            "parameter",
+            "Current at the start time",
+            0.0,
+            "A",
+            None,
+            -1e4,
+            1e4,
+            source="assumed: at rest",
+        ),
+        Var(
+            "initial_speed",
+            "Real",
+            "parameter",
+            "Speed at the start time",
+            0.0,
+            "rad/s",
+            "rpm",
+            -1e5,
+            1e5,
+            source="assumed: at rest",
+        ),
+        Var(
+            "initial_angle",
+            "Real",
+            "parameter",
+            "Angle at the start time",
+            0.0,
+            "rad",
+            "deg",
+            -1e9,
+            1e9,
+            source="assumed: at rest",
+        ),
+    )
+
+    def configure(self):
+        self.params = DCMotorParameters(
+            resistance=self.resistance,
+            inductance=self.inductance,
+            torque_constant=self.torque_constant,
+            back_emf_constant=self.back_emf_constant,
+            inertia=self.inertia,
+            viscous_damping=self.viscous_damping,
+        )
+
+    def initialise(self):
+        self._set_state((self.initial_current, self.initial_speed, self.initial_angle))
+
+    def advance(self, current_time, step_size):
+        state = (self.current, self.speed, self.angle)
+        self._set_state(motor.step(self.params, state, self.voltage, self.load_torque, step_size))
+        return True
+
+    def _set_state(self, x):
+        self.current, self.speed, self.angle = (float(v) for v in x)
+        self.motor_torque = float(motor.motor_torque(self.params, self.current))
