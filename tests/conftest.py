@@ -17,3 +17,12 @@ def yu_pair():
 @pytest.fixture(scope="session")
 def ning_pair():
     return BearingPair.from_catalog("ning_space_shaft", "mos2_film")
+
+
+@pytest.fixture(scope="session")
+def fmus(tmp_path_factory):
+    """The four FMUs, built once per test session."""
+    from servofmu.build.fmu import FMUS, build_all
+
+    out = tmp_path_factory.mktemp("fmus")
+    return {p.stem: p for p in build_all(out, FMUS)}

@@ -138,3 +138,15 @@ def test_liu_report(liu):
         "stiffness_vs_load.csv",
         "stiffness_vs_temperature.png",
     } <= names
+
+
+def test_coefficient_records_hold_the_code_calibration():
+    # data/coefficients.toml (the FMU defaults) must equal what servofmu.papers.yu2017 fits
+    from servofmu.papers import yu2017
+    from servofmu.physics import catalog
+
+    s0, mu = yu2017.calibrated_coefficients()
+    record = catalog.coefficients("yu2017_gimbal")
+    assert record.palmgren_s0 == pytest.approx(s0, rel=1e-8)
+    assert record.sliding_friction == pytest.approx(mu, rel=1e-8)
+    assert record.source("sliding_friction").startswith("calibrated")

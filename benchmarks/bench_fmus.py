@@ -1,0 +1,133 @@
+"""Per-step cost of each servofmu FMU next to an empty pythonfmu FMU, in one run (on demand:
+``make bench``; not part of the tests).
+
+Each loop is what a co-simulation master does per communication step through fmpy's
+FMU2Slave: set the FMU's real inputs, fmi2DoStep, get one output. The empty FMU has four real
+inputs, one output and a do_step that returns True. Reported: µs per step (median of
+``--repeat`` runs of ``--steps`` steps) and the ratio to the empty FMU.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import statistics
+import tempfile
+import time
+from pathlib import Path
+
+from fmpy import extract, read_model_description
+from fmpy.fmi2 import FMU2Slave
+
+from servofmu.build.fmu import FMUS, build_all
+
+EMPTY = """
+from pythonfmu import Fmi2Causality, Fmi2Slave, Real
+
+
+class Empty(Fmi2Slave):
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        self.a = self.b = self.c = self.d = 0.0
+        self.y = 0.0
+        for name in "abcd":
+            self.register_variable(Real(name, causality=Fmi2Causality.input))
+        self.register_variable(Real("y", causality=Fmi2Causality.output))
+
+    def do_step(self, current_time, step_size):
+        return True
+"""
+
+# inputs changed every step (value at step k) and the output read back
+LOOPS = {
+    "Empty": (("a", "b", "c", "d"), lambda k: (1.0 + 1e-3 * k, 2.0, 3.0, 4.0), "y"),
+    "BearingFriction (speed changes)": (
+        ("temperature", "speed", "axial_load", "radial_load"),
+        lambda k: (253.15, 0.2 * math.sin(1e-3 * k), 5.0, 0.0),
+        "friction_torque",
+    ),
+    "BearingFriction (speed and axial load change)": (
+        ("temperature", "speed", "axial_load", "radial_load"),
+        lambda k: (253.15, 0.2 * math.sin(1e-3 * k), 5.0 + math.sin(2e-3 * k), 0.0),
+        "friction_torque",
+    ),
+    "ActuatorStiffness": (
+        ("temperature", "speed", "load_torque", "angle"),
+        lambda k: (293.15, 0.0, 150.0 + 50.0 * math.sin(1e-3 * k), 0.17),
+        "stiffness",
+    ),
+    "DCMotor": (("voltage", "load_torque"), lambda k: (math.sin(1e-3 * k), 1e-3), "speed"),
+    "ServoController": (
+        ("reference", "measurement"),
+        lambda k: (math.sin(1e-3 * k), 0.9 * math.sin(1e-3 * k)),
+        "command",
+    ),
+}
+
+
+def _slave(path: Path):
+    md = read_model_description(str(path))
+    slave = FMU2Slave(
+        guid=md.guid,
+        unzipDirectory=extract(str(path)),
+        modelIdentifier=md.coSimulation.modelIdentifier,
+        instanceName="bench",
+    )
+    slave.instantiate()
+    slave.setupExperiment(startTime=0.0)
+    slave.enterInitializationMode()
+    slave.exitInitializationMode()
+    return slave, {v.name: v.valueReference for v in md.modelVariables}
+
+
+def per_step(path: Path, inputs, values, output, steps: int, repeat: int) -> float:
+    slave, vr = _slave(path)
+    ins, out = [vr[n] for n in inputs], [vr[output]]
+    series = [values(k) for k in range(steps)]
+    runs = []
+    for _ in range(repeat):
+        t = 0.0
+        t0 = time.perf_counter()
+        for k in range(steps):
+            slave.setReal(ins, series[k])
+            slave.doStep(t, 1e-3)
+            slave.getReal(out)
+            t += 1e-3
+        runs.append((time.perf_counter() - t0) / steps)
+    slave.terminate()
+    slave.freeInstance()
+    return statistics.median(runs)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--steps", type=int, default=20000)
+    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--json", action="store_true")
+    args = parser.parse_args()
+    from pythonfmu.builder import FmuBuilder
+
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        paths = {p.stem: p for p in build_all(tmp / "fmus", FMUS)}
+        (tmp / "Empty.py").write_text(EMPTY)
+        paths["Empty"] = Path(FmuBuilder.build_FMU(tmp / "Empty.py", dest=tmp / "fmus"))
+        figures = {}
+        for label, (inputs, values, output) in LOOPS.items():
+            path = paths[label.split(" ")[0]]
+            figures[label] = per_step(path, inputs, values, output, args.steps, args.repeat)
+    empty = figures["Empty"]
+    if args.json:
+        print(
+            json.dumps(
+                {k: {"us": v * 1e6, "ratio": v / empty} for k, v in figures.items()}, indent=2
+            )
+        )
+        return
+    for label, secs in figures.items():
+        print(f"{label:48s} {secs * 1e6:8.2f} µs/step   {secs / empty:5.2f} × empty")
+
+
+if __name__ == "__main__":
+    main()

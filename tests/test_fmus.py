@@ -1,0 +1,298 @@
+"""The four FMUs through fmpy: validation, outputs after initialization, state, reset,
+several instances, bad input, agreement with the library (issue 4)."""
+
+import json
+import math
+import zipfile
+
+import numpy as np
+import pytest
+from fmpy import simulate_fmu
+from fmpy.fmi1 import FMICallException
+from fmpy.validation import validate_fmu
+from fmu_helpers import Fmu
+
+from servofmu.build.validate import validate
+from servofmu.physics import catalog
+from servofmu.physics.actuator import ActuatorModel
+from servofmu.physics.bearing import BearingModel, BearingPair
+from servofmu.physics.control import PIDParameters
+
+NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController")
+
+
+def drive(name, t):
+    """A deterministic input history for each FMU."""
+    if name == "BearingFriction":
+        return dict(
+            temperature=273.15 + 30 * math.sin(2 * t),
+            speed=0.5 * math.sin(5 * t),
+            axial_load=20 * math.sin(3 * t),
+        )
+    if name == "ActuatorStiffness":
+        return dict(angle=0.3 * math.sin(4 * t), load_torque=150 + 100 * math.sin(7 * t))
+    if name == "DCMotor":
+        return dict(voltage=5 * math.sin(10 * t), load_torque=1e-3)
+    return dict(reference=math.sin(3 * t), measurement=0.8 * math.sin(3 * t - 0.1))
+
+
+def run(fmu, name, t0, steps, h=1e-3):
+    out, t = [], t0
+    for _ in range(steps):
+        fmu.set(**drive(name, t))
+        fmu.slave.doStep(t, h)
+        t += h
+        out.append(fmu.real_outputs())
+    return np.array(out), t
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_zero_validation_problems(fmus, name):
+    assert validate_fmu(str(fmus[name])) == []
+    assert validate(fmus[name]) == []
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_default_experiment_runs_in_fmpy(fmus, name):
+    res = simulate_fmu(str(fmus[name]))
+    for field in res.dtype.names:
+        assert np.all(np.isfinite(res[field].astype(float))), field
+
+
+def test_bearing_outputs_right_after_initialization(fmus):
+    fmu = Fmu(fmus["BearingFriction"]).init(temperature=253.15, speed=0.2, axial_load=5.0)
+    ref = BearingModel(
+        BearingPair.from_catalog(
+            "yu2017_gimbal", "krytox_143aa", coefficients=catalog.coefficients("yu2017_gimbal")
+        )
+    )
+    lib = ref.evaluate(253.15, 0.2, 5.0)
+    # before any doStep the outputs already reflect the inputs set in initialization mode
+    for name in (
+        "friction_torque",
+        "preload",
+        "contact_angle",
+        "radial_clearance",
+        "viscous_torque",
+    ):
+        assert fmu.get(name) == pytest.approx(getattr(lib, name), rel=1e-12), name
+    assert fmu.get("seized") == lib.seized
+    # direct feedthrough: a new input shows at once, without a step
+    fmu.set(speed=-0.2)
+    assert fmu.get("friction_torque") == pytest.approx(-lib.friction_torque, rel=1e-12)
+    fmu.close()
+
+
+def test_actuator_outputs_right_after_initialization(fmus):
+    fmu = Fmu(fmus["ActuatorStiffness"]).init(angle=0.1745, load_torque=200.0, temperature=253.15)
+    lib = ActuatorModel(catalog.actuator("liu2014_ema")).evaluate(0.1745, 200.0, 253.15)
+    assert fmu.get("stiffness") == pytest.approx(lib.total, rel=1e-12)
+    assert fmu.get("screw_force") == pytest.approx(lib.screw_force, rel=1e-12)
+    assert fmu.get("deflection") == pytest.approx(200.0 / lib.total, rel=1e-12)
+    fmu.close()
+
+
+def test_motor_and_controller_outputs_right_after_initialization(fmus):
+    motor = Fmu(fmus["DCMotor"]).init(initial_speed=3.0, initial_current=0.5)
+    assert motor.get("speed", "current", "motor_torque") == pytest.approx([3.0, 0.5, 0.025])
+    motor.close()
+    ctl = Fmu(fmus["ServoController"]).init(reference=2.0, measurement=0.5, kp=3.0)
+    assert ctl.get("command") == pytest.approx(3.0 * 1.5)  # first sample: P only, no integral yet
+    ctl.close()
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_state_round_trip_is_bit_identical(fmus, name):
+    fmu = Fmu(fmus[name], "a").init()
+    _, t = run(fmu, name, 0.0, 10)
+    state = fmu.slave.getFMUstate()
+    blob = fmu.slave.serializeFMUstate(state)
+    first, _ = run(fmu, name, t, 25)
+    fmu.slave.setFMUstate(state)
+    again, _ = run(fmu, name, t, 25)
+    np.testing.assert_array_equal(first, again)
+    fresh = Fmu(fmus[name], "b").init()
+    fresh.slave.setFMUstate(fresh.slave.deSerializeFMUstate(blob))
+    restored, _ = run(fresh, name, t, 25)
+    np.testing.assert_array_equal(first, restored)
+    json.loads(bytes(blob).decode())  # the state is plain JSON
+    fmu.close()
+    fresh.close()
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_reset_gives_a_fresh_instance(fmus, name):
+    fmu = Fmu(fmus[name], "r").init()
+    run(fmu, name, 0.0, 15)
+    fmu.slave.reset()
+    fmu.init()
+    after_reset, _ = run(fmu, name, 0.0, 10)
+    fresh = Fmu(fmus[name], "f").init()
+    reference, _ = run(fresh, name, 0.0, 10)
+    np.testing.assert_array_equal(after_reset, reference)
+    fmu.close()
+    fresh.close()
+
+
+def test_instances_are_independent_and_all_four_share_a_process(fmus):
+    hot = Fmu(fmus["BearingFriction"], "hot").init(temperature=323.15, shim=0.0)
+    cold = Fmu(fmus["BearingFriction"], "cold").init(temperature=253.15, shim=0.05e-3)
+    others = [Fmu(fmus[n], n).init() for n in NAMES[1:]]
+    assert hot.get("preload") == 0.0  # play open when hot with no shim
+    assert cold.get("preload") > 100.0
+    for f in others:
+        f.slave.doStep(0.0, 1e-3)
+    hot.set(temperature=253.15)
+    assert hot.get("preload") != cold.get("preload")  # shim stays per instance
+    for f in (hot, cold, *others):
+        f.close()
+
+
+@pytest.mark.parametrize(
+    "name, variable, value",
+    [
+        ("BearingFriction", "temperature", float("nan")),
+        ("BearingFriction", "speed", float("inf")),
+        ("BearingFriction", "temperature", -5.0),
+        ("ActuatorStiffness", "angle", 3.0),
+        ("ActuatorStiffness", "load_torque", float("nan")),
+        ("DCMotor", "voltage", float("nan")),
+        ("ServoController", "measurement", float("-inf")),
+    ],
+)
+def test_bad_input_is_discarded_with_a_message_and_the_instance_recovers(
+    fmus, name, variable, value
+):
+    fmu = Fmu(fmus[name], "bad").init()
+    fmu.set(**{variable: value})
+    with pytest.raises(FMICallException, match="status 2"):
+        fmu.slave.doStep(0.0, 1e-3)
+    messages = [m for s, m in fmu.log if variable in m]
+    assert messages and repr(value) in messages[-1], fmu.log
+    fmu.set(**drive(name, 0.0))
+    fmu.slave.doStep(0.0, 1e-3)  # usable again
+    assert all(np.isfinite(fmu.real_outputs()))
+    fmu.close()
+
+
+def test_bad_tunable_parameter_then_fixed(fmus):
+    fmu = Fmu(fmus["BearingFriction"], "p").init(sliding_friction=-1.0)
+    assert any("sliding_friction = -1.0" in m for _, m in fmu.log)
+    with pytest.raises(FMICallException, match="status 2"):
+        fmu.slave.doStep(0.0, 1e-3)
+    fmu.set(sliding_friction=0.05)
+    fmu.slave.doStep(0.0, 1e-3)
+    assert math.isfinite(fmu.get("running_torque"))
+    fmu.close()
+
+
+@pytest.mark.parametrize(
+    "name, params, text",
+    [
+        ("BearingFriction", {"mounting": "nowhere"}, "mounting = 'nowhere'"),
+        ("ServoController", {"mode": "torque"}, "mode = 'torque'"),
+        (
+            "ServoController",
+            {"output_min": 5.0, "output_max": 1.0},
+            "output_min = 5.0 V must be below",
+        ),
+        ("DCMotor", {"inductance": float("nan")}, "inductance = nan"),
+    ],
+)
+def test_bad_parameters_are_reported(fmus, name, params, text):
+    fmu = Fmu(fmus[name], "bp").init(**params)
+    assert any(text in m for _, m in fmu.log), fmu.log
+    with pytest.raises(FMICallException, match="status 2"):
+        fmu.slave.doStep(0.0, 1e-3)
+    fmu.close()
+
+
+def test_extreme_load_is_a_seized_state_not_a_crash(fmus):
+    fmu = Fmu(fmus["BearingFriction"], "x").init(axial_load=9.0e4, temperature=233.15)
+    fmu.slave.doStep(0.0, 1e-3)
+    assert fmu.get("seized") is True and math.isfinite(fmu.get("running_torque"))
+    fmu.close()
+
+
+def test_mismatched_servofmu_is_refused_with_a_clear_message(fmus, tmp_path):
+    tampered = tmp_path / "BearingFriction.fmu"
+    with zipfile.ZipFile(fmus["BearingFriction"]) as src, zipfile.ZipFile(tampered, "w") as dst:
+        for item in src.infolist():
+            data = src.read(item.filename)
+            if item.filename == "resources/servofmu_build.json":
+                info = json.loads(data)
+                info["package_hash"] = "0" * 64
+                info["version"] = "9.9.9"
+                data = json.dumps(info).encode()
+            dst.writestr(item, data)
+    log = []
+    with pytest.raises(Exception, match="instantiate"):
+        Fmu(tampered, "old", log=log)
+    # the message names both versions and what to do
+    text = " ".join(m for _, m in log)
+    assert "built with servofmu 9.9.9" in text and "rebuild" in text
+
+
+def test_documentation_is_inside(fmus):
+    with zipfile.ZipFile(fmus["BearingFriction"]) as zf:
+        page = zf.read("documentation/index.html").decode()
+    assert "Yu eq 8" in page and "sliding_friction" in page and "calibrated" in page
+
+
+def test_motor_is_exact_for_steps_from_0_1_to_10_ms(fmus):
+    from scipy.integrate import solve_ivp
+
+    from servofmu.physics.motor import DCMotorParameters, state_matrices
+
+    p = DCMotorParameters()
+    a, b = state_matrices(p)
+    ref = solve_ivp(
+        lambda t, x: a @ x + b @ [6.0, 2e-3], (0, 0.05), [0.0, 0.0, 0.0], rtol=1e-11, atol=1e-13
+    ).y[:, -1]
+    for h in (1e-4, 1e-3, 1e-2):
+        fmu = Fmu(fmus["DCMotor"], f"m{h}").init()
+        t = 0.0
+        for _ in range(round(0.05 / h)):
+            fmu.set(voltage=6.0, load_torque=2e-3)
+            fmu.slave.doStep(t, h)
+            t += h
+        got = fmu.get("current", "speed", "angle")
+        np.testing.assert_allclose(got, ref, rtol=1e-8, atol=1e-12)
+        fmu.close()
+
+
+def test_controller_limits_anti_windup_and_sampling(fmus):
+    defaults = PIDParameters()
+    fmu = Fmu(fmus["ServoController"], "c").init(sample_period=5e-3)
+    fmu.set(reference=100.0, measurement=0.0)  # saturates at output_max
+    commands, t = [], 0.0
+    for _ in range(1000):
+        fmu.slave.doStep(t, 1e-3)
+        t += 1e-3
+        commands.append(fmu.get("command"))
+    assert max(commands) == defaults.output_max
+    assert len({round(c, 12) for c in commands[:20]}) <= 5  # changes only every 5 ms sample
+    fmu.set(measurement=200.0)  # error reverses: a wound-up integral would hold the limit
+    for _ in range(5):
+        fmu.slave.doStep(t, 1e-3)
+        t += 1e-3
+    assert fmu.get("command") < defaults.output_max
+    fmu.close()
+
+
+def test_example_runs_with_plain_fmpy(fmus, tmp_path):
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    script = Path(__file__).parents[1] / "examples" / "bearing_friction_temperature.py"
+    png = tmp_path / "plot.png"
+    proc = subprocess.run(
+        [sys.executable, str(script), str(fmus["BearingFriction"]), str(png)],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert proc.returncode == 0, proc.stderr
+    assert png.is_file() and "running [N·mm]" in proc.stdout
+    assert "servofmu" not in script.read_text().split('"""')[2]  # plain fmpy, no servofmu import

@@ -1,0 +1,113 @@
+"""The FMUs in third-party hosts: libcosim (libcosimpy) and a plain C program (issue 4).
+
+Each host runs an FMU with constant inputs for a number of steps; its outputs must equal
+those of fmpy's FMU2Slave driven the same way."""
+
+import os
+import shutil
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+from fmu_helpers import Fmu
+
+from servofmu.build.host import host_environment
+
+CASES = {  # FMU: (constant inputs, outputs to compare)
+    "BearingFriction": (
+        {"temperature": 253.15, "speed": 0.2, "axial_load": 5.0},
+        ("friction_torque", "preload", "contact_angle", "kinematic_viscosity"),
+    ),
+    "ActuatorStiffness": (
+        {"angle": 0.17, "load_torque": 150.0, "temperature": 263.15},
+        ("stiffness", "deflection", "screw_force", "support_bearing_stiffness"),
+    ),
+    "DCMotor": ({"voltage": 6.0, "load_torque": 2e-3}, ("speed", "angle", "current")),
+    "ServoController": ({"reference": 1.0, "measurement": 0.25}, ("command",)),
+}
+STEP, STEPS = 1e-3, 20
+
+
+def fmpy_reference(path, inputs, outputs):
+    fmu = Fmu(path, "ref").init(**inputs)
+    t = 0.0
+    for _ in range(STEPS):
+        fmu.set(**inputs)
+        fmu.slave.doStep(t, STEP)
+        t += STEP
+    values = [fmu.get(n) for n in outputs]
+    fmu.close()
+    return values
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_libcosim_gives_the_same_results(fmus, name):
+    from libcosimpy.CosimExecution import CosimExecution
+    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
+    from libcosimpy.CosimObserver import CosimObserver
+    from libcosimpy.CosimSlave import CosimLocalSlave
+
+    log_output_level(CosimLogLevel.ERROR)
+    inputs, outputs = CASES[name]
+    fmu = Fmu(fmus[name], "meta")  # for the value references only
+    vr = fmu.vr
+    fmu.close()
+    ex = CosimExecution.from_step_size(step_size=round(STEP * 1e9))
+    idx = ex.add_local_slave(CosimLocalSlave(fmu_path=str(fmus[name]), instance_name=name))
+    observer = CosimObserver.create_last_value()
+    ex.add_observer(observer)
+    for k, v in inputs.items():
+        ex.real_initial_value(idx, vr[k], v)
+    assert ex.simulate_until(target_time=round(STEP * STEPS * 1e9))
+    got = observer.last_real_values(idx, [vr[n] for n in outputs])
+    np.testing.assert_allclose(got, fmpy_reference(fmus[name], inputs, outputs), rtol=1e-12)
+
+
+@pytest.fixture(scope="module")
+def c_host(tmp_path_factory):
+    gcc = shutil.which("gcc")
+    if gcc is None:
+        pytest.fail("gcc is needed to compile the C host (it is on every machine of this kind)")
+    exe = tmp_path_factory.mktemp("c_host") / "fmi2_host"
+    src = Path(__file__).parent / "c_host" / "fmi2_host.c"
+    subprocess.run([gcc, "-O1", "-Wall", "-Werror", "-o", str(exe), str(src), "-ldl"], check=True)
+    return exe
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the C host test is Linux only")
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_plain_c_host_runs_every_fmu(fmus, c_host, tmp_path, name):
+    inputs, outputs = CASES[name]
+    unzip = tmp_path / name
+    with zipfile.ZipFile(fmus[name]) as zf:
+        zf.extractall(unzip)
+    fmu = Fmu(fmus[name], "meta")
+    vr, guid = fmu.vr, fmu.md.guid
+    fmu.close()
+    args = [str(c_host), str(unzip / "binaries" / "linux64" / f"{name}.so"), guid]
+    args += [(unzip / "resources").as_uri(), str(STEP), str(STEPS)]
+    for k, v in inputs.items():
+        args += ["s", str(vr[k]), repr(v)]
+    for n in outputs:
+        args += ["g", str(vr[n])]
+    env = {**os.environ, **host_environment()}
+    proc = subprocess.run(args, capture_output=True, text=True, env=env, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    final = {
+        int(vref): float(value)
+        for tag, vref, value in (line.split() for line in proc.stdout.splitlines())
+        if tag == "final"
+    }
+    got = [final[vr[n]] for n in outputs]
+    np.testing.assert_allclose(got, fmpy_reference(fmus[name], inputs, outputs), rtol=1e-12)
+
+
+def test_host_env_names_libpython_and_site_packages():
+    env = host_environment()
+    assert Path(env["LD_PRELOAD"]).is_file() and "libpython" in env["LD_PRELOAD"]
+    import numpy
+
+    assert any(Path(numpy.__file__).is_relative_to(p) for p in env["PYTHONPATH"].split(os.pathsep))
