@@ -296,3 +296,23 @@ def test_example_runs_with_plain_fmpy(fmus, tmp_path):
     assert proc.returncode == 0, proc.stderr
     assert png.is_file() and "running [N·mm]" in proc.stdout
     assert "servofmu" not in script.read_text().split('"""')[2]  # plain fmpy, no servofmu import
+
+
+def test_validate_cli_exit_codes(fmus, tmp_path, capsys):
+    from servofmu import cli
+
+    assert cli.main(["validate", str(fmus["DCMotor"])]) == 0
+    broken = tmp_path / "DCMotor.fmu"
+    with zipfile.ZipFile(fmus["DCMotor"]) as src, zipfile.ZipFile(broken, "w") as dst:
+        for item in src.infolist():
+            if item.filename != "documentation/index.html":
+                data = src.read(item.filename)
+                if item.filename == "modelDescription.xml":  # drop the InitialUnknowns
+                    text = data.decode()
+                    start = text.index("<InitialUnknowns>")
+                    end = text.index("</InitialUnknowns>") + len("</InitialUnknowns>")
+                    data = (text[:start] + text[end:]).encode()
+                dst.writestr(item, data)
+    assert cli.main(["validate", str(broken)]) == 1
+    out = capsys.readouterr().out
+    assert "InitialUnknowns" in out and "documentation/index.html is missing" in out
