@@ -316,3 +316,40 @@ def test_validate_cli_exit_codes(fmus, tmp_path, capsys):
     assert cli.main(["validate", str(broken)]) == 1
     out = capsys.readouterr().out
     assert "InitialUnknowns" in out and "documentation/index.html is missing" in out
+
+
+def test_motor_friction_sticks_and_does_not_depend_on_the_step(fmus):
+    # held: k_t·i = 0.0125 N·m stays below the 0.03 N·m breakaway, so the rotor never moves
+    held = Fmu(fmus["DCMotor"], "held").init()
+    t = 0.0
+    for _ in range(100):
+        held.set(voltage=0.5, friction_running_torque=0.02, friction_breakaway_torque=0.03)
+        held.slave.doStep(t, 1e-3)
+        t += 1e-3
+    assert held.get("speed") == 0.0
+    assert held.get("friction_torque") == pytest.approx(held.get("motor_torque"), rel=1e-9)
+    held.close()
+    # moving: the same sub-steps whatever the communication step
+    finals = []
+    for h in (1e-4, 1e-3, 1e-2):
+        fmu = Fmu(fmus["DCMotor"], f"s{h}").init()
+        t = 0.0
+        for _ in range(round(0.2 / h)):
+            fmu.set(voltage=3.0, friction_running_torque=0.02, friction_breakaway_torque=0.03)
+            fmu.slave.doStep(t, h)
+            t += h
+        finals.append(fmu.get("current", "speed", "angle"))
+        fmu.close()
+    np.testing.assert_allclose(finals[1], finals[0], rtol=1e-12)
+    np.testing.assert_allclose(finals[2], finals[0], rtol=1e-12)
+    # after 2 s (12 mechanical time constants) at 3 V against 0.02 N·m:
+    # ω = (k_t·V/R − T_f)/(b + k_t·k_e/R)
+    fmu = Fmu(fmus["DCMotor"], "ss").init()
+    t = 0.0
+    for _ in range(200):
+        fmu.set(voltage=3.0, friction_running_torque=0.02, friction_breakaway_torque=0.03)
+        fmu.slave.doStep(t, 1e-2)
+        t += 1e-2
+    ss = (0.05 * 3.0 / 2.0 - 0.02) / (1e-5 + 0.05 * 0.05 / 2.0)
+    assert fmu.get("speed") == pytest.approx(ss, rel=1e-4)
+    fmu.close()

@@ -116,6 +116,13 @@ class ActuatorStiffness(ServoSlave):
             None,
             ("load_torque", "angle"),
         ),
+        _out(
+            "motor_load_torque",
+            "Hinge moment reflected to the motor shaft, load_torque/reduction_ratio",
+            "N.m",
+            "N.mm",
+            ("load_torque", "angle"),
+        ),
         _p("gear_ratio", "Gear-train ratio i_g", "1", None, 1e-3, 1e4),
         _p("screw_lead", "Ball-screw lead p (per revolution)", "m", "mm", 1e-5, 1.0),
         _p("crank_length", "Crank length L1", "m", "mm", 1e-4, 10.0),
@@ -250,3 +257,4 @@ class ActuatorStiffness(ServoSlave):
         self.reduction_ratio = b.reduction_ratio
         self.deflection = b.deflection
         self.screw_force = b.screw_force
+        self.motor_load_torque = self.load_torque / b.reduction_ratio

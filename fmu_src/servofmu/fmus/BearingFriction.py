@@ -127,6 +127,20 @@ class BearingFriction(ServoSlave):
         _out("power_loss", "Power dissipated by friction", "W", None, _ALL),
         _out("max_contact_pressure", "Largest Hertz contact pressure", "Pa", "MPa"),
         _out(
+            "outer_fit_interference",
+            "Diametral interference of outer ring and bore at temperature",
+            "m",
+            "um",
+            ("temperature",),
+        ),
+        _out(
+            "inner_fit_interference",
+            "Diametral interference of shaft and inner ring at temperature",
+            "m",
+            "um",
+            ("temperature",),
+        ),
+        _out(
             "seized",
             "True when the contact pressure exceeds the pressure limit",
             None,
@@ -419,6 +433,8 @@ class BearingFriction(ServoSlave):
         self.axial_stiffness = o.axial_stiffness
         self.power_loss = o.power_loss
         self.max_contact_pressure = o.max_contact_pressure
+        self.outer_fit_interference = o.outer_interference
+        self.inner_fit_interference = o.inner_interference
         self.seized = o.seized
 
 

@@ -1,5 +1,8 @@
 """DCMotor FMU: armature circuit and rotor/load inertia, integrated exactly inside the FMU
-(zero-order hold of the linear equations, :mod:`servofmu.physics.motor`)."""
+(zero-order hold of the linear equations), with the bearings' Coulomb friction applied
+implicitly on sub-steps (:mod:`servofmu.physics.motor`): connect a BearingFriction's
+running_torque and breakaway_torque to friction_running_torque and friction_breakaway_torque
+for chatter-free low-speed co-simulation at any communication step."""
 
 from __future__ import annotations
 
@@ -30,6 +33,28 @@ class DCMotor(ServoSlave):
             -1.0e3,
             1.0e3,
         ),
+        Var(
+            "friction_running_torque",
+            "Real",
+            "input",
+            "Coulomb friction magnitude while turning (opposes the motion)",
+            0.0,
+            "N.m",
+            "N.mm",
+            0.0,
+            1.0e3,
+        ),
+        Var(
+            "friction_breakaway_torque",
+            "Real",
+            "input",
+            "Coulomb friction magnitude that holds the rotor at rest",
+            0.0,
+            "N.m",
+            "N.mm",
+            0.0,
+            1.0e3,
+        ),
         Var("speed", "Real", "output", "Rotor speed", unit="rad/s", display_unit="rpm"),
         Var("angle", "Real", "output", "Rotor angle", unit="rad", display_unit="deg"),
         Var("current", "Real", "output", "Armature current", unit="A"),
@@ -38,6 +63,14 @@ class DCMotor(ServoSlave):
             "Real",
             "output",
             "Electromagnetic torque k_t·i",
+            unit="N.m",
+            display_unit="N.mm",
+        ),
+        Var(
+            "friction_torque",
+            "Real",
+            "output",
+            "Coulomb friction applied over the last step (mean, signed like the speed)",
             unit="N.m",
             display_unit="N.mm",
         ),
@@ -149,6 +182,18 @@ class DCMotor(ServoSlave):
             1e9,
             source="assumed: at rest",
         ),
+        Var(
+            "max_substep",
+            "Real",
+            "parameter",
+            "Longest sub-step for the implicit Coulomb friction",
+            1.0e-4,
+            "s",
+            "ms",
+            1e-7,
+            1.0,
+            source="assumed: 0.1 ms",
+        ),
     )
 
     def configure(self):
@@ -166,7 +211,21 @@ class DCMotor(ServoSlave):
 
     def advance(self, current_time, step_size):
         state = (self.current, self.speed, self.angle)
-        self._set_state(motor.step(self.params, state, self.voltage, self.load_torque, step_size))
+        if self.friction_running_torque == 0.0 and self.friction_breakaway_torque == 0.0:
+            new = motor.step(self.params, state, self.voltage, self.load_torque, step_size)
+            self.friction_torque = 0.0
+        else:
+            new, self.friction_torque = motor.step_with_friction(
+                self.params,
+                state,
+                self.voltage,
+                self.load_torque,
+                step_size,
+                self.friction_running_torque,
+                self.friction_breakaway_torque,
+                self.max_substep,
+            )
+        self._set_state(new)
         return True
 
     def _set_state(self, x):

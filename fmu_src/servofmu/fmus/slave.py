@@ -144,6 +144,9 @@ class ServoSlave(Fmi2Slave):
             start_time=start, stop_time=stop, step_size=step
         )
         self._by_name = {v.name: v for v in self.VARIABLES}
+        if len(self._by_name) != len(self.VARIABLES):
+            names = [v.name for v in self.VARIABLES]
+            raise ValueError(f"{type(self).__name__}: duplicate variable names {names}")
         self._inputs = [v for v in self.VARIABLES if v.causality == "input"]
         self._params = [v for v in self.VARIABLES if v.causality == "parameter"]
         self._outputs = [v for v in self.VARIABLES if v.causality == "output"]

@@ -234,6 +234,7 @@ class ThermalState:
     temperature : T [K]
     geometry : mounted :class:`RaceGeometry`
     outer_fit_pressure, inner_fit_pressure : Lamé pressures [Pa]
+    outer_interference, inner_interference : diametral fit interferences at T [m]
     closure : loop closure C [m]
     loop_stiffness : k_loop [N/m]
     kinematic_viscosity : ν [m²/s] (0 for a dry film)
@@ -244,6 +245,8 @@ class ThermalState:
     geometry: RaceGeometry
     outer_fit_pressure: np.ndarray
     inner_fit_pressure: np.ndarray
+    outer_interference: np.ndarray
+    inner_interference: np.ndarray
     closure: np.ndarray
     loop_stiffness: float
     kinematic_viscosity: np.ndarray
@@ -276,6 +279,8 @@ def thermal_state(pair: BearingPair, temperature) -> ThermalState:
         geometry=mounted.race,
         outer_fit_pressure=mounted.outer_fit_pressure,
         inner_fit_pressure=mounted.inner_fit_pressure,
+        outer_interference=np.asarray(mounted.outer_interference),
+        inner_interference=np.asarray(mounted.inner_interference),
         closure=closure,
         loop_stiffness=k,
         kinematic_viscosity=np.asarray(visc),
@@ -439,8 +444,8 @@ class BearingOutputs:
     breakaway_torque [N·m], hysteresis/spin/sliding/viscous_torque [N·m], preload [N],
     contact_angle [rad], radial_clearance [m], kinematic_viscosity [m²/s], axial_stiffness
     [N/m], power_loss [W], seized; plus inner_ring_torque/outer_ring_torque [N·m],
-    max_contact_pressure [Pa], outer/inner_fit_pressure [Pa], force_a/force_b [N],
-    axial_displacement [m].
+    max_contact_pressure [Pa], outer/inner_fit_pressure [Pa], outer/inner_interference [m],
+    force_a/force_b [N], axial_displacement [m].
     """
 
     friction_torque: float
@@ -462,6 +467,8 @@ class BearingOutputs:
     max_contact_pressure: float
     outer_fit_pressure: float
     inner_fit_pressure: float
+    outer_interference: float
+    inner_interference: float
     force_a: float
     force_b: float
     axial_displacement: float
@@ -513,6 +520,8 @@ def bearing_outputs(
         max_contact_pressure=load.max_contact_pressure,
         outer_fit_pressure=thermal.outer_fit_pressure,
         inner_fit_pressure=thermal.inner_fit_pressure,
+        outer_interference=thermal.outer_interference,
+        inner_interference=thermal.inner_interference,
         force_a=load.force_a,
         force_b=load.force_b,
         axial_displacement=load.axial_displacement,
