@@ -56,6 +56,44 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT) -> Path:
     return Path(path)
 
 
-def build_all(out_dir: Path = DEFAULT_OUT, names=FMUS) -> list[Path]:
-    """Build every FMU in ``names``; returns their paths."""
-    return [build_fmu(n, out_dir) for n in names]
+def build_all(out_dir: Path = DEFAULT_OUT, names=FMUS, systems: bool = True) -> list[Path]:
+    """Build every FMU in ``names`` and, with ``systems``, pack every SSP system of ``ssp/``
+    with them (``out_dir/<system>.ssp``); returns the paths written."""
+    from .ssp import pack_all
+
+    paths = [build_fmu(n, out_dir) for n in names]
+    if systems and set(names) == set(FMUS):
+        paths += pack_all(out_dir, out_dir)
+    return paths
+
+
+def is_current(out_dir: Path = DEFAULT_OUT) -> bool:
+    """True when every FMU and system in ``out_dir`` was built from the current package and
+    sources (FMU build hash, and archives newer than their ssp/ sources)."""
+    import zipfile
+
+    from .ssp import systems
+
+    current = package_hash(PACKAGE_DIR)
+    for name in FMUS:
+        fmu = Path(out_dir) / f"{name}.fmu"
+        if not fmu.is_file():
+            return False
+        with zipfile.ZipFile(fmu) as zf:
+            if json.loads(zf.read(f"resources/{BUILD_INFO}"))["package_hash"] != current:
+                return False
+    for system in systems():
+        archive = Path(out_dir) / f"{system.name}.ssp"
+        newest = max(f.stat().st_mtime for f in system.rglob("*") if f.is_file())
+        if not archive.is_file() or archive.stat().st_mtime < newest:
+            return False
+        if archive.stat().st_mtime < (Path(out_dir) / "BearingFriction.fmu").stat().st_mtime:
+            return False
+    return True
+
+
+def ensure_built(out_dir: Path = DEFAULT_OUT) -> Path:
+    """Build FMUs and systems into ``out_dir`` unless they are current; returns out_dir."""
+    if not is_current(out_dir):
+        build_all(out_dir)
+    return Path(out_dir)

@@ -150,3 +150,13 @@ def test_coefficient_records_hold_the_code_calibration():
     assert record.palmgren_s0 == pytest.approx(s0, rel=1e-8)
     assert record.sliding_friction == pytest.approx(mu, rel=1e-8)
     assert record.source("sliding_friction").startswith("calibrated")
+
+
+def test_ning_spacer_record_holds_the_code_calibration():
+    from servofmu.papers import ning
+    from servofmu.physics import catalog
+
+    loop = {m.name: m for m in catalog.mounting("ning_space_shaft").loop.members}
+    spacer = ning.calibrate_spacer()
+    assert loop["spacer"].length == pytest.approx(spacer, rel=1e-6)
+    assert loop["shaft"].length == pytest.approx(loop["bearings"].length + spacer, rel=1e-6)

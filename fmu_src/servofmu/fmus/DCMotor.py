@@ -212,10 +212,10 @@ class DCMotor(ServoSlave):
     def advance(self, current_time, step_size):
         state = (self.current, self.speed, self.angle)
         if self.friction_running_torque == 0.0 and self.friction_breakaway_torque == 0.0:
-            new = motor.step(self.params, state, self.voltage, self.load_torque, step_size)
+            new = motor._step(self.params, state, self.voltage, self.load_torque, step_size)
             self.friction_torque = 0.0
         else:
-            new, self.friction_torque = motor.step_with_friction(
+            new, self.friction_torque = motor._step_with_friction(  # inputs checked by the slave
                 self.params,
                 state,
                 self.voltage,

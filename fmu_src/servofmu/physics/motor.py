@@ -86,6 +86,10 @@ def step(p: DCMotorParameters, state, voltage: float, load_torque: float, h: flo
     the new (i, ω, φ) as floats (exact, see module docstring)."""
     check_finite("voltage", voltage, "V")
     check_finite("load_torque", load_torque, "N·m")
+    return _step(p, state, voltage, load_torque, h)
+
+
+def _step(p: DCMotorParameters, state, voltage: float, load_torque: float, h: float):
     phi, gamma = discretise(p, float(h))
     u = (voltage, load_torque)
     return tuple(
@@ -121,6 +125,14 @@ def step_with_friction(
     check_finite("load_torque", load_torque, "N·m")
     check_nonnegative("running_friction", running_friction, "N·m")
     check_nonnegative("breakaway_friction", breakaway_friction, "N·m")
+    return _step_with_friction(
+        p, state, voltage, load_torque, h, running_friction, breakaway_friction, substep
+    )
+
+
+def _step_with_friction(
+    p, state, voltage, load_torque, h, running_friction, breakaway_friction, substep
+):
     n = max(1, math.ceil(h / substep - 1e-9))
     hs = h / n
     phi, gamma = discretise(p, hs)

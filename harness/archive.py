@@ -1,0 +1,92 @@
+"""Safe unpacking of .ssp and .fmu archives (zip).
+
+Refused: entries with absolute paths, drive letters, backslashes or ``..`` components, links
+(symbolic links stored in the zip), more than ``max_entries`` entries, or more than
+``max_bytes`` unpacked in total — counted while unpacking, not trusted from the headers
+(zip bombs lie about sizes)."""
+
+from __future__ import annotations
+
+import shutil
+import stat
+import zipfile
+from pathlib import Path, PurePosixPath
+
+from .errors import HarnessError
+
+MAX_ENTRIES = 10_000
+MAX_BYTES = 2 * 1024**3  # 2 GiB unpacked
+_CHUNK = 1 << 20
+
+
+class ArchiveError(HarnessError):
+    """An archive was refused (the message says which entry and why)."""
+
+
+def check_member(info: zipfile.ZipInfo, archive: Path) -> PurePosixPath:
+    """The safe relative path of one zip entry, or ArchiveError."""
+    name = info.filename
+    where = f"{archive.name}: entry {name!r}"
+    if "\\" in name:
+        raise ArchiveError(f"{where} contains a backslash")
+    path = PurePosixPath(name)
+    if path.is_absolute() or (path.parts and ":" in path.parts[0]):
+        raise ArchiveError(f"{where} is an absolute path")
+    if ".." in path.parts:
+        raise ArchiveError(f"{where} leaves the archive folder ('..')")
+    mode = info.external_attr >> 16
+    if stat.S_ISLNK(mode):
+        raise ArchiveError(f"{where} is a symbolic link")
+    return path
+
+
+def safe_extract(archive, dest, max_entries: int = MAX_ENTRIES, max_bytes: int = MAX_BYTES) -> Path:
+    """Unpack ``archive`` into ``dest`` (created) after checking every entry; returns dest."""
+    archive, dest = Path(archive), Path(dest)
+    try:
+        zf = zipfile.ZipFile(archive)
+    except (zipfile.BadZipFile, OSError) as exc:
+        raise ArchiveError(f"{archive}: not a readable zip archive ({exc})") from None
+    with zf:
+        infos = zf.infolist()
+        if len(infos) > max_entries:
+            raise ArchiveError(f"{archive.name}: {len(infos)} entries, more than {max_entries}")
+        members = [(info, check_member(info, archive)) for info in infos]
+        dest.mkdir(parents=True, exist_ok=True)
+        root = dest.resolve()
+        total = 0
+        for info, rel in members:
+            target = root.joinpath(*rel.parts)
+            if not target.resolve().is_relative_to(root):
+                raise ArchiveError(f"{archive.name}: entry {info.filename!r} leaves the folder")
+            if info.is_dir():
+                target.mkdir(parents=True, exist_ok=True)
+                continue
+            target.parent.mkdir(parents=True, exist_ok=True)
+            with zf.open(info) as src, open(target, "wb") as out:
+                while chunk := src.read(_CHUNK):
+                    total += len(chunk)
+                    if total > max_bytes:
+                        out.close()
+                        shutil.rmtree(dest, ignore_errors=True)
+                        raise ArchiveError(
+                            f"{archive.name}: unpacks to more than {max_bytes} bytes (stopped at "
+                            f"entry {info.filename!r}); refusing a possible zip bomb"
+                        )
+                    out.write(chunk)
+    return dest
+
+
+def read_member(archive, name: str, max_bytes: int = 64 * 1024**2) -> bytes:
+    """One entry of a zip (e.g. modelDescription.xml) after the same checks, size-bounded."""
+    archive = Path(archive)
+    with zipfile.ZipFile(archive) as zf:
+        info = zf.getinfo(name)
+        check_member(info, archive)
+        data = bytearray()
+        with zf.open(info) as src:
+            while chunk := src.read(_CHUNK):
+                data += chunk
+                if len(data) > max_bytes:
+                    raise ArchiveError(f"{archive.name}: entry {name!r} is larger than {max_bytes}")
+    return bytes(data)

@@ -1,0 +1,28 @@
+"""Errors of the harness: one clear line for the user, details attached."""
+
+from __future__ import annotations
+
+
+class HarnessError(Exception):
+    """A run failed: the message names what, where and what to do; ``result`` holds what was
+    computed up to the failure (also written to disk when the run had an output folder)."""
+
+    def __init__(self, message: str, result=None, details: str = ""):
+        super().__init__(message)
+        self.result = result
+        self.details = details
+
+
+class SystemError_(HarnessError):
+    """The system description is unusable (schema, connections, units, FMUs, parameters);
+    raised before any FMU is instantiated. ``problems`` lists every problem found."""
+
+    def __init__(self, problems: list[str]):
+        self.problems = list(problems)
+        head = self.problems[0] if len(self.problems) == 1 else f"{len(self.problems)} problems"
+        super().__init__(f"unusable system description: {head}", details="\n".join(self.problems))
+
+    def __str__(self):
+        if len(self.problems) == 1:
+            return super().__str__()
+        return super().__str__() + ":\n  - " + "\n  - ".join(self.problems)

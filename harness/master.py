@@ -1,0 +1,529 @@
+"""The co-simulation master: fixed communication step, Gauss-Seidel (default) or Jacobi.
+
+Per communication step t → t + h:
+
+- **Gauss-Seidel**: the components are stepped one after another in an order derived from the
+  connection graph (:func:`order_components`); each one's inputs are set from the newest
+  outputs of its sources (already at t + h for sources stepped earlier in the sweep, at t for
+  the others) and from the external signals at t, then it steps and its outputs are read.
+- **Jacobi**: every input is set from the outputs at t, then every component steps (libcosim's
+  fixed-step algorithm does the same, so the two agree to the last digits).
+
+A LinearTransformation y = factor·x + offset is applied on each connection. Unconnected inputs
+keep their start value (or SSV/variant value) unless a signal drives them. Initialization:
+instantiate, apply the parameter bindings, variant and overrides in initialization mode,
+propagate the connections, exit initialization mode, propagate again and record t0.
+
+A component that answers fmi2Discard or worse ends the run: :class:`~.errors.HarnessError`
+names the component, the time and the FMU's last log messages, and carries the results up
+to the failure (written to disk too when the run has an output folder).
+"""
+
+from __future__ import annotations
+
+import ctypes
+import tempfile
+import time as _time
+from collections import deque
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .archive import safe_extract
+from .errors import HarnessError
+from .system import System, load_system
+
+STATUS = ("OK", "Warning", "Discard", "Error", "Fatal", "Pending")
+ALGORITHMS = ("gauss-seidel", "jacobi")
+
+
+@dataclass
+class RunResult:
+    """Results of one run: ``data`` is a structured array with ``time`` and one field per
+    recorded ``component.variable``; ``failed``/``message`` tell how it ended."""
+
+    system: str
+    data: np.ndarray
+    failed: bool = False
+    message: str = ""
+    csv: Path | None = None
+    wall_time: float = 0.0
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return self.data.dtype.names
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.data[name]
+
+    def to_csv(self, path) -> Path:
+        """Write the results as CSV (header: field names)."""
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        np.savetxt(
+            path,
+            self.data.view((float, len(self.names)))
+            if len(self.data)
+            else np.empty((0, len(self.names))),
+            delimiter=",",
+            header=",".join(self.names),
+            comments="",
+            fmt="%.12g",
+        )
+        return path
+
+    def plot(self, path, names, title: str = "") -> Path:
+        """Plot the fields ``names`` against time to a PNG (one axis each)."""
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fig, axes = plt.subplots(
+            len(names), 1, sharex=True, figsize=(7, 1.8 + 1.6 * len(names)), squeeze=False
+        )
+        for ax, name in zip(axes[:, 0], names, strict=True):
+            ax.plot(self.data["time"], self.data[name])
+            ax.set_ylabel(name, fontsize=8)
+            ax.grid(True, alpha=0.3)
+        axes[-1, 0].set_xlabel("time [s]")
+        fig.suptitle(title or self.system, fontsize=10)
+        fig.tight_layout()
+        fig.savefig(path, dpi=100)
+        plt.close(fig)
+        return path
+
+
+def order_components(system: System) -> list[str]:
+    """Gauss-Seidel order from the connection graph: a component comes after the sources of
+    its inputs; a cycle is broken at a component whose outputs do not depend directly on its
+    inputs (a state-carrying FMU), in declaration order."""
+    names = list(system.components)
+    sources = {n: set() for n in names}
+    for c in system.connections:
+        if c.start[0] != c.end[0]:
+            sources[c.end[0]].add(c.start[0])
+    order, placed = [], set()
+    while len(order) < len(names):
+        ready = [n for n in names if n not in placed and sources[n] <= placed]
+        if not ready:
+            left = [n for n in names if n not in placed]
+            stateful = [n for n in left if not system.components[n].feedthrough]
+            ready = [(stateful or left)[0]]
+        order.append(ready[0])
+        placed.add(ready[0])
+    return order
+
+
+class _Unit:
+    """One instantiated component with preallocated ctypes buffers for the step loop."""
+
+    def __init__(self, comp, unzip_dir: Path):
+        from fmpy.fmi1 import calloc, free
+        from fmpy.fmi2 import (
+            FMU2Slave,
+            fmi2CallbackAllocateMemoryTYPE,
+            fmi2CallbackFreeMemoryTYPE,
+            fmi2CallbackFunctions,
+            fmi2CallbackLoggerTYPE,
+        )
+
+        self.name = comp.name
+        self.comp = comp
+        self.log: deque[str] = deque(maxlen=50)
+
+        def logger(env, instance, status, category, message):
+            text = message.decode(errors="replace") if isinstance(message, bytes) else str(message)
+            self.log.append(f"[{STATUS[status] if 0 <= status < 6 else status}] {text}")
+
+        cb = fmi2CallbackFunctions()
+        cb.logger = fmi2CallbackLoggerTYPE(logger)
+        cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+        cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+        try:
+            from fmpy.logging import addLoggerProxy
+
+            addLoggerProxy(ctypes.byref(cb))
+        except Exception:  # pragma: no cover - the proxy only formats printf-style messages
+            pass
+        self._keep = (cb, logger)
+        self.slave = FMU2Slave(
+            guid=comp.guid,
+            unzipDirectory=str(unzip_dir),
+            modelIdentifier=comp.model_identifier,
+            instanceName=comp.name,
+        )
+        self.instantiated = False
+        try:
+            self.slave.instantiate(callbacks=cb, loggingOn=False)
+        except Exception as exc:
+            raise HarnessError(
+                f"component {self.name!r} ({comp.fmu.name}) could not be instantiated: "
+                f"{' | '.join(self.log) or exc}"
+            ) from None
+        self.instantiated = True
+        f = self.slave._functions
+        self.c = self.slave.component
+        self.set_real, self.get_real = f["fmi2SetReal"], f["fmi2GetReal"]
+        self.get_boolean, self.do_step = f["fmi2GetBoolean"], f["fmi2DoStep"]
+
+    def buffers(self, inputs: list[int], reals: list[int], booleans: list[int]):
+        vr = ctypes.c_uint
+        self.n_in, self.in_vr = len(inputs), (vr * len(inputs))(*inputs)
+        self.in_val = (ctypes.c_double * len(inputs))()
+        self.n_out, self.out_vr = len(reals), (vr * len(reals))(*reals)
+        self.out_val = (ctypes.c_double * len(reals))()
+        self.n_bool, self.bool_vr = len(booleans), (vr * len(booleans))(*booleans)
+        self.bool_val = (ctypes.c_int * len(booleans))()
+
+    def close(self):
+        if self.instantiated:
+            try:
+                self.slave.terminate()
+            except Exception:
+                pass
+            self.slave.freeInstance()
+            self.instantiated = False
+
+
+def _set_value(slave, var, value):
+    if var.type == "Real":
+        slave.setReal([var.value_reference], [float(value)])
+    elif var.type in ("Integer", "Enumeration"):
+        slave.setInteger([var.value_reference], [int(value)])
+    elif var.type == "Boolean":
+        slave.setBoolean([var.value_reference], [bool(value)])
+    else:
+        slave.setString([var.value_reference], [str(value)])
+
+
+def run(
+    system,
+    *,
+    parameters=None,
+    signals=None,
+    start: float | None = None,
+    stop: float | None = None,
+    step: float | None = None,
+    algorithm: str = "gauss-seidel",
+    record=None,
+    out_dir=None,
+    progress: bool = True,
+    fmu_dir=None,
+) -> RunResult:
+    """Co-simulate ``system`` (a :class:`System`, or a path for :func:`load_system`).
+
+    Parameters
+    ----------
+    parameters : variant name (``variants/NAME.ssv``), or dict ``{"comp.var": value}`` of
+        overrides, or a list mixing both (applied in order, after the component bindings)
+    signals : ``{"comp.input": callable(t)}`` external signals for unconnected inputs
+    start, stop, step : times [s]; default from the DefaultExperiment and the OSP annotation
+    algorithm : "gauss-seidel" or "jacobi"
+    record : ``component.variable`` names to record (default: every Real and Boolean output
+        and every signal target)
+    out_dir : folder for ``results.csv`` (also written on failure, with the partial results)
+    progress : show a progress bar when the run takes longer than two seconds
+    """
+    own = not isinstance(system, System)
+    sys_ = load_system(system, fmu_dir=fmu_dir) if own else system
+    try:
+        return _run(
+            sys_, parameters, signals or {}, start, stop, step, algorithm, record, out_dir, progress
+        )
+    finally:
+        if own:
+            sys_.close()
+
+
+def _overrides(system: System, parameters) -> dict[str, object]:
+    if parameters is None:
+        return {}
+    items = parameters if isinstance(parameters, list) else [parameters]
+    out: dict[str, object] = {}
+    for item in items:
+        if isinstance(item, str):
+            if item not in system.variants:
+                raise HarnessError(
+                    f"parameter set {item!r} is not one of the variants {sorted(system.variants)}"
+                )
+            out.update({k: v for k, (_, v) in system.variants[item].items()})
+        else:
+            out.update(item)
+    for target in out:
+        system.variable(target)
+    return out
+
+
+def _run(system, parameters, signals, start, stop, step, algorithm, record, out_dir, progress):
+    if algorithm not in ALGORITHMS:
+        raise HarnessError(f"algorithm = {algorithm!r} is not one of {list(ALGORITHMS)}")
+    start = system.start_time if start is None else float(start)
+    stop = system.stop_time if stop is None else float(stop)
+    h = system.step_size if step is None else float(step)
+    if h is None or not h > 0:
+        raise HarnessError(f"step = {h!r}: give a positive communication step (none in the SSD)")
+    if not stop > start:
+        raise HarnessError(f"stop = {stop!r} s must be after start = {start!r} s")
+    overrides = _overrides(system, parameters)
+    connected = {c.end for c in system.connections}
+    for target, sig in signals.items():
+        comp, var = system.variable(target)
+        if var.causality != "input" or (comp.name, var.name) in connected:
+            raise HarnessError(f"signal {target!r}: only unconnected inputs can be driven")
+        if not callable(sig):
+            raise HarnessError(f"signal {target!r} is not a function of time")
+    order = order_components(system)
+    n_steps = round((stop - start) / h)
+    units: dict[str, _Unit] = {}
+    t0_wall = _time.perf_counter()
+    with tempfile.TemporaryDirectory(prefix="servofmu_run_") as tmp:
+        try:
+            unzipped = {}
+            for comp in system.components.values():
+                if comp.fmu not in unzipped:
+                    unzipped[comp.fmu] = safe_extract(
+                        comp.fmu, Path(tmp) / f"{len(unzipped)}_{comp.fmu.stem}"
+                    )
+                units[comp.name] = _Unit(comp, unzipped[comp.fmu])
+            return _simulate(
+                system,
+                units,
+                order,
+                overrides,
+                signals,
+                start,
+                h,
+                n_steps,
+                algorithm,
+                record,
+                out_dir,
+                progress,
+                t0_wall,
+            )
+        finally:
+            for u in units.values():
+                u.close()
+
+
+def _simulate(
+    system,
+    units,
+    order,
+    overrides,
+    signals,
+    start,
+    h,
+    n_steps,
+    algorithm,
+    record,
+    out_dir,
+    progress,
+    t0_wall,
+):
+    # --- what to record -----------------------------------------------------------------
+    if record is None:
+        record = [
+            f"{c.name}.{v.name}"
+            for c in system.components.values()
+            for v in c.variables.values()
+            if v.causality == "output" and v.type in ("Real", "Boolean")
+        ]
+        record += [t for t in signals if t not in record]
+    for target in record:
+        system.variable(target)
+    # --- outputs read after each step (connected or recorded), as one flat list "latest" --
+    needed = {c.start for c in system.connections} | {tuple(r.split(".", 1)) for r in record}
+    out_index: dict[tuple[str, str], int] = {}
+    bool_index: dict[tuple[str, str], int] = {}
+    reals, bools = {}, {}
+    for name in order:
+        outputs = [
+            v
+            for v in system.components[name].variables.values()
+            if v.causality == "output" and (name, v.name) in needed
+        ]
+        reals[name] = [v for v in outputs if v.type == "Real"]
+        bools[name] = [v for v in outputs if v.type == "Boolean"]
+        for v in reals[name]:
+            out_index[(name, v.name)] = len(out_index)
+        for v in bools[name]:
+            bool_index[(name, v.name)] = len(bool_index)
+    latest = [0.0] * len(out_index)
+    latest_bool = [0.0] * len(bool_index)
+    # --- inputs of each unit: (slot, source index, factor, offset) or a signal ---------
+    plan = {}
+    for name in order:
+        comp = system.components[name]
+        links, sigs, vrs = [], [], []
+        for c in system.connections:
+            if c.end[0] == name:
+                var = comp.variables[c.end[1]]
+                if var.type != "Real":
+                    raise HarnessError(
+                        f"connection to {name}.{var.name}: only Real connections are supported"
+                    )
+                links.append((len(vrs), out_index[c.start], c.factor, c.offset))
+                vrs.append(var.value_reference)
+        for target, sig in signals.items():
+            cname, _, vname = target.partition(".")
+            if cname == name:
+                sigs.append((len(vrs), sig))
+                vrs.append(comp.variables[vname].value_reference)
+        units[name].buffers(
+            vrs, [v.value_reference for v in reals[name]], [v.value_reference for v in bools[name]]
+        )
+        plan[name] = (links, sigs, out_index[(name, reals[name][0].name)] if reals[name] else 0)
+    getters = []
+    for target in record:
+        comp, var = system.variable(target)
+        key = (comp.name, var.name)
+        if key in out_index:
+            getters.append(("r", out_index[key]))
+        elif key in bool_index:
+            getters.append(("b", bool_index[key]))
+        elif target in signals:
+            getters.append(("s", signals[target]))
+        else:
+            raise HarnessError(
+                f"record {target!r}: only outputs and signal-driven inputs can be recorded"
+            )
+    rows = np.empty((n_steps + 1, 1 + len(getters)))
+    dtype = [("time", float)] + [(t, float) for t in record]
+
+    def result(k, failed=False, message=""):
+        data = (
+            np.rec.fromarrays(rows[: k + 1].T, dtype=dtype).view(np.ndarray)
+            if k >= 0
+            else np.empty(0, dtype=dtype)
+        )
+        res = RunResult(
+            system.name, data, failed, message, wall_time=_time.perf_counter() - t0_wall
+        )
+        if out_dir is not None:
+            res.csv = res.to_csv(Path(out_dir) / "results.csv")
+        return res
+
+    def fail(name, what, status, t, k):
+        u = units[name]
+        label = STATUS[status] if 0 <= status < 6 else str(status)
+        log = " | ".join(list(u.log)[-5:]) or "(no log message)"
+        message = (
+            f"component {name!r} ({u.comp.model_identifier}) returned fmi2{label} from {what} at "
+            f"t = {t:.6g} s: {log}"
+        )
+        res = result(k, True, message)
+        where = (
+            f"; results up to t = {res.data['time'][-1]:.6g} s in {res.csv}"
+            if res.csv and len(res.data)
+            else ""
+        )
+        raise HarnessError(message + where, result=res, details="\n".join(u.log))
+
+    def read(name):
+        u = units[name]
+        if u.n_out:
+            status = u.get_real(u.c, u.out_vr, u.n_out, u.out_val)
+            if status > 1:
+                return status
+            o = plan[name][2]
+            latest[o : o + u.n_out] = u.out_val
+        if u.n_bool:
+            status = u.get_boolean(u.c, u.bool_vr, u.n_bool, u.bool_val)
+            if status > 1:
+                return status
+            for i, v in enumerate(bools[name]):
+                latest_bool[bool_index[(name, v.name)]] = float(u.bool_val[i])
+        return 0
+
+    def write_inputs(name, t):
+        u = units[name]
+        links, sigs, _ = plan[name]
+        val = u.in_val
+        for slot, src, factor, offset in links:
+            val[slot] = factor * latest[src] + offset
+        for slot, sig in sigs:
+            val[slot] = sig(t)
+        if u.n_in:
+            return u.set_real(u.c, u.in_vr, u.n_in, val)
+        return 0
+
+    def store(k, t):
+        row = rows[k]
+        row[0] = t
+        for j, (kind, ref) in enumerate(getters, start=1):
+            row[j] = latest[ref] if kind == "r" else latest_bool[ref] if kind == "b" else ref(t)
+
+    # --- initialization -------------------------------------------------------------------
+    from fmpy.fmi1 import FMICallException
+
+    for name in order:
+        u = units[name]
+        try:
+            u.slave.setupExperiment(startTime=start)
+            u.slave.enterInitializationMode()
+            for pname, (_, value) in u.comp.parameters.items():
+                _set_value(u.slave, u.comp.variables[pname], value)
+            for target, value in overrides.items():
+                cname, _, vname = target.partition(".")
+                if cname == name:
+                    _set_value(u.slave, u.comp.variables[vname], value)
+        except FMICallException as exc:
+            fail(name, "initialization", exc.status if hasattr(exc, "status") else 3, start, -1)
+    for _ in range(2):  # settle chains of direct feedthrough
+        for name in order:
+            if (status := write_inputs(name, start)) > 1:
+                fail(name, "fmi2SetReal", status, start, -1)
+            if (status := read(name)) > 1:
+                fail(name, "fmi2GetReal", status, start, -1)
+    for name in order:
+        try:
+            units[name].slave.exitInitializationMode()
+        except FMICallException as exc:
+            fail(name, "fmi2ExitInitializationMode", getattr(exc, "status", 3), start, -1)
+        if units[name].log and any(m.startswith("[Error]") for m in units[name].log):
+            fail(name, "fmi2ExitInitializationMode", 3, start, -1)
+    for name in order:
+        if (status := write_inputs(name, start)) > 1:
+            fail(name, "fmi2SetReal", status, start, -1)
+        if (status := read(name)) > 1:
+            fail(name, "fmi2GetReal", status, start, -1)
+    store(0, start)
+    # --- stepping -------------------------------------------------------------------------
+    from tqdm import tqdm
+
+    bar = tqdm(
+        total=n_steps, delay=2.0, disable=not progress, unit="step", desc=system.name, leave=False
+    )
+    jacobi = algorithm == "jacobi"
+    try:
+        for k in range(n_steps):
+            t = start + k * h
+            if jacobi:
+                for name in order:
+                    if (status := write_inputs(name, t)) > 1:
+                        fail(name, "fmi2SetReal", status, t, k)
+                for name in order:
+                    u = units[name]
+                    if (status := u.do_step(u.c, t, h, 1)) > 1:
+                        fail(name, "fmi2DoStep", status, t, k)
+                for name in order:
+                    if (status := read(name)) > 1:
+                        fail(name, "fmi2GetReal", status, t, k)
+            else:
+                for name in order:
+                    u = units[name]
+                    if (status := write_inputs(name, t)) > 1:
+                        fail(name, "fmi2SetReal", status, t, k)
+                    if (status := u.do_step(u.c, t, h, 1)) > 1:
+                        fail(name, "fmi2DoStep", status, t, k)
+                    if (status := read(name)) > 1:
+                        fail(name, "fmi2GetReal", status, t, k)
+            store(k + 1, start + (k + 1) * h)
+            bar.update()
+    finally:
+        bar.close()
+    return result(n_steps)

@@ -1,0 +1,325 @@
+"""Reading an SSP 1.0 system (``.ssp`` archive or folder with ``SystemStructure.ssd``) and
+checking it against its FMUs before anything is instantiated.
+
+Supported: one flat system of FMU components; connections between component connectors with
+an optional ``ssc:LinearTransformation``; parameter bindings at component level from ``.ssv``
+files (names relative to the component); the DefaultExperiment with the OSP
+``FixedStepAlgorithm baseStepSize`` annotation; parameter-set variants as ``variants/NAME.ssv``
+with system-level names ``component.variable``, applied after the component bindings.
+
+:func:`load_system` raises :class:`~.errors.SystemError_` listing every problem: schema
+violations, a missing FMU, a connection or connector naming a variable the FMU lacks, wrong
+causality or type, a unit mismatch across a connection, a parameter the FMU does not have.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .archive import read_member, safe_extract
+from .errors import HarnessError, SystemError_
+from .xmlsafe import parse, validate
+
+NS = {
+    "ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
+    "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",
+    "ssv": "http://ssp-standard.org/SSP1/SystemStructureParameterValues",
+    "osp": "http://opensimulationplatform.com/SSP/OSPAnnotations",
+}
+TYPES = ("Real", "Integer", "Boolean", "String", "Enumeration")
+
+
+@dataclass(frozen=True)
+class Variable:
+    """One FMU variable as the harness needs it."""
+
+    name: str
+    value_reference: int
+    type: str
+    causality: str
+    unit: str | None
+    start: object
+
+
+@dataclass
+class Component:
+    """One FMU in the system: its file, declared connectors and bound parameter values."""
+
+    name: str
+    source: str
+    fmu: Path | None
+    connectors: dict[str, tuple[str, str, str | None]]  # name → (kind, type, unit)
+    parameters: dict[str, tuple[str, object]] = field(default_factory=dict)  # name → (type, value)
+    variables: dict[str, Variable] = field(default_factory=dict)
+    model_identifier: str = ""
+    guid: str = ""
+    feedthrough: bool = False  # some output depends directly on an input
+
+
+@dataclass(frozen=True)
+class Connection:
+    """``start.component.connector`` → ``end`` with y = factor·x + offset."""
+
+    start: tuple[str, str]
+    end: tuple[str, str]
+    factor: float = 1.0
+    offset: float = 0.0
+
+
+@dataclass
+class System:
+    """A loaded, checked system; close() removes an unpacked archive."""
+
+    name: str
+    root: Path
+    components: dict[str, Component]
+    connections: list[Connection]
+    start_time: float
+    stop_time: float
+    step_size: float | None
+    variants: dict[str, dict[str, tuple[str, object]]]
+    _tmp: object = None
+
+    def close(self):
+        if self._tmp is not None:
+            self._tmp.cleanup()
+            self._tmp = None
+
+    def variable(self, target: str) -> tuple[Component, Variable]:
+        """(component, variable) of ``"component.variable"``, or HarnessError."""
+        comp_name, _, var_name = target.partition(".")
+        comp = self.components.get(comp_name)
+        if comp is None or var_name not in comp.variables:
+            raise HarnessError(
+                f"{target!r} names no variable of the system (components {sorted(self.components)})"
+            )
+        return comp, comp.variables[var_name]
+
+
+def _float(elem, attr, default):
+    value = elem.get(attr)
+    return default if value is None else float(value)
+
+
+def _read_parameter_set(data: bytes, what: str) -> dict[str, tuple[str, object]]:
+    root = parse(data, what)
+    validate(root, "ssv", what)
+    values = {}
+    for p in root.findall("ssv:Parameters/ssv:Parameter", NS):
+        for t in TYPES:
+            elem = p.find(f"ssv:{t}", NS)
+            if elem is not None:
+                raw = elem.get("value")
+                value = {
+                    "Real": float,
+                    "Integer": int,
+                    "Boolean": lambda s: s.strip().lower() in ("true", "1"),
+                    "String": str,
+                    "Enumeration": str,
+                }[t](raw)
+                values[p.get("name")] = (t, value)
+                break
+    return values
+
+
+def _model_variables(fmu: Path) -> tuple[str, str, dict[str, Variable], bool]:
+    """(modelIdentifier, guid, variables, feedthrough) read from the FMU (XML checked first)."""
+    from fmpy import read_model_description
+
+    parse(read_member(fmu, "modelDescription.xml"), f"{fmu.name}/modelDescription.xml")
+    md = read_model_description(str(fmu), validate=False)
+    if md.coSimulation is None:
+        raise HarnessError(f"{fmu.name} has no co-simulation interface")
+    variables = {}
+    for v in md.modelVariables:
+        unit = v.unit if v.unit is not None else getattr(v.declaredType, "unit", None)
+        variables[v.name] = Variable(v.name, v.valueReference, v.type, v.causality, unit, v.start)
+    feedthrough = any(u.dependencies for u in md.outputs) or any(
+        u.dependencies is None for u in md.outputs
+    )
+    return md.coSimulation.modelIdentifier, md.guid, variables, feedthrough
+
+
+def load_system(path, fmu_dir=None) -> System:
+    """Read and check the system at ``path`` (``.ssp`` archive, folder, or its
+    ``SystemStructure.ssd``). Component sources are resolved relative to the system folder;
+    a missing one is looked up by file name in ``fmu_dir`` (e.g. ``build/out``)."""
+    path = Path(path)
+    tmp = None
+    if path.is_file() and path.suffix == ".ssp":
+        tmp = tempfile.TemporaryDirectory(prefix="servofmu_ssp_")
+        root = safe_extract(path, tmp.name)
+    elif path.is_dir():
+        root = path
+    elif path.is_file() and path.suffix == ".ssd":
+        root = path.parent
+    else:
+        raise HarnessError(f"{path}: no .ssp archive or system folder there")
+    try:
+        return _load(root, path, tmp, fmu_dir)
+    except Exception:
+        if tmp is not None:
+            tmp.cleanup()
+        raise
+
+
+def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
+    ssd_file = root / "SystemStructure.ssd"
+    if not ssd_file.is_file():
+        raise SystemError_([f"{path}: no SystemStructure.ssd"])
+    ssd = parse(ssd_file.read_bytes(), str(ssd_file))
+    validate(ssd, "ssd", str(ssd_file))
+    problems: list[str] = []
+    system = ssd.find("ssd:System", NS)
+    components: dict[str, Component] = {}
+    for elem in system.findall("ssd:Elements/ssd:Component", NS):
+        name, source = elem.get("name"), elem.get("source")
+        if elem.get("type", "application/x-fmu-sharedlibrary") != "application/x-fmu-sharedlibrary":
+            problems.append(f"component {name!r}: only FMU components are supported")
+            continue
+        connectors = {}
+        for c in elem.findall("ssd:Connectors/ssd:Connector", NS):
+            kind_elem = next(
+                (c.find(f"ssc:{t}", NS) for t in TYPES if c.find(f"ssc:{t}", NS) is not None), None
+            )
+            ctype = None if kind_elem is None else kind_elem.tag.split("}")[1]
+            unit = None if kind_elem is None else kind_elem.get("unit")
+            connectors[c.get("name")] = (c.get("kind"), ctype, unit)
+        fmu = (root / source) if source else None
+        if fmu is not None and not fmu.is_file() and fmu_dir is not None:
+            fmu = Path(fmu_dir) / Path(source).name
+        comp = Component(name, source, fmu if fmu and fmu.is_file() else None, connectors)
+        if comp.fmu is None:
+            hint = " (build it with `servofmu build`)" if fmu_dir is None else f" or in {fmu_dir}"
+            problems.append(f"component {name!r}: FMU {source!r} not found in {root}{hint}")
+        for binding in elem.findall("ssd:ParameterBindings/ssd:ParameterBinding", NS):
+            src = binding.get("source")
+            if src is None:
+                problems.append(f"component {name!r}: only .ssv parameter bindings are supported")
+                continue
+            ssv_file = root / src
+            if not ssv_file.is_file():
+                problems.append(f"component {name!r}: parameter set {src!r} not found")
+                continue
+            comp.parameters.update(_read_parameter_set(ssv_file.read_bytes(), str(ssv_file)))
+        components[name] = comp
+    connections = []
+    for c in system.findall("ssd:Connections/ssd:Connection", NS):
+        start = (c.get("startElement"), c.get("startConnector"))
+        end = (c.get("endElement"), c.get("endConnector"))
+        if start[0] is None or end[0] is None:
+            problems.append(
+                f"connection {start} → {end}: system-level connectors are not supported "
+                "(connect components directly; drive unconnected inputs with signals)"
+            )
+            continue
+        lt = c.find("ssc:LinearTransformation", NS)
+        factor = 1.0 if lt is None else _float(lt, "factor", 1.0)
+        offset = 0.0 if lt is None else _float(lt, "offset", 0.0)
+        connections.append(Connection(start, end, factor, offset))
+    de = ssd.find("ssd:DefaultExperiment", NS)
+    start_time = 0.0 if de is None else _float(de, "startTime", 0.0)
+    stop_time = 1.0 if de is None else _float(de, "stopTime", 1.0)
+    fixed = ssd.find(".//osp:FixedStepAlgorithm", NS)
+    step = None if fixed is None else float(fixed.get("baseStepSize"))
+    variants = {}
+    for f in sorted((root / "variants").glob("*.ssv")) if (root / "variants").is_dir() else []:
+        variants[f.stem] = _read_parameter_set(f.read_bytes(), str(f))
+    sys_ = System(
+        ssd.get("name"), root, components, connections, start_time, stop_time, step, variants, tmp
+    )
+    problems += _check(sys_)
+    if problems:
+        raise SystemError_(problems)
+    return sys_
+
+
+def _check(system: System) -> list[str]:
+    """Every problem of a parsed system against its FMUs."""
+    problems = []
+    for comp in system.components.values():
+        if comp.fmu is None:
+            continue
+        try:
+            comp.model_identifier, comp.guid, comp.variables, comp.feedthrough = _model_variables(
+                comp.fmu
+            )
+        except HarnessError as exc:
+            problems.append(f"component {comp.name!r}: {exc}")
+            continue
+        for name, (kind, ctype, unit) in comp.connectors.items():
+            v = comp.variables.get(name)
+            if v is None:
+                problems.append(f"connector {comp.name}.{name}: the FMU has no variable {name!r}")
+                continue
+            if kind in ("input", "output", "parameter") and v.causality != kind:
+                problems.append(
+                    f"connector {comp.name}.{name} is declared {kind}, the FMU says {v.causality}"
+                )
+            if ctype and ctype != v.type:
+                problems.append(
+                    f"connector {comp.name}.{name} is {ctype} but the FMU variable is {v.type}"
+                )
+            if unit and v.unit and unit != v.unit:
+                problems.append(
+                    f"connector {comp.name}.{name} has unit {unit!r}, the FMU variable {v.unit!r}"
+                )
+        for pname, (ptype, _) in comp.parameters.items():
+            v = comp.variables.get(pname)
+            if v is None:
+                problems.append(f"parameter {comp.name}.{pname}: the FMU has no such variable")
+            elif v.causality not in ("parameter", "input"):
+                problems.append(
+                    f"parameter {comp.name}.{pname}: the FMU variable is an {v.causality}"
+                )
+            elif ptype != v.type and not (ptype == "Integer" and v.type == "Real"):
+                problems.append(
+                    f"parameter {comp.name}.{pname} is given as {ptype}, the FMU wants {v.type}"
+                )
+    inputs_seen = set()
+    for con in system.connections:
+        ends = []
+        for (cname, vname), role in ((con.start, "start"), (con.end, "end")):
+            comp = system.components.get(cname)
+            if comp is None:
+                problems.append(f"connection {con.start} → {con.end}: no component {cname!r}")
+                ends.append(None)
+                continue
+            v = comp.variables.get(vname) if comp.variables else None
+            if comp.fmu is not None and v is None:
+                problems.append(
+                    f"connection {cname}.{vname} ({role}): the FMU has no variable {vname!r}"
+                )
+            ends.append(v)
+        src, dst = ends
+        if src is not None and src.causality != "output":
+            problems.append(
+                f"connection from {'.'.join(con.start)}: it is an {src.causality}, not an output"
+            )
+        if dst is not None and dst.causality != "input":
+            problems.append(
+                f"connection to {'.'.join(con.end)}: it is an {dst.causality}, not an input"
+            )
+        if src is not None and dst is not None:
+            if src.type != dst.type:
+                problems.append(
+                    f"connection {'.'.join(con.start)} → {'.'.join(con.end)}: "
+                    f"{src.type} to {dst.type}"
+                )
+            if src.unit != dst.unit and src.unit and dst.unit:
+                problems.append(
+                    f"connection {'.'.join(con.start)} → {'.'.join(con.end)}: unit {src.unit!r} "
+                    f"does not match {dst.unit!r}"
+                )
+        if con.end in inputs_seen:
+            problems.append(f"input {'.'.join(con.end)} has more than one incoming connection")
+        inputs_seen.add(con.end)
+    for vname, values in system.variants.items():
+        for target in values:
+            cname, _, var = target.partition(".")
+            comp = system.components.get(cname)
+            if comp is None or (comp.variables and var not in comp.variables):
+                problems.append(f"variant {vname!r}: {target!r} names no variable of the system")
+    return problems

@@ -1,0 +1,52 @@
+"""XML parsing without entity expansion, DTDs or network access, and validation against the
+SSP 1.0 schemas (the XSDs shipped with fmpy), both with lxml."""
+
+from __future__ import annotations
+
+import functools
+from pathlib import Path
+
+from lxml import etree
+
+from .errors import HarnessError
+
+_PARSER = etree.XMLParser(
+    resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False, huge_tree=False
+)
+SCHEMAS = {
+    "ssd": "SystemStructureDescription.xsd",
+    "ssv": "SystemStructureParameterValues.xsd",
+}
+
+
+class XMLError(HarnessError):
+    """An XML document was refused (malformed, a DTD, or not schema-valid)."""
+
+
+def parse(data: bytes, what: str) -> etree._Element:
+    """Parse ``data`` safely; documents with a DOCTYPE are refused (FMI and SSP use none, and a
+    DTD is how entity-expansion and external-entity attacks get in)."""
+    try:
+        tree = etree.fromstring(data, parser=_PARSER).getroottree()
+    except etree.XMLSyntaxError as exc:
+        raise XMLError(f"{what}: not well-formed XML ({exc})") from None
+    if tree.docinfo.doctype or tree.docinfo.internalDTD is not None:
+        raise XMLError(f"{what}: a DOCTYPE/DTD is not allowed (entity expansion is refused)")
+    return tree.getroot()
+
+
+@functools.cache
+def schema(kind: str) -> etree.XMLSchema:
+    """The SSP 1.0 schema ``kind`` ("ssd" or "ssv") from fmpy's copy."""
+    import fmpy.ssp
+
+    path = Path(fmpy.ssp.__file__).parent / "schema" / SCHEMAS[kind]
+    return etree.XMLSchema(etree.parse(str(path)))
+
+
+def validate(root: etree._Element, kind: str, what: str) -> None:
+    """Raise XMLError listing the schema violations of ``root``."""
+    s = schema(kind)
+    if not s.validate(root):
+        errors = "; ".join(f"line {e.line}: {e.message}" for e in s.error_log)
+        raise XMLError(f"{what} fails the SSP 1.0 schema: {errors}")
