@@ -13,9 +13,11 @@ $(STAMP): pyproject.toml
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	touch $(STAMP)
 
-## main job: the Yu 2017 friction-versus-temperature reproduction (report, CSV, PNG under out/)
+## main job: scenario 1, Yu's electrical method on the seeker-gimbal co-simulation (builds the
+## FMUs and systems on first use; table printed, CSV and PNG under out/)
+SCENARIO ?= friction_vs_temperature
 run: $(STAMP)
-	$(BIN)/servofmu paper yu2017 --out $(OUT)/yu2017
+	$(BIN)/servofmu scenario $(SCENARIO) --out $(OUT)/$(SCENARIO)
 
 ## tests: lint, format check, test suite
 test: $(STAMP) lint
@@ -30,6 +32,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_bearing.py
 	$(BIN)/python benchmarks/bench_actuator.py
 	$(BIN)/python benchmarks/bench_fmus.py
+	$(BIN)/python benchmarks/bench_harness.py
 
 clean:
 	rm -rf $(VENV) $(OUT) .pytest_cache .ruff_cache

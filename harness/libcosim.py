@@ -12,17 +12,21 @@ import numpy as np
 from .errors import HarnessError
 
 
-def run_libcosim(ssp, record, stop: float) -> dict[str, np.ndarray]:
-    """Simulate ``ssp`` (archive or folder) in libcosim until ``stop`` [s]; returns
-    ``{"time": ..., "component.variable": ...}`` for the Real variables in ``record``,
-    sampled at every communication point from the start."""
+def run_libcosim(ssp, record, stop: float, step: float | None = None) -> dict[str, np.ndarray]:
+    """Simulate ``ssp`` (archive or folder) in libcosim until ``stop`` [s], with the SSD's
+    step or ``step`` [s]; returns ``{"time": ..., "component.variable": ...}`` for the Real
+    variables in ``record``, sampled at every communication point from the start (libcosim's
+    observer holds the points before ``stop``)."""
     from libcosimpy.CosimEnums import CosimVariableType
     from libcosimpy.CosimExecution import CosimExecution
     from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
     from libcosimpy.CosimObserver import CosimObserver
 
     log_output_level(CosimLogLevel.ERROR)
-    ex = CosimExecution.from_ssp_file(str(Path(ssp)))
+    if step is None:
+        ex = CosimExecution.from_ssp_file(str(Path(ssp)))
+    else:
+        ex = CosimExecution.from_ssp_file(str(Path(ssp)), step_size=round(step * 1e9))
     observer = CosimObserver.create_time_series()
     ex.add_observer(observer)
     refs = {}

@@ -158,7 +158,7 @@ class _Unit:
         )
         self.instantiated = False
         try:
-            self.slave.instantiate(callbacks=cb, loggingOn=False)
+            self.slave.instantiate(callbacks=cb, loggingOn=True)  # messages go to self.log
         except Exception as exc:
             raise HarnessError(
                 f"component {self.name!r} ({comp.fmu.name}) could not be instantiated: "
@@ -224,7 +224,9 @@ def run(
     start, stop, step : times [s]; default from the DefaultExperiment and the OSP annotation
     algorithm : "gauss-seidel" or "jacobi"
     record : ``component.variable`` names to record (default: every Real and Boolean output
-        and every signal target)
+        and every signal target). A signal-driven input is recorded as the value the FMU
+        holds: the signal at the start of the step that ended at the row's time, the value
+        its outputs at that time were computed from.
     out_dir : folder for ``results.csv`` (also written on failure, with the partial results)
     progress : show a progress bar when the run takes longer than two seconds
     """
@@ -355,7 +357,7 @@ def _simulate(
     latest = [0.0] * len(out_index)
     latest_bool = [0.0] * len(bool_index)
     # --- inputs of each unit: (slot, source index, factor, offset) or a signal ---------
-    plan = {}
+    plan, signal_slot = {}, {}
     for name in order:
         comp = system.components[name]
         links, sigs, vrs = [], [], []
@@ -371,6 +373,7 @@ def _simulate(
         for target, sig in signals.items():
             cname, _, vname = target.partition(".")
             if cname == name:
+                signal_slot[target] = len(vrs)
                 sigs.append((len(vrs), sig))
                 vrs.append(comp.variables[vname].value_reference)
         units[name].buffers(
@@ -385,8 +388,8 @@ def _simulate(
             getters.append(("r", out_index[key]))
         elif key in bool_index:
             getters.append(("b", bool_index[key]))
-        elif target in signals:
-            getters.append(("s", signals[target]))
+        elif target in signals:  # the value the input holds (set at the step's start)
+            getters.append(("s", (units[comp.name].in_val, signal_slot[target])))
         else:
             raise HarnessError(
                 f"record {target!r}: only outputs and signal-driven inputs can be recorded"
@@ -455,7 +458,12 @@ def _simulate(
         row = rows[k]
         row[0] = t
         for j, (kind, ref) in enumerate(getters, start=1):
-            row[j] = latest[ref] if kind == "r" else latest_bool[ref] if kind == "b" else ref(t)
+            if kind == "r":
+                row[j] = latest[ref]
+            elif kind == "b":
+                row[j] = latest_bool[ref]
+            else:
+                row[j] = ref[0][ref[1]]
 
     # --- initialization -------------------------------------------------------------------
     from fmpy.fmi1 import FMICallException

@@ -91,9 +91,15 @@ class System:
         """(component, variable) of ``"component.variable"``, or HarnessError."""
         comp_name, _, var_name = target.partition(".")
         comp = self.components.get(comp_name)
-        if comp is None or var_name not in comp.variables:
+        if comp is None:
             raise HarnessError(
-                f"{target!r} names no variable of the system (components {sorted(self.components)})"
+                f"{target!r}: no component {comp_name!r} in the system "
+                f"(components {sorted(self.components)})"
+            )
+        if var_name not in comp.variables:
+            raise HarnessError(
+                f"{target!r}: {comp.fmu.name if comp.fmu else comp_name} has no variable "
+                f"{var_name!r}"
             )
         return comp, comp.variables[var_name]
 

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from lxml import etree
 
-from .errors import HarnessError
+from .errors import SystemError_
 
 _PARSER = etree.XMLParser(
     resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False, huge_tree=False
@@ -19,8 +19,11 @@ SCHEMAS = {
 }
 
 
-class XMLError(HarnessError):
+class XMLError(SystemError_):
     """An XML document was refused (malformed, a DTD, or not schema-valid)."""
+
+    def __init__(self, message: str):
+        super().__init__([message])
 
 
 def parse(data: bytes, what: str) -> etree._Element:

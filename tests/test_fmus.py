@@ -101,6 +101,33 @@ def test_motor_and_controller_outputs_right_after_initialization(fmus):
     ctl.close()
 
 
+def test_stepped_fmus_give_their_initial_outputs_in_initialization_mode(fmus):
+    # a master propagating connections before fmi2ExitInitializationMode must see the motor's
+    # initial angle (not 0), and the controller's command from the inputs set so far
+    motor = Fmu(fmus["DCMotor"])
+    ctl = Fmu(fmus["ServoController"])
+    for f in (motor, ctl):
+        f.slave.setupExperiment(startTime=0.0)
+        f.slave.enterInitializationMode()
+    motor.set(initial_angle=34.0, initial_speed=1.0)
+    ctl.set(mode="position", kp=2.0, reference=34.5)
+    assert motor.get("angle") == 34.0
+    ctl.set(measurement=motor.get("angle"))
+    assert ctl.get("command") == pytest.approx(2.0 * 0.5)
+    ctl.set(measurement=34.5)  # a later value is taken up
+    assert ctl.get("command") == pytest.approx(0.0)
+    for f in (motor, ctl):
+        f.slave.exitInitializationMode()
+    assert motor.get("angle") == 34.0 and ctl.get("command") == pytest.approx(0.0)
+    motor.set(voltage=0.0)  # an input change after initialization must not re-initialise
+    motor.slave.doStep(0.0, 1e-3)
+    motor.set(voltage=0.0)
+    moved = motor.get("angle")
+    assert 34.0 < moved < 34.0011 and motor.get("angle") == moved
+    motor.close()
+    ctl.close()
+
+
 @pytest.mark.parametrize("name", NAMES)
 def test_state_round_trip_is_bit_identical(fmus, name):
     fmu = Fmu(fmus[name], "a").init()

@@ -7,6 +7,7 @@ import sys
 from pathlib import Path
 
 from . import __version__
+from .harness.scenarios import SCENARIOS
 from .papers import PAPERS
 
 
@@ -46,6 +47,97 @@ def _host_env(args) -> int:
     return 0
 
 
+def _system_path(arg: str) -> tuple[Path, Path | None]:
+    """(path, fmu_dir) for ``servofmu run``: an .ssp, a system folder (its FMUs taken from the
+    build), or the name of a system in ssp/ (its built .ssp)."""
+    from servofmu.build.fmu import DEFAULT_OUT, ensure_built
+    from servofmu.build.ssp import systems
+
+    names = [s.name for s in systems()]
+    path = Path(arg)
+    if path.exists():
+        return path, (ensure_built(DEFAULT_OUT) if path.is_dir() or path.suffix == ".ssd" else None)
+    if arg in names:
+        return ensure_built(DEFAULT_OUT) / f"{arg}.ssp", None
+    raise ValueError(f"system = {arg!r}: no such file or folder, nor one of {names}")
+
+
+def _parameters(items: list[str]) -> list:
+    """--parameters values: a variant name, or comp.var=value (a float when it reads as one)."""
+    out = []
+    for item in items:
+        if "=" not in item:
+            out.append(item)
+            continue
+        target, _, text = item.partition("=")
+        try:
+            value: object = float(text)
+        except ValueError:
+            value = text
+        out.append({target.strip(): value})
+    return out
+
+
+def _signals(items: list[str]) -> dict:
+    """--signal comp.input=FILE.csv:column (piecewise linear over the CSV's time column)."""
+    from servofmu.harness import from_csv
+
+    out = {}
+    for item in items:
+        target, sep, spec = item.partition("=")
+        file, sep2, column = spec.rpartition(":")
+        if not sep or not sep2:
+            raise ValueError(f"--signal {item!r}: write it as comp.input=FILE.csv:column")
+        out[target.strip()] = from_csv(file, column)
+    return out
+
+
+def _run(args) -> int:
+    from servofmu.harness import HarnessError, load_system, run
+
+    path, fmu_dir = _system_path(args.system)
+    try:
+        system = load_system(path, fmu_dir=fmu_dir)
+    except HarnessError as exc:
+        print(f"servofmu: error: {exc}", file=sys.stderr)
+        return 2
+    out = Path(args.out or f"out/{system.name}")
+    try:
+        res = run(
+            system,
+            parameters=_parameters(args.parameters),
+            signals=_signals(args.signal),
+            start=args.start,
+            stop=args.stop,
+            step=args.step,
+            algorithm=args.algorithm,
+            record=args.record or None,
+            out_dir=out,
+        )
+    except HarnessError as exc:
+        print(f"servofmu: run failed: {exc}", file=sys.stderr)
+        return 1
+    finally:
+        system.close()
+    span = res["time"][-1] - res["time"][0]
+    print(
+        f"{res.system}: {len(res.data) - 1} steps to t = {res['time'][-1]:.6g} s in "
+        f"{res.wall_time:.3g} s wall, set-up included ({span / res.wall_time:.3g}× real time)"
+    )
+    print(f"results: {res.csv}")
+    if args.plot:
+        print(f"plot: {res.plot(out / 'results.png', args.plot)}")
+    return 0
+
+
+def _scenario(args) -> int:
+    from servofmu.harness.scenarios import run
+
+    result = run(args.name, Path(args.out or f"out/{args.name}"), coarse=args.coarse)
+    print(result.to_text())
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="servofmu", description="Temperature-aware servo-mechanism physics and FMUs."
@@ -69,6 +161,43 @@ def build_parser() -> argparse.ArgumentParser:
     )
     v.add_argument("fmus", nargs="+", help="FMU files")
     v.set_defaults(func=_validate)
+    r = sub.add_parser(
+        "run", help="co-simulate an SSP system with the harness; results as CSV (and a plot)"
+    )
+    r.add_argument(
+        "system", help="an .ssp archive, a system folder, or a system name (e.g. seeker_gimbal)"
+    )
+    r.add_argument(
+        "--parameters",
+        action="append",
+        default=[],
+        metavar="NAME|comp.var=VALUE",
+        help="a parameter-set variant (variants/NAME.ssv) or one value; repeatable, in order",
+    )
+    r.add_argument(
+        "--signal",
+        action="append",
+        default=[],
+        metavar="comp.input=FILE.csv:column",
+        help="drive an unconnected input from a CSV column over its 'time' column; repeatable",
+    )
+    r.add_argument("--start", type=float, help="start time [s] (default: the SSD's)")
+    r.add_argument("--stop", type=float, help="stop time [s] (default: the SSD's)")
+    r.add_argument("--step", type=float, help="communication step [s] (default: the SSD's)")
+    r.add_argument("--algorithm", choices=("gauss-seidel", "jacobi"), default="gauss-seidel")
+    r.add_argument(
+        "--record", action="append", default=[], metavar="comp.var", help="record only these"
+    )
+    r.add_argument("--plot", nargs="+", metavar="comp.var", help="plot these to results.png")
+    r.add_argument("--out", help="output directory (default out/SYSTEM)")
+    r.set_defaults(func=_run)
+    s = sub.add_parser(
+        "scenario", help="run a system-level scenario (the papers' experiments in co-simulation)"
+    )
+    s.add_argument("name", choices=SCENARIOS, help="which scenario")
+    s.add_argument("--coarse", action="store_true", help="shorter runs (as the tests use)")
+    s.add_argument("--out", help="directory for CSV and PNG files (default out/NAME)")
+    s.set_defaults(func=_scenario)
     h = sub.add_parser("host-env", help="environment a non-Python FMI host must set for our FMUs")
     h.set_defaults(func=_host_env)
     return parser

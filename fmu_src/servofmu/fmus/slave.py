@@ -157,6 +157,7 @@ class ServoSlave(Fmi2Slave):
         self._dirty = True  # inputs changed since the outputs were computed
         self._configured = False  # parameters turned into model objects
         self._error = ""  # why the FMU cannot compute (bad parameter or input)
+        self._initializing = False  # between fmi2EnterInitializationMode and its exit
         for v in self.VARIABLES:
             self._register(v)
 
@@ -204,8 +205,11 @@ class ServoSlave(Fmi2Slave):
 
     def _output_getter(self, name: str):
         def getter():
-            if self.FEEDTHROUGH and self._dirty:
-                self._refresh()
+            if self._dirty:
+                if self.FEEDTHROUGH:
+                    self._refresh()
+                elif self._initializing:
+                    self._initial_outputs()
             return getattr(self, name)
 
         return getter
@@ -268,8 +272,23 @@ class ServoSlave(Fmi2Slave):
     def _report(self, status: Fmi2Status):
         self.log(f"{self.instance_name}: {self._error}", status=status)
 
+    def _initial_outputs(self):
+        """Stepped FMUs in Initialization Mode: the outputs at the start time from the
+        parameters and inputs set so far, so that a master propagating values before
+        fmi2ExitInitializationMode sees e.g. the motor's initial angle and not 0. A problem
+        is left for fmi2ExitInitializationMode to report."""
+        try:
+            if self._ensure_configured() and not self._bad_input() and self._initialise():
+                self._dirty = False
+        except Exception:  # no exception may leave an FMI call; reported at exit
+            pass
+
     # ------------------------------------------------------------------ FMI calls
+    def enter_initialization_mode(self):
+        self._initializing = True
+
     def exit_initialization_mode(self):
+        self._initializing = False
         try:
             ok = self._ensure_configured() and (
                 self._refresh() if self.FEEDTHROUGH else self._initialise()

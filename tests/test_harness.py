@@ -1,0 +1,383 @@
+"""The co-simulation harness: signals, system checks before instantiation, stepping
+(Gauss-Seidel/Jacobi, LinearTransformation, SSV bindings, variants), results and failures."""
+
+from __future__ import annotations
+
+import math
+import shutil
+import zipfile
+
+import numpy as np
+import pytest
+
+from servofmu.build.ssp import SSP_DIR
+from servofmu.harness import (
+    Cycle,
+    HarnessError,
+    PiecewiseLinear,
+    Ramp,
+    Steps,
+    SystemError_,
+    from_csv,
+    load_system,
+    run,
+)
+from servofmu.harness import master as master_module
+from servofmu.harness.master import order_components
+from servofmu.physics import catalog
+from servofmu.physics.actuator import reduction_ratio
+
+
+@pytest.fixture(scope="module")
+def out(fmus):
+    """Folder with the built FMUs and .ssp systems of this session."""
+    return fmus["BearingFriction"].parent
+
+
+@pytest.fixture
+def no_instantiation(monkeypatch):
+    """Fail the test if the harness instantiates any FMU."""
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("an FMU was instantiated")
+
+    monkeypatch.setattr(master_module, "_Unit", refuse)
+
+
+def _copy_system(tmp_path, name="seeker_gimbal"):
+    target = tmp_path / name
+    shutil.copytree(SSP_DIR / name, target)
+    return target
+
+
+def _edit(path, old, new):
+    text = path.read_text()
+    assert text.count(old) == 1, f"{old!r} not exactly once in {path}"
+    path.write_text(text.replace(old, new))
+
+
+# ----------------------------------------------------------------------------- signals
+def test_steps_hold_each_value_from_its_time():
+    s = Steps((1.0, 2.0), (10.0, 20.0))
+    assert [s(0.0), s(1.0), s(1.5), s(2.0), s(9.0)] == [10.0, 10.0, 10.0, 20.0, 20.0]
+
+
+def test_ramp_and_piecewise_linear_interpolate_and_hold():
+    r = Ramp(1.0, 3.0, 0.0, 4.0)
+    assert [r(0.0), r(2.0), r(3.0), r(5.0)] == [0.0, 2.0, 4.0, 4.0]
+    p = PiecewiseLinear((0.0, 1.0, 2.0), (0.0, 10.0, 0.0))
+    assert p(0.25) == pytest.approx(2.5) and p(1.5) == pytest.approx(5.0)
+
+
+def test_cycle_triangle_and_sine():
+    tri = Cycle(-60.0, 80.0, 10.0, "triangle", start=1.0)
+    assert [tri(0.0), tri(1.0), tri(6.0), tri(11.0), tri(3.5)] == pytest.approx(
+        [-60.0, -60.0, 80.0, -60.0, 10.0]
+    )
+    sine = Cycle(-1.0, 1.0, 4.0, "sine")
+    assert [sine(0.0), sine(1.0), sine(3.0)] == pytest.approx([0.0, 1.0, -1.0])
+
+
+@pytest.mark.parametrize(
+    "make, message",
+    [
+        (lambda: Steps((2.0, 1.0), (0.0, 1.0)), "must increase"),
+        (lambda: Steps((1.0,), (0.0, 1.0)), "as many times as values"),
+        (lambda: PiecewiseLinear((0.0,), (1.0,)), "at least two"),
+        (lambda: Cycle(0.0, 1.0, 0.0), "period = 0.0"),
+        (lambda: Cycle(0.0, 1.0, 1.0, "square"), "'square'"),
+    ],
+)
+def test_bad_signals_name_the_problem(make, message):
+    with pytest.raises(ValueError, match=message):
+        make()
+
+
+def test_signal_from_csv(tmp_path):
+    f = tmp_path / "profile.csv"
+    f.write_text("time,T\n0,233.15\n10,333.15\n")
+    s = from_csv(f, "T")
+    assert s(5.0) == pytest.approx(283.15)
+    with pytest.raises(ValueError, match="no column 'temp'"):
+        from_csv(f, "temp")
+    f.write_text("time,T\n0,cold\n")
+    with pytest.raises(ValueError, match="non-numeric"):
+        from_csv(f, "T")
+
+
+# ----------------------------------------------------------------------------- loading
+def test_every_system_loads_with_its_bindings_and_variants(out):
+    for name in ("seeker_gimbal", "seeker_gimbal_position", "ema_actuator", "space_bearing"):
+        system = load_system(out / f"{name}.ssp")
+        try:
+            assert system.step_size > 0 and system.stop_time > system.start_time
+            assert all(c.parameters for c in system.components.values())
+            assert system.variants
+        finally:
+            system.close()
+
+
+def test_gauss_seidel_order_follows_the_connections(out):
+    system = load_system(out / "seeker_gimbal.ssp")
+    try:
+        order = order_components(system)
+    finally:
+        system.close()
+    # every component is in a loop; the loop is broken at the first stateful component in
+    # declaration order (the controller), and the algebraic bearing comes after the motor
+    # whose speed it reads, so it sees the speed at the end of the step
+    assert order == ["controller", "motor", "bearing"]
+
+
+@pytest.mark.parametrize(
+    "file, old, new, message",
+    [
+        (  # schema: an element SSP 1.0 does not have
+            "SystemStructure.ssd",
+            "<ssd:Connections>",
+            "<ssd:Wires/><ssd:Connections>",
+            "Wires",
+        ),
+        (
+            "SystemStructure.ssd",
+            'endElement="controller" endConnector="measurement"',
+            'endElement="controller" endConnector="measurment"',
+            "no variable 'measurment'",
+        ),
+        (  # unit mismatch between a connector and its FMU variable
+            "SystemStructure.ssd",
+            '<ssd:Connector name="temperature" kind="input"><ssc:Real unit="K"/>',
+            '<ssd:Connector name="temperature" kind="input"><ssc:Real unit="rad/s"/>',
+            "unit 'rad/s', the FMU variable 'K'",
+        ),
+        (
+            "SystemStructure.ssd",
+            'source="resources/DCMotor.fmu"',
+            'source="resources/DCMotr.fmu"',
+            "DCMotr.fmu",
+        ),
+        (
+            "bearing.ssv",
+            '<ssv:Parameter name="shim">',
+            '<ssv:Parameter name="shimm">',
+            "bearing.shimm: the FMU has no such variable",
+        ),
+        (
+            "variants/cold.ssv",
+            'name="bearing.temperature"',
+            'name="bearing.temprature"',
+            "'bearing.temprature' names no variable",
+        ),
+    ],
+)
+def test_bad_system_is_refused_before_any_fmu_is_instantiated(
+    tmp_path, out, no_instantiation, file, old, new, message
+):
+    folder = _copy_system(tmp_path)
+    _edit(folder / file, old, new)
+    with pytest.raises(SystemError_) as info:
+        run(folder, fmu_dir=out, stop=0.01)
+    assert message in str(info.value)
+
+
+def test_unit_mismatch_between_connected_variables_is_refused(tmp_path, out, no_instantiation):
+    folder = _copy_system(tmp_path)
+    ssd = folder / "SystemStructure.ssd"
+    # speed (rad/s) into the bearing's temperature (K), connectors without units
+    _edit(
+        ssd,
+        'endElement="bearing" endConnector="speed"',
+        'endElement="bearing" endConnector="temperature"',
+    )
+    _edit(
+        ssd,
+        '<ssd:Connector name="temperature" kind="input"><ssc:Real unit="K"/>',
+        '<ssd:Connector name="temperature" kind="input"><ssc:Real/>',
+    )
+    with pytest.raises(SystemError_, match="unit 'rad/s' does not match 'K'"):
+        load_system(folder, fmu_dir=out)
+
+
+def test_missing_fmu_says_how_to_build_it(tmp_path, no_instantiation):
+    folder = _copy_system(tmp_path)
+    with pytest.raises(SystemError_, match="servofmu build") as info:
+        load_system(folder)
+    assert len(info.value.problems) == 3  # every missing FMU is listed, not just the first
+
+
+def test_unsafe_archive_is_refused(tmp_path, out):
+    bad = tmp_path / "evil.ssp"
+    with zipfile.ZipFile(bad, "w") as zf:
+        zf.writestr("../escape.txt", "x")
+    with pytest.raises(HarnessError, match="leaves the archive"):
+        load_system(bad)
+    assert not (tmp_path.parent / "escape.txt").exists()
+
+
+def test_unknown_override_variant_and_signal_targets(out, no_instantiation):
+    system = load_system(out / "seeker_gimbal.ssp")
+    try:
+        with pytest.raises(HarnessError, match="no component 'motorx'"):
+            run(system, parameters={"motorx.inertia": 1.0}, stop=0.01)
+        with pytest.raises(HarnessError, match="not one of the variants"):
+            run(system, parameters="arctic", stop=0.01)
+        with pytest.raises(HarnessError, match="only unconnected inputs"):
+            run(system, signals={"motor.voltage": Steps((0.0,), (1.0,))}, stop=0.01)
+    finally:
+        system.close()
+
+
+# ----------------------------------------------------------------------------- running
+def test_linear_transformation_maps_motor_angle_to_output_angle(out):
+    system = load_system(out / "ema_actuator.ssp")
+    try:
+        factor = next(c for c in system.connections if c.end == ("actuator", "angle")).factor
+        res = run(
+            system,
+            stop=0.05,
+            record=["motor.angle", "actuator.reduction_ratio"],
+            progress=False,
+        )
+    finally:
+        system.close()
+    # Gauss-Seidel steps the (algebraic) actuator after the motor: each row's ratio is at
+    # the output angle factor·motor angle of the same row
+    output_angle = factor * res["motor.angle"]
+    expected = reduction_ratio(catalog.actuator("liu2014_ema"), output_angle).total
+    assert res["actuator.reduction_ratio"] == pytest.approx(expected, rel=1e-12)
+    assert np.ptp(output_angle) > 0  # the loaded motor moves: the check is not at one point
+    assert math.degrees(output_angle[0]) == pytest.approx(10.0, rel=1e-9)
+
+
+def test_variant_and_override_reach_the_fmu(out):
+    system = load_system(out / "seeker_gimbal.ssp")
+    try:
+        base = run(system, stop=0.01, record=["bearing.running_torque"], progress=False)
+        cold = run(
+            system, parameters="cold", stop=0.01, record=["bearing.running_torque"], progress=False
+        )
+        colder = run(
+            system,
+            parameters=["cold", {"bearing.temperature": 213.15}],
+            stop=0.01,
+            record=["bearing.running_torque"],
+            progress=False,
+        )
+    finally:
+        system.close()
+    warm, c1, c2 = (r["bearing.running_torque"][-1] for r in (base, cold, colder))
+    assert warm < c1 < c2  # grease and preload: colder is stiffer
+
+
+def test_gauss_seidel_and_jacobi_converge_to_the_same_steady_state(out):
+    system = load_system(out / "seeker_gimbal.ssp")
+    try:
+        kw = dict(stop=1.0, record=["motor.speed", "motor.current"], progress=False)
+        gs = run(system, **kw)
+        jac = run(system, algorithm="jacobi", **kw)
+    finally:
+        system.close()
+    target = 10.0 * math.pi / 180.0  # the speed loop's reference in controller.ssv
+    assert gs["motor.speed"][-1] == pytest.approx(target, rel=1e-4)
+    assert jac["motor.speed"][-1] == pytest.approx(target, rel=1e-4)
+    # ... through different transients (Jacobi: one more step of delay in the loop)
+    assert np.max(np.abs(gs["motor.speed"] - jac["motor.speed"])) > 0.01 * target
+
+
+def test_results_csv_and_plot(tmp_path, out):
+    res = run(
+        out / "seeker_gimbal.ssp",
+        stop=0.02,
+        record=["motor.speed", "bearing.seized"],
+        out_dir=tmp_path,
+        progress=False,
+    )
+    assert res.data.dtype.names == ("time", "motor.speed", "bearing.seized")
+    assert len(res.data) == 21 and res["time"][-1] == pytest.approx(0.02)
+    table = np.genfromtxt(res.csv, delimiter=",", names=True)
+    assert np.allclose(table["motorspeed"], res["motor.speed"])
+    png = res.plot(tmp_path / "r.png", ["motor.speed"])
+    assert png.stat().st_size > 1000
+
+
+def test_failing_fmu_stops_the_run_and_keeps_the_results(tmp_path, out):
+    # the chamber temperature ramps through the bearing's valid range (173.15…473.15 K)
+    ramp = Ramp(0.0, 0.1, 293.15, 493.15)
+    with pytest.raises(HarnessError) as info:
+        run(
+            out / "seeker_gimbal.ssp",
+            signals={"bearing.temperature": ramp},
+            stop=0.2,
+            out_dir=tmp_path,
+            progress=False,
+        )
+    err = info.value
+    assert "'bearing'" in str(err) and "fmi2Discard" in str(err)
+    assert "temperature = 47" in str(err) and "[173.15, 473.15]" in str(err)
+    t_fail = err.result.data["time"][-1]
+    assert 0.08 < t_fail < 0.1  # rows up to the step before the failing one
+    on_disk = np.genfromtxt(tmp_path / "results.csv", delimiter=",", names=True)
+    assert on_disk["time"][-1] == pytest.approx(t_fail)
+    assert np.all(on_disk["bearingtemperature"] <= 473.15)
+
+
+def test_bad_run_arguments(out):
+    with pytest.raises(HarnessError, match="algorithm = 'newton'"):
+        run(out / "seeker_gimbal.ssp", algorithm="newton", stop=0.01)
+    with pytest.raises(HarnessError, match=r"stop = 0\.0 s must be after"):
+        run(out / "seeker_gimbal.ssp", stop=0.0)
+
+
+# ----------------------------------------------------------------------------- CLI
+def test_cli_run_writes_results_and_reports_failures(tmp_path, out, capsys):
+    from servofmu.cli import main
+
+    ssp = str(out / "seeker_gimbal.ssp")
+    profile = tmp_path / "chamber.csv"
+    profile.write_text("time,T\n0,293.15\n0.05,233.15\n")
+    rc = main(
+        [
+            "run",
+            ssp,
+            "--parameters",
+            "warm",
+            "--parameters",
+            "controller.kp=3",
+            "--signal",
+            f"bearing.temperature={profile}:T",
+            "--stop",
+            "0.05",
+            "--step",
+            "0.5e-3",
+            "--record",
+            "motor.speed",
+            "--record",
+            "bearing.temperature",
+            "--plot",
+            "motor.speed",
+            "--out",
+            str(tmp_path / "ok"),
+        ]
+    )
+    assert rc == 0
+    table = np.genfromtxt(tmp_path / "ok" / "results.csv", delimiter=",", names=True)
+    assert len(table) == 101 and table["bearingtemperature"][-1] < 235.0
+    assert (tmp_path / "ok" / "results.png").is_file()
+    assert "× real time" in capsys.readouterr().out
+
+    rc = main(["run", ssp, "--parameters", "bearing.temperature=1000", "--out", str(tmp_path)])
+    err = capsys.readouterr().err
+    assert rc == 1 and "temperature = 1000.0 is outside the valid range" in err
+    rc = main(["run", str(tmp_path / "nowhere.ssp")])
+    assert rc == 2 and "nowhere.ssp" in capsys.readouterr().err
+
+
+def test_cli_scenario_prints_its_table(tmp_path, out, capsys, monkeypatch):
+    from servofmu.build import fmu as build_fmu
+    from servofmu.cli import main
+
+    monkeypatch.setattr(build_fmu, "DEFAULT_OUT", out)  # use this session's build
+    assert main(["scenario", "stiffness_test", "--coarse", "--out", str(tmp_path)]) == 0
+    text = capsys.readouterr().out
+    assert "EMA stiffness test" in text and "vs Liu" in text
+    assert (tmp_path / "stiffness_test.csv").is_file()

@@ -1,0 +1,99 @@
+"""The four system-level scenarios at their coarse setting, with physical outcomes asserted."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from servofmu.harness.scenarios import SCENARIOS
+from servofmu.harness.scenarios import run as run_scenario
+
+
+@pytest.fixture(scope="module")
+def results(fmus, tmp_path_factory):
+    out = tmp_path_factory.mktemp("scenarios")
+    fmu_dir = fmus["BearingFriction"].parent
+    return {name: run_scenario(name, out / name, fmu_dir, coarse=True) for name in SCENARIOS}
+
+
+def _column(rows, name, **where):
+    return np.array(
+        [r[name] for r in rows if all(r[k] == v for k, v in where.items())], dtype=float
+    )
+
+
+def test_every_scenario_writes_its_table_and_figure(results):
+    for name, res in results.items():
+        suffixes = {f.suffix for f in res.files}
+        assert {".csv", ".png"} <= suffixes, name
+        assert all(f.is_file() and f.stat().st_size > 0 for f in res.files), name
+        assert res.to_text().startswith(res.title)
+
+
+def test_friction_vs_temperature_electrical_method_matches_the_model(results):
+    rows = results["friction_vs_temperature"].rows
+    assert len(rows) == 12  # six temperatures, forward and reverse
+    for r in rows:
+        assert abs(r["difference [%]"]) < 2.0, r  # k_t·i at steady state = bearing torque
+        assert abs(abs(r["speed [deg/s]"]) - 10.0) < 0.1, r  # the speed loop holds
+    fwd = _column(rows, "measured k_t*i [N.mm]", direction="forward")
+    rev = _column(rows, "measured k_t*i [N.mm]", direction="reverse")
+    assert rev == pytest.approx(fwd, rel=1e-3)  # the model is symmetric
+    # colder is stiffer: preload and grease viscosity both rise as the frame shrinks
+    assert np.all(np.diff(fwd[:4]) < 0)
+    assert fwd[0] > 10.0 * fwd[3]  # −40 °C against 20 °C
+
+
+def test_stiffness_test_matches_the_model_and_stiffens_with_load(results):
+    res = results["stiffness_test"]
+    measured = _column(res.rows, "measured [N.m/deg]")
+    for r in res.rows:
+        assert abs(r["vs model [%]"]) < 1.0, r
+        assert abs(r["vs Liu [%]"]) < 5.0, r
+        # the held loop gives way by far less than the structure deflects
+        assert abs(r["servo give [deg]"]) < 0.01 * r["output angle change [deg]"]
+    assert np.all(np.diff(measured) > 0)  # the Hertzian support pair stiffens with load
+
+
+def test_low_speed_tracking_dead_zone_and_step_size(results):
+    rows = results["low_speed_tracking"].rows
+    for r in rows:
+        # no chatter: the motor reverses exactly as often as the reference
+        assert r["speed reversals"] == r["reference reversals"], r
+    for step in (0.5, 1.0, 2.0):
+        (warm,) = [r for r in rows if r["temperature"] == "20 °C" and r["step [ms]"] == step]
+        (cold,) = [r for r in rows if r["temperature"] == "-40 °C" and r["step [ms]"] == step]
+        assert cold["rms error [mrad]"] > 5.0 * warm["rms error [mrad]"]
+        assert cold["max error [mrad]"] > warm["max error [mrad]"]
+        assert cold["mean stick time [ms]"] > warm["mean stick time [ms]"]
+        assert cold["breakaway [N.mm]"] > 10.0 * warm["breakaway [N.mm]"]
+    for label in ("20 °C", "-40 °C"):
+        by_step = {r["step [ms]"]: r for r in rows if r["temperature"] == label}
+        # at and below the controller's sample period the communication step changes nothing
+        assert by_step[0.5]["rms error [mrad]"] == pytest.approx(
+            by_step[1.0]["rms error [mrad]"], rel=0.01
+        )
+        for step in (0.5, 1.0):  # one breakaway at the start and one per reversal
+            r = by_step[step]
+            assert r["stick-slip transitions"] == 1 + r["reference reversals"], r
+
+
+def test_thermal_cycle_follows_the_quasi_static_model(results):
+    res = results["thermal_cycle"]
+    rows = res.rows
+    assert not res.summary["seized anywhere"]
+    for r in rows:
+        assert abs(r["difference [%]"]) < 1.0, r
+    for branch in ("rising", "falling"):
+        temps = _column(rows, "temperature [degC]", branch=branch)
+        order = np.argsort(temps)
+        assert temps[order][0] == -60.0 and temps[order][-1] == 80.0
+        outer = _column(rows, "outer fit [um]", branch=branch)[order]
+        inner = _column(rows, "inner fit [um]", branch=branch)[order]
+        # steel rings in titanium: the outer ring grows into its housing, the inner ring
+        # away from its shaft
+        assert np.all(np.diff(outer) > 0) and np.all(np.diff(inner) < 0)
+        preload = _column(rows, "preload [N]", branch=branch)[order]
+        assert preload[-1] > preload[temps[order] == 20.0][0]
+    # no thermal lag in the model: both branches give the same torque at each temperature
+    assert res.summary["largest rising/falling torque gap [%]"] < 0.01

@@ -1,0 +1,67 @@
+"""The SSP systems of ssp/: schema-valid as fmpy reads them, the conventions of issue 5
+(flat, hyphen-free names, connector units, the OSP step annotation, one .ssv per component),
+and packed with their FMUs by ``servofmu build``."""
+
+from __future__ import annotations
+
+import zipfile
+
+import pytest
+from lxml import etree
+
+from servofmu.build.ssp import SSP_DIR, fmu_sources, systems
+
+NS = {
+    "ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
+    "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",
+    "ssv": "http://ssp-standard.org/SSP1/SystemStructureParameterValues",
+    "osp": "http://opensimulationplatform.com/SSP/OSPAnnotations",
+}
+SYSTEMS = [s.name for s in systems()]
+
+
+def test_the_issue_systems_exist():
+    assert {"seeker_gimbal", "ema_actuator", "space_bearing"} <= set(SYSTEMS)
+
+
+@pytest.mark.parametrize("name", SYSTEMS)
+def test_fmpy_reads_the_packed_system_with_schema_validation(fmus, name):
+    from fmpy.ssp.ssd import read_ssd, read_ssv
+
+    archive = fmus["BearingFriction"].parent / f"{name}.ssp"
+    ssd = read_ssd(str(archive), validate=True)
+    assert ssd.system.name == name
+    for ssv in (SSP_DIR / name).rglob("*.ssv"):
+        read_ssv(str(ssv), validate=True)
+
+
+@pytest.mark.parametrize("name", SYSTEMS)
+def test_system_conventions(name):
+    folder = SSP_DIR / name
+    root = etree.parse(str(folder / "SystemStructure.ssd")).getroot()
+    assert root.get("version") == "1.0"
+    system = root.find("ssd:System", NS)
+    assert system.find("ssd:Elements/ssd:System", NS) is None  # flat
+    names = [root.get("name"), system.get("name")]
+    for comp in system.iterfind("ssd:Elements/ssd:Component", NS):
+        names.append(comp.get("name"))
+        for conn in comp.iterfind("ssd:Connectors/ssd:Connector", NS):
+            names.append(conn.get("name"))
+            real = conn.find("ssc:Real", NS)
+            if real is not None and conn.get("name") not in ("reference", "measurement"):
+                assert real.get("unit"), f"{comp.get('name')}.{conn.get('name')} has no unit"
+        bindings = comp.findall("ssd:ParameterBindings/ssd:ParameterBinding", NS)
+        assert [b.get("source") for b in bindings] == [f"{comp.get('name')}.ssv"]
+        assert (folder / f"{comp.get('name')}.ssv").is_file()
+    assert not [n for n in names if "-" in n], "hyphens in names"
+    step = root.find("ssd:DefaultExperiment//osp:FixedStepAlgorithm", NS)
+    assert step is not None and float(step.get("baseStepSize")) > 0
+    assert list((folder / "variants").glob("*.ssv")), "no parameter-set variants"
+
+
+def test_packed_archive_holds_the_system_and_its_fmus(fmus):
+    archive = fmus["BearingFriction"].parent / "seeker_gimbal.ssp"
+    with zipfile.ZipFile(archive) as zf:
+        entries = set(zf.namelist())
+    assert "SystemStructure.ssd" in entries and "variants/cold.ssv" in entries
+    assert set(fmu_sources(SSP_DIR / "seeker_gimbal")) <= entries
