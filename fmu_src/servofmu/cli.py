@@ -138,6 +138,74 @@ def _scenario(args) -> int:
     return 0
 
 
+def _mounting_for(bearing: str) -> str:
+    """The catalogue mounting of ``bearing``: one with calibrated coefficients first."""
+    from .physics import catalog
+
+    keys = [k for k in catalog.keys("mountings") if catalog.mounting(k).bearing_key == bearing]
+    if not keys:
+        raise ValueError(
+            f"bearing = {bearing!r}: no catalogue mounting for it; name one with --mounting "
+            f"({catalog.keys('mountings')})"
+        )
+    with_coefficients = set(catalog.keys("coefficients"))
+    return sorted(keys, key=lambda k: (k not in with_coefficients, k))[0]
+
+
+def _calibrate(args) -> int:
+    from .calibration import (
+        calibrate,
+        parse_quantity,
+        plot,
+        read_measurements,
+        to_text,
+        write_residuals,
+        write_ssv,
+    )
+    from .physics.bearing_parameters import default_parameters
+
+    data = read_measurements(args.data)
+    mounting = args.mounting or _mounting_for(args.bearing)
+    params = default_parameters(mounting, args.lubrication)
+    if args.bearing:
+        params["bearing"] = args.bearing
+    if args.lubricant:
+        params["lubricant"] = args.lubricant
+    for item in args.set:
+        key, sep, text = item.partition("=")
+        key = key.strip()
+        if not sep or key not in params:
+            raise ValueError(f"--set {item!r}: write NAME=VALUE with NAME one of {list(params)}")
+        params[key] = text.strip() if isinstance(params[key], str) else float(text)
+    speed = parse_quantity(args.speed, "speed") if args.speed else None
+    unknowns = (
+        [u.strip() for u in args.fit.split(",") if u.strip()]
+        if args.fit
+        else (
+            ["palmgren_s0", "sliding_friction"]
+            if args.lubrication == "grease"
+            else ["sliding_friction"]
+        )
+    )
+    cal = calibrate(data, params, unknowns, speed=speed, residual=args.residual)
+    out = Path(args.out or f"out/calibration/{Path(args.data).stem}")
+    files = [
+        write_residuals(cal, out / "residuals.csv"),
+        plot(cal, out / "calibration.png"),
+        write_ssv(cal.parameters, out / "calibrated.ssv", component=args.component),
+    ]
+    text = to_text(cal)
+    (out / "report.txt").write_text(text + "\n")
+    if args.json:
+        import json
+
+        print(json.dumps(cal.as_dict(), indent=2))
+    else:
+        print(text)
+        print("\n".join(f"file: {f}" for f in [out / "report.txt", *files]))
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="servofmu", description="Temperature-aware servo-mechanism physics and FMUs."
@@ -198,6 +266,44 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--coarse", action="store_true", help="shorter runs (as the tests use)")
     s.add_argument("--out", help="directory for CSV and PNG files (default out/NAME)")
     s.set_defaults(func=_scenario)
+    c = sub.add_parser(
+        "calibrate",
+        help="fit a bearing pair's unknown coefficients to measured friction torque (CSV)",
+        description="Fit the unknown coefficients of a bearing pair to measured running "
+        "friction torque versus temperature. DATA.csv has a header naming each column with "
+        "its unit: 'temperature [degC]' or '[K]', 'torque [N.mm]' or '[N.m]', optionally "
+        "'speed [deg/s]', '[rad/s]' or '[rpm]' and 'direction' (forward/reverse); '#' lines "
+        "are comments.",
+    )
+    c.add_argument("data", help="CSV file of measured friction torque")
+    c.add_argument("--bearing", default="71803", help="bearing designation (default 71803)")
+    c.add_argument("--mounting", help="catalogue mounting (default: the bearing's)")
+    c.add_argument("--lubrication", choices=("grease", "solid"), default="grease")
+    c.add_argument("--lubricant", help="catalogue lubricant (default: the lubrication's)")
+    c.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="a known value of the pair in SI (e.g. outer_interference=1.6e-5); repeatable",
+    )
+    c.add_argument(
+        "--fit",
+        metavar="A,B,...",
+        help="unknowns: palmgren_s0, hysteresis_loss, sliding_friction, loop_stiffness "
+        "(default: palmgren_s0,sliding_friction for grease, sliding_friction for solid)",
+    )
+    c.add_argument(
+        "--speed", metavar="'VALUE UNIT'", help="test speed when DATA has no speed column"
+    )
+    c.add_argument("--residual", choices=("relative", "absolute"), default="relative")
+    c.add_argument(
+        "--component",
+        help="write component.name parameters (an SSP variant) instead of bare names",
+    )
+    c.add_argument("--json", action="store_true", help="print the result as JSON")
+    c.add_argument("--out", help="output directory (default out/calibration/DATA)")
+    c.set_defaults(func=_calibrate)
     h = sub.add_parser("host-env", help="environment a non-Python FMI host must set for our FMUs")
     h.set_defaults(func=_host_env)
     return parser

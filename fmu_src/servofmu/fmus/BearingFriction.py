@@ -8,12 +8,10 @@ coefficients calibrated in ``servofmu paper yu2017``.
 
 from __future__ import annotations
 
-import dataclasses
-
 from servofmu.fmus.slave import ServoSlave, Var
 from servofmu.physics import catalog
-from servofmu.physics.bearing import PRESSURE_LIMIT, BearingModel, BearingPair, with_mounting
-from servofmu.physics.friction import FrictionCoefficients
+from servofmu.physics.bearing import PRESSURE_LIMIT, BearingModel
+from servofmu.physics.bearing_parameters import PARAMETER_NAMES, pair_from_parameters
 
 _MNT = catalog.mounting("yu2017_gimbal")
 _COEF = catalog.coefficients("yu2017_gimbal")
@@ -367,44 +365,9 @@ class BearingFriction(ServoSlave):
     )
 
     def configure(self):
-        mnt = catalog.mounting(self.mounting)
-        fit, loop = mnt.fit, mnt.loop
-        if self.frame_material:
-            frame = catalog.material(self.frame_material)
-            fit = dataclasses.replace(fit, housing_material=frame)
-            loop = _with_member_material(loop, ("frame", "housing"), frame)
-        if self.shaft_material:
-            shaft = catalog.material(self.shaft_material)
-            fit = dataclasses.replace(fit, shaft_material=shaft)
-            loop = _with_member_material(loop, ("shaft",), shaft)
-        solid = self.lubrication == "solid"
-        pair = BearingPair(
-            bearing=catalog.bearing(self.bearing or mnt.bearing_key),
-            mounting=dataclasses.replace(mnt, fit=fit, loop=loop),
-            lubrication=self.lubrication,
-            lubricant=None if solid else catalog.lubricant(self.lubricant),
-            coefficients=FrictionCoefficients(
-                hysteresis_loss=self.hysteresis_loss,
-                sliding_friction=self.sliding_friction,
-                static_friction_ratio=self.static_friction_ratio,
-                palmgren_s0=self.palmgren_s0,
-            ),
-            regularisation_speed=self.regularisation_speed,
-            stribeck_speed=self.stribeck_speed,
-            pressure_limit=self.pressure_limit,
-        )
+        pair = pair_from_parameters({n: getattr(self, n) for n in PARAMETER_NAMES})
         self._point = None  # (temperature, axial_load, radial_load) of the last evaluate
-        self.model = BearingModel(
-            with_mounting(
-                pair,
-                outer_interference=self.outer_interference,
-                inner_interference=self.inner_interference,
-                shim=self.shim,
-                assembly_temperature=self.assembly_temperature,
-                loop_stiffness=self.loop_stiffness or None,
-                assembly_preload=self.assembly_preload or None,
-            )
-        )
+        self.model = BearingModel(pair)
 
     def compute(self):
         point = (self.temperature, self.axial_load, self.radial_load)
@@ -436,10 +399,3 @@ class BearingFriction(ServoSlave):
         self.outer_fit_interference = o.outer_interference
         self.inner_fit_interference = o.inner_interference
         self.seized = o.seized
-
-
-def _with_member_material(loop, names, material):
-    members = tuple(
-        dataclasses.replace(m, material=material) if m.name in names else m for m in loop.members
-    )
-    return dataclasses.replace(loop, members=members)

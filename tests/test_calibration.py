@@ -1,0 +1,204 @@
+"""Calibration from measured friction torque (issue 8): recovery of known coefficients from
+synthetic data within their standard errors, identifiability warnings, bad data, the .ssv
+parameter set in the FMU, and the command line."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from servofmu.calibration import (
+    DataError,
+    calibrate,
+    read_measurements,
+    running_torque,
+    write_ssv,
+)
+from servofmu.calibration.synthetic import synthesise, write_measurements
+from servofmu.physics.bearing_parameters import default_parameters
+from servofmu.physics.units import DEG, celsius_to_kelvin
+
+TEMPS = celsius_to_kelvin(np.arange(-40.0, 61.0, 10.0))
+PRINTED = default_parameters("yu2017_gimbal_printed")
+TRUTH = dict(PRINTED, palmgren_s0=0.8, sliding_friction=0.1)
+
+
+def test_recovers_s0_and_mu_within_their_standard_errors():
+    data = synthesise(TRUTH, TEMPS, [5 * DEG, 20 * DEG], noise=0.03, seed=11)
+    cal = calibrate(data, PRINTED, ["palmgren_s0", "sliding_friction"])
+    truth = np.array([0.8, 0.1])
+    assert np.all(cal.standard_error < 0.05 * truth)  # tight enough to mean something
+    assert np.all(np.abs(cal.estimate - truth) < 3.0 * cal.standard_error)
+    assert cal.warnings == []  # two speeds: s0 is identifiable
+    assert cal.rms == pytest.approx(0.03, rel=0.35)  # the residuals are the noise
+
+
+def test_standard_errors_are_calibrated_over_many_noise_draws():
+    # with honest standard errors about 95 % of the estimates fall within 2 SE of the truth
+    inside = 0
+    for seed in range(20):
+        data = synthesise(TRUTH, TEMPS[::2], [5 * DEG, 20 * DEG], noise=0.03, seed=seed)
+        cal = calibrate(data, PRINTED, ["palmgren_s0", "sliding_friction"])
+        inside += int(np.all(np.abs(cal.estimate - [0.8, 0.1]) < 2.0 * cal.standard_error))
+    assert inside >= 15  # 2 SE on two parameters: expected about 18 of 20
+
+
+def test_recovers_a_compliant_preload_loop():
+    stated = default_parameters("yu2017_gimbal")
+    truth = dict(stated, loop_stiffness=2.0e7)  # a compliant yoke
+    temps = celsius_to_kelvin(np.arange(-40.0, 31.0, 10.0))  # the loop closes below 35 °C
+    data = synthesise(truth, temps, [5 * DEG, 20 * DEG], noise=0.02, seed=3)
+    cal = calibrate(data, stated, ["sliding_friction", "loop_stiffness"])
+    k, se = cal.estimate[1], cal.standard_error[1]
+    assert se < 0.2 * k and abs(k - 2.0e7) < 3.0 * se
+    assert abs(cal.estimate[0] - stated["sliding_friction"]) < 3.0 * cal.standard_error[0]
+
+
+def test_warns_that_s0_and_the_speed_are_not_separately_identifiable(tmp_path):
+    data = synthesise(TRUTH, TEMPS, [10 * DEG], seed=1)
+    path = write_measurements(data, tmp_path / "one_speed.csv", speed=False)
+    cal = calibrate(read_measurements(path), PRINTED, ["palmgren_s0"], speed=10 * DEG)
+    (warning,) = cal.warnings
+    assert "s0·n^(2/3)" in warning and "10 °/s (assumed)" in warning
+    with_column = calibrate(data, PRINTED, ["palmgren_s0"])  # one speed, but measured
+    assert "the only one in the data" in with_column.warnings[0]
+
+
+def test_warns_when_two_coefficients_scale_the_same_torque():
+    # hysteresis (∝ α_r) and spin (∝ μ) torque both follow the ball loads; only the change of
+    # preload and contact angle with temperature shifts their ratio. Over 10…30 °C it hardly
+    # changes, and the data cannot part the two coefficients (over −40…60 °C they can)
+    data = synthesise(
+        TRUTH,
+        celsius_to_kelvin(np.linspace(10.0, 30.0, 9)),
+        [5 * DEG, 20 * DEG],
+        noise=0.02,
+        seed=5,
+    )
+    fixed_s0 = dict(PRINTED, palmgren_s0=0.8)
+    cal = calibrate(data, fixed_s0, ["hysteresis_loss", "sliding_friction"])
+    text = " ".join(cal.warnings)
+    assert "hysteresis_loss and sliding_friction are correlated -0.99" in text
+    wide = calibrate(
+        synthesise(TRUTH, TEMPS, [5 * DEG, 20 * DEG], noise=0.02, seed=5),
+        fixed_s0,
+        ["hysteresis_loss", "sliding_friction"],
+    )
+    assert wide.warnings == [] and abs(wide.correlation[0, 1]) < 0.99
+
+
+def test_warns_when_a_coefficient_has_no_effect_on_the_data():
+    # stated reading: above 35 °C the preload loop is open, so its stiffness changes nothing
+    stated = default_parameters("yu2017_gimbal")
+    temps = celsius_to_kelvin(np.array([40.0, 45.0, 50.0, 55.0, 60.0]))
+    data = synthesise(stated, temps, [5 * DEG, 20 * DEG], seed=2)
+    cal = calibrate(data, stated, ["palmgren_s0", "loop_stiffness"])
+    assert any("loop_stiffness is not identifiable" in w for w in cal.warnings)
+
+
+def test_running_torque_is_the_model_of_the_fmu_parameters():
+    from servofmu.physics.bearing import BearingModel
+    from servofmu.physics.bearing_parameters import pair_from_parameters
+
+    model = BearingModel(pair_from_parameters(TRUTH))
+    t, w = celsius_to_kelvin(-10.0), 7.0 * DEG
+    expected = model.evaluate(t, w).running_torque
+    assert running_torque(TRUTH, np.array([t]), np.array([w]))[0] == pytest.approx(expected)
+
+
+def test_fitted_ssv_gives_the_same_torque_in_the_fmu(fmus, tmp_path):
+    from fmu_helpers import Fmu
+
+    from servofmu.harness.system import _read_parameter_set
+    from servofmu.harness.xmlsafe import parse, validate
+
+    data = synthesise(TRUTH, TEMPS, [5 * DEG, 20 * DEG], seed=4)
+    cal = calibrate(data, PRINTED, ["palmgren_s0", "sliding_friction"])
+    ssv = write_ssv(cal.parameters, tmp_path / "calibrated.ssv")
+    validate(parse(ssv.read_bytes(), str(ssv)), "ssv", str(ssv))  # SSP 1.0 schema
+    values = {k: v for k, (_, v) in _read_parameter_set(ssv.read_bytes(), str(ssv)).items()}
+    fmu = Fmu(fmus["BearingFriction"])
+    try:
+        fmu.init(**values, temperature=float(data.temperature[3]), speed=float(cal.speed[3]))
+        assert fmu.get("running_torque") == pytest.approx(cal.model[3], rel=1e-9)
+        assert fmu.get("palmgren_s0") == cal.estimate[0]
+    finally:
+        fmu.close()
+    variant = write_ssv(cal.parameters, tmp_path / "v.ssv", component="bearing")
+    assert 'name="bearing.sliding_friction"' in variant.read_text()
+
+
+def test_fmu_defaults_are_the_yu_gimbal_parameter_set():
+    from servofmu.fmus.BearingFriction import BearingFriction
+
+    defaults = default_parameters("yu2017_gimbal")
+    for v in BearingFriction.VARIABLES:
+        if v.causality == "parameter":
+            assert v.start == defaults[v.name], v.name
+
+
+GOOD = "temperature [degC],torque [N.mm],speed [deg/s],direction\n"
+
+
+@pytest.mark.parametrize(
+    "text, message",
+    [
+        ("temp [degC],torque [N.mm]\n20,1\n", "no 'temperature' column"),
+        ("temperature [F],torque [N.mm]\n20,1\n", "unit 'F' is not one of ['degC', 'K']"),
+        ("temperature [degC],torque\n20,1\n", "unit None is not one of ['N.mm', 'N.m']"),
+        (GOOD + "20,1.2,10,forward\n40,abc,10,forward\n", "line 3, column 'torque [N.mm]'"),
+        (GOOD + "20,,10,forward\n", "line 2, column 'torque [N.mm]': empty"),
+        (GOOD + "-150,1,10,forward\n", "line 2, column 'temperature [degC]': -150 degC"),
+        (GOOD + "20,0,10,forward\n", "line 2, column 'torque [N.mm]': a torque of 0"),
+        (GOOD + "20,1,10,sideways\n", "line 2, column 'direction': 'sideways'"),
+        (GOOD + "20,1,10\n", "line 2: 3 cells for 4 columns"),
+        (GOOD + "20,nan,10,forward\n", "'nan' is not finite"),
+        (GOOD, "a header but no data rows"),
+        ("# only a comment\n", "no header and no data"),
+    ],
+)
+def test_bad_data_names_line_and_column(tmp_path, text, message):
+    path = tmp_path / "bad.csv"
+    path.write_text(text)
+    with pytest.raises(DataError) as info:
+        read_measurements(path)
+    assert message in str(info.value)
+
+
+def test_too_few_points_and_bad_requests(tmp_path):
+    path = tmp_path / "two.csv"
+    path.write_text(GOOD + "20,1.0,10,forward\n40,0.5,10,forward\n")
+    data = read_measurements(path)
+    with pytest.raises(ValueError, match="2 points for 2 unknowns"):
+        calibrate(data, PRINTED, ["palmgren_s0", "sliding_friction"])
+    with pytest.raises(ValueError, match="unknown = 'mu' is not one of"):
+        calibrate(data, PRINTED, ["mu"])
+    no_speed = tmp_path / "no_speed.csv"
+    no_speed.write_text("temperature [K],torque [N.m]\n293.15,0.001\n313.15,0.002\n")
+    with pytest.raises(ValueError, match="no speed column"):
+        calibrate(read_measurements(no_speed), PRINTED, ["sliding_friction"])
+
+
+def test_cli_report_plot_and_ssv(tmp_path, capsys):
+    from pathlib import Path
+
+    from servofmu.cli import main
+
+    example = Path(__file__).resolve().parents[1] / "examples/data/gimbal_friction_synthetic.csv"
+    out = tmp_path / "cal"
+    args = ["calibrate", str(example), "--mounting", "yu2017_gimbal_printed"]
+    assert main([*args, "--speed", "10 deg/s", "--out", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "palmgren_s0" in text and "WARNING" in text and "s0·n^(2/3)" in text
+    for name in ("report.txt", "residuals.csv", "calibration.png", "calibrated.ssv"):
+        assert (out / name).stat().st_size > 0
+    assert main([*args, "--speed", "10 deg/s", "--json", "--out", str(out)]) == 0
+    result = json.loads(capsys.readouterr().out)
+    s0 = result["unknowns"][0]
+    assert abs(s0["estimate"] - 0.8) < 3 * s0["standard_error"]  # the example's truth
+    assert main([*args, "--out", str(out)]) == 2  # no speed column and no --speed
+    assert "no speed column" in capsys.readouterr().err
+    assert main([*args, "--speed", "10 furlongs", "--out", str(out)]) == 2
+    assert "'10 furlongs'" in capsys.readouterr().err
