@@ -1,7 +1,8 @@
 """Benchmarks of the bearing model (run on demand: ``make bench``; not part of the tests).
 
 1. Per-step cost inside an FMU: BearingModel.evaluate at a fixed temperature with a changing
-   speed, and with a changing speed and axial load.
+   speed, and with a changing speed and axial load; and at a new temperature every step (a
+   ramp: the thermal state and the unloaded state are solved again).
 2. A 1000-point temperature curve: vectorised (BearingModel.curves) versus a scalar loop over
    the same temperatures (thermal_state + load_state + bearing_outputs per point), measured
    in one run; the ratio is what matters.
@@ -53,6 +54,8 @@ def main() -> None:
     model.evaluate(t, 0.1, 10.0)  # warm the caches (thermal state, axial-load table)
     step_speed = _per_call(lambda i: model.evaluate(t, speeds[i]), n)
     step_load = _per_call(lambda i: model.evaluate(t, speeds[i], loads[i]), n)
+    ramp = np.linspace(253.15, 263.15, 500).tolist()
+    step_temperature = _per_call(lambda i: model.evaluate(ramp[i], 0.1), len(ramp), repeat=3)
     t0 = time.perf_counter()
     BearingModel(pair).evaluate(t, 0.1, 10.0)
     table_build = time.perf_counter() - t0
@@ -69,6 +72,7 @@ def main() -> None:
     figures = {
         "step_speed_us": step_speed * 1e6,
         "step_speed_and_axial_load_us": step_load * 1e6,
+        "step_new_temperature_ms": step_temperature * 1e3,
         "axial_load_table_build_ms": table_build * 1e3,
         "curve_points": args.points,
         "curve_vectorised_ms": vec * 1e3,
@@ -82,6 +86,7 @@ def main() -> None:
     print(
         f"per step, speed and axial load change   {figures['step_speed_and_axial_load_us']:8.2f} µs"
     )
+    print(f"per step, new temperature (a ramp)      {figures['step_new_temperature_ms']:8.2f} ms")
     print(f"axial-load table, once per temperature  {figures['axial_load_table_build_ms']:8.2f} ms")
     print(
         f"{args.points}-point curve, vectorised          {figures['curve_vectorised_ms']:8.2f} ms"

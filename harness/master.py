@@ -22,7 +22,6 @@ to the failure (written to disk too when the run has an output folder).
 from __future__ import annotations
 
 import ctypes
-import tempfile
 import time as _time
 from collections import deque
 from dataclasses import dataclass
@@ -30,7 +29,6 @@ from pathlib import Path
 
 import numpy as np
 
-from .archive import safe_extract
 from .errors import HarnessError
 from .system import System, load_system
 
@@ -282,33 +280,27 @@ def _run(system, parameters, signals, start, stop, step, algorithm, record, out_
     n_steps = round((stop - start) / h)
     units: dict[str, _Unit] = {}
     t0_wall = _time.perf_counter()
-    with tempfile.TemporaryDirectory(prefix="servofmu_run_") as tmp:
-        try:
-            unzipped = {}
-            for comp in system.components.values():
-                if comp.fmu not in unzipped:
-                    unzipped[comp.fmu] = safe_extract(
-                        comp.fmu, Path(tmp) / f"{len(unzipped)}_{comp.fmu.stem}"
-                    )
-                units[comp.name] = _Unit(comp, unzipped[comp.fmu])
-            return _simulate(
-                system,
-                units,
-                order,
-                overrides,
-                signals,
-                start,
-                h,
-                n_steps,
-                algorithm,
-                record,
-                out_dir,
-                progress,
-                t0_wall,
-            )
-        finally:
-            for u in units.values():
-                u.close()
+    try:
+        for comp in system.components.values():  # FMUs unpacked once per loaded system
+            units[comp.name] = _Unit(comp, system.unpacked(comp.fmu))
+        return _simulate(
+            system,
+            units,
+            order,
+            overrides,
+            signals,
+            start,
+            h,
+            n_steps,
+            algorithm,
+            record,
+            out_dir,
+            progress,
+            t0_wall,
+        )
+    finally:
+        for u in units.values():
+            u.close()
 
 
 def _simulate(

@@ -81,11 +81,25 @@ class System:
     step_size: float | None
     variants: dict[str, dict[str, tuple[str, object]]]
     _tmp: object = None
+    _unpacked: dict = field(default_factory=dict)  # FMU path → its unpacked folder
+    _fmu_tmp: object = None
+
+    def unpacked(self, fmu: Path) -> Path:
+        """The folder ``fmu`` is unpacked to, once per system (runs share it; removed by
+        :meth:`close`)."""
+        if fmu not in self._unpacked:
+            if self._fmu_tmp is None:
+                self._fmu_tmp = tempfile.TemporaryDirectory(prefix="servofmu_fmus_")
+            target = Path(self._fmu_tmp.name) / f"{len(self._unpacked)}_{fmu.stem}"
+            self._unpacked[fmu] = safe_extract(fmu, target)
+        return self._unpacked[fmu]
 
     def close(self):
-        if self._tmp is not None:
-            self._tmp.cleanup()
-            self._tmp = None
+        for tmp in (self._tmp, self._fmu_tmp):
+            if tmp is not None:
+                tmp.cleanup()
+        self._tmp = self._fmu_tmp = None
+        self._unpacked.clear()
 
     def variable(self, target: str) -> tuple[Component, Variable]:
         """(component, variable) of ``"component.variable"``, or HarnessError."""

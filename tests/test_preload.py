@@ -101,3 +101,17 @@ def test_pair_equilibrium_with_radial_load(geom):
 def test_never_nan_at_extreme_closures(geom):
     off = pair_offsets(geom, np.array([-1e-3, 0.0, 1e-3]), 1e8, np.array([0.0, 50.0, -50.0]))
     assert np.all(np.isfinite(off.force_a)) and np.all(np.isfinite(off.force_b))
+
+
+def test_scalar_and_vectorised_mean_offset_agree(yu_pair):
+    # the per-step path solves one state with scipy's brentq, curves use the elementwise
+    # Chandrupatla solver: the same root of the loop compatibility
+    from servofmu.physics.bearing import thermal_state
+    from servofmu.physics.preload import mean_offset
+
+    for t in (233.15, 273.15, 300.0):
+        th = thermal_state(yu_pair, t)
+        k = float(th.loop_stiffness)
+        scalar = float(mean_offset(0.0, float(th.closure), k, th.geometry))
+        vector = mean_offset(np.zeros(1), np.array([float(th.closure)]), k, th.geometry)
+        assert scalar == pytest.approx(float(vector[0]), rel=1e-9, abs=1e-15)

@@ -6,6 +6,8 @@ import argparse
 import sys
 from pathlib import Path
 
+import numpy as np
+
 from . import __version__
 from .harness.scenarios import SCENARIOS
 from .papers import PAPERS
@@ -206,6 +208,117 @@ def _calibrate(args) -> int:
     return 0
 
 
+def _value(text: str):
+    """A float when the text reads as one, else the text (catalogue keys)."""
+    try:
+        return float(text)
+    except ValueError:
+        return text.strip()
+
+
+def _axis(item: str) -> tuple[str, list]:
+    """--grid NAME=V1,V2,... or NAME=LO:HI:N (N values, ends included)."""
+    name, sep, spec = item.partition("=")
+    if not sep or not spec:
+        raise ValueError(f"--grid {item!r}: write NAME=V1,V2,... or NAME=LO:HI:N")
+    if ":" in spec:
+        try:
+            lo, hi, n = spec.split(":")
+            values = [float(v) for v in np.linspace(float(lo), float(hi), int(n))]
+        except ValueError:
+            raise ValueError(f"--grid {item!r}: LO:HI:N needs two numbers and a count") from None
+        return name.strip(), values
+    return name.strip(), [_value(v) for v in spec.split(",")]
+
+
+def _distribution(item: str):
+    """--sample NAME=uniform:LO:HI | normal:MEAN:SD | choice:A,B,..."""
+    from servofmu.harness.sweep import Choice, Normal, Uniform
+
+    name, _, spec = item.partition("=")
+    kind, _, rest = spec.partition(":")
+    try:
+        if kind == "uniform":
+            lo, hi = (float(v) for v in rest.split(":"))
+            return name.strip(), Uniform(lo, hi)
+        if kind == "normal":
+            mean, sd = (float(v) for v in rest.split(":"))
+            return name.strip(), Normal(mean, sd)
+        if kind == "choice" and rest:
+            return name.strip(), Choice(tuple(_value(v) for v in rest.split(",")))
+    except ValueError:
+        pass
+    raise ValueError(
+        f"--sample {item!r}: write NAME=uniform:LO:HI, NAME=normal:MEAN:SD or NAME=choice:A,B"
+    )
+
+
+def _sweep(args) -> int:
+    from servofmu.harness.sweep import (
+        ModelTask,
+        SystemTask,
+        cross,
+        grid_points,
+        run_sweep,
+        sample_points,
+    )
+    from servofmu.physics.bearing_parameters import default_parameters
+
+    axes = dict(_axis(g) for g in args.grid)
+    dists = dict(_distribution(s) for s in args.sample)
+    samples = sample_points(dists, args.samples, args.seed) if dists else []
+    points = cross(samples, grid_points(axes) if axes else [])
+    if not points:
+        raise ValueError("give at least one --grid or --sample")
+    if args.target == "model":
+        base = default_parameters(args.mounting, args.lubrication)
+        for item in args.set:
+            key, sep, text = item.partition("=")
+            if not sep or key.strip() not in base:
+                raise ValueError(f"--set {item!r}: write NAME=VALUE, NAME one of {list(base)}")
+            base[key.strip()] = _value(text) if isinstance(base[key.strip()], str) else float(text)
+        task = ModelTask(base, tuple(args.record)) if args.record else ModelTask(base)
+    else:
+        if args.set or not args.record:
+            raise ValueError(
+                "a system sweep takes --record comp.var (what to report) and no --set "
+                "(give fixed values as a one-value --grid)"
+            )
+        path, fmu_dir = _system_path(args.target)
+        if fmu_dir is not None or path.suffix != ".ssp":
+            raise ValueError(f"{args.target}: a system sweep needs a packed .ssp or a system name")
+        task = SystemTask(
+            path.read_bytes(), tuple(args.record), args.stop, args.step, tail=args.tail
+        )
+    result = run_sweep(
+        task, points, workers=args.workers, scheduler=args.scheduler, chunk_size=args.chunk
+    )
+    out = Path(args.out or "out/sweep/results.csv")
+    result.write(out)
+    print(
+        f"{len(result.rows)} runs on {result.workers} worker(s) in {result.wall_time:.3g} s; "
+        f"{len(result.failed)} failed; table: {out}"
+    )
+    for row in result.failed[:10]:
+        print(f"  failed: {row}")
+    return 1 if result.failed and len(result.failed) == len(result.rows) else 0
+
+
+def _montecarlo(args) -> int:
+    from servofmu.harness.tolerance import run
+
+    result = run(
+        Path(args.out or "out/montecarlo"),
+        samples=args.samples,
+        seed=args.seed,
+        workers=args.workers,
+        scheduler=args.scheduler,
+        mounting=args.mounting,
+    )
+    print(result.to_text())
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="servofmu", description="Temperature-aware servo-mechanism physics and FMUs."
@@ -266,6 +379,53 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--coarse", action="store_true", help="shorter runs (as the tests use)")
     s.add_argument("--out", help="directory for CSV and PNG files (default out/NAME)")
     s.set_defaults(func=_scenario)
+    w = sub.add_parser(
+        "sweep",
+        help="many independent model evaluations or co-simulations on Dask (grid / sample)",
+        description="Run the bearing model ('model') or an SSP system over a grid and/or a "
+        "random sample of parameters on a Dask LocalCluster (or --scheduler). Values in SI. "
+        "Every sample is crossed with every grid point. Model parameters: the BearingFriction "
+        "parameter names and the inputs temperature, speed, axial_load, radial_load; system "
+        "parameters: component.variable.",
+    )
+    w.add_argument("target", help="'model', or an .ssp / system name (e.g. seeker_gimbal)")
+    w.add_argument("--grid", action="append", default=[], metavar="NAME=V1,V2|LO:HI:N")
+    w.add_argument(
+        "--sample",
+        action="append",
+        default=[],
+        metavar="NAME=uniform:LO:HI|normal:MEAN:SD|choice:A,B",
+    )
+    w.add_argument("--samples", type=int, default=100, help="random draws (default 100)")
+    w.add_argument("--seed", type=int, default=0)
+    w.add_argument("--mounting", default="yu2017_gimbal", help="model: catalogue mounting")
+    w.add_argument("--lubrication", choices=("grease", "solid"), default="grease")
+    w.add_argument("--set", action="append", default=[], metavar="NAME=VALUE", help="model")
+    w.add_argument(
+        "--record", action="append", default=[], help="outputs to report (system: required)"
+    )
+    w.add_argument("--stop", type=float, help="system: stop time [s]")
+    w.add_argument("--step", type=float, help="system: communication step [s]")
+    w.add_argument(
+        "--tail", type=float, default=0.0, help="system: average over this last fraction"
+    )
+    w.add_argument("--workers", type=int, help="LocalCluster worker processes (default: cores)")
+    w.add_argument("--scheduler", help="address of a running Dask scheduler")
+    w.add_argument("--chunk", type=int, help="points per task (default: ~4 tasks per worker)")
+    w.add_argument("--out", help="table: .csv or .parquet (default out/sweep/results.csv)")
+    w.set_defaults(func=_sweep)
+    mc = sub.add_parser(
+        "montecarlo",
+        help="Monte-Carlo tolerance study: fit and shim from their tolerances, torque and "
+        "seizure probability versus temperature",
+    )
+    mc.add_argument("--samples", type=int, default=500)
+    mc.add_argument("--seed", type=int, default=1)
+    mc.add_argument("--mounting", default="yu2017_gimbal")
+    mc.add_argument("--workers", type=int)
+    mc.add_argument("--scheduler")
+    mc.add_argument("--out", help="directory (default out/montecarlo)")
+    mc.set_defaults(func=_montecarlo)
     c = sub.add_parser(
         "calibrate",
         help="fit a bearing pair's unknown coefficients to measured friction torque (CSV)",

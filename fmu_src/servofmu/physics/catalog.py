@@ -254,7 +254,32 @@ def coefficients(key: str):
     return FrictionCoefficients(**values, provenance=tuple(prov))
 
 
-TABLES = ("materials", "lubricants", "bearings", "mountings", "actuators", "coefficients")
+def tolerances(key: str) -> dict[str, tuple[float, float, str]]:
+    """Tolerance bands of mounting ``key`` from ``data/tolerances.toml``: {dimension: (low,
+    high, provenance)}, deviations from nominal in SI."""
+    out = {}
+    for field, spec in _lookup("tolerances", key).items():
+        try:
+            low, high = float(spec["low"]), float(spec["high"])
+            entry = {"value": 0.0, **{k: spec[k] for k in ("unit", "kind", "ref")}}
+        except (KeyError, TypeError, ValueError):
+            raise ValueError(f"{field} = {spec!r} must be {{low, high, unit, kind, ref}}") from None
+        _, source = quantity(entry, field)
+        if not high >= low:
+            raise ValueError(f"{field}: high = {high!r} must be ≥ low = {low!r}")
+        out[field] = (to_si(low, spec["unit"]), to_si(high, spec["unit"]), source)
+    return out
+
+
+TABLES = (
+    "materials",
+    "lubricants",
+    "bearings",
+    "mountings",
+    "actuators",
+    "coefficients",
+    "tolerances",
+)
 
 
 def preload() -> None:

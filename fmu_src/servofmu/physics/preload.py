@@ -35,6 +35,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.optimize import brentq
 from scipy.optimize.elementwise import bracket_root, find_root
 
 from ._checks import (
@@ -143,6 +144,21 @@ def mean_offset(z, closure, k_loop, geom: RaceGeometry):
     z, closure = np.broadcast_arrays(np.asarray(z, float), np.asarray(closure, float))
     if np.isinf(k_loop):
         return 0.5 * closure
+    # The residual 2p + (F(p+z) + F(p−z))/(2k) − C rises with p (F is odd and non-decreasing),
+    # and is < 0 at lo and > 0 at hi below: both offsets ≤ 0 at lo, ≥ 0 at hi.
+    span = np.abs(z) + 1e-12
+    lo = np.minimum(0.0, 0.5 * closure) - span
+    hi = np.maximum(0.0, 0.5 * closure) + span
+    if z.shape == () and np.ndim(geom.clearance) == 0:  # one state: scalar Brent (per-step path)
+        zz, cc = float(z), float(closure)
+        return np.asarray(
+            brentq(
+                lambda p: float(_pair_residual(p, zz, cc, k_loop, geom)),
+                float(lo),
+                float(hi),
+                xtol=1e-16,
+            )
+        )
     shape = z.shape
     args = _geometry_args(geom, shape)
 
@@ -151,9 +167,6 @@ def mean_offset(z, closure, k_loop, geom: RaceGeometry):
             p, zz, cc, k_loop, _geometry_from_args(g, geom.n_balls, geom.compliance)
         )
 
-    span = np.abs(z) + 1e-12
-    lo = np.minimum(0.0, 0.5 * closure) - span
-    hi = np.maximum(0.0, 0.5 * closure) + span
     br = bracket_root(residual, lo, hi, args=(z, closure, *args))
     return find_root(residual, br.bracket, args=(z, closure, *args), tolerances={"xatol": 1e-16}).x
 
