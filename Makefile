@@ -5,7 +5,7 @@ BIN     = $(VENV)/bin
 STAMP   = $(VENV)/.installed-stamp
 OUT    ?= out
 
-.PHONY: run test bench lint clean
+.PHONY: run test test-long bench lint clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -22,6 +22,10 @@ run: $(STAMP)
 ## tests: lint, format check, test suite
 test: $(STAMP) lint
 	$(BIN)/python -m pytest
+
+## long mode: full-size fuzzing (10,000 cases per FMU) and soaks (1,000,000 steps); ~1 h
+test-long: $(STAMP) lint
+	$(BIN)/python -m pytest --long tests/test_robustness.py tests/test_archives.py
 
 lint: $(STAMP)
 	$(BIN)/ruff check .

@@ -18,9 +18,22 @@ def validate(path) -> list[str]:
     from fmpy import read_model_description
     from fmpy.validation import validate_fmu
 
+    from servofmu.harness import HarnessError
+    from servofmu.harness.archive import check_archive, read_member
+    from servofmu.harness.xmlsafe import parse
+
     path = Path(path)
     if not path.is_file():
         return [f"{path}: no such FMU"]
+    # the archive and its XML are checked safely before fmpy reads them (fmpy's parser would
+    # expand entities and read external ones)
+    unsafe = check_archive(path)
+    if unsafe:
+        return unsafe
+    try:
+        parse(read_member(path, "modelDescription.xml"), f"{path.name}/modelDescription.xml")
+    except HarnessError as exc:
+        return [str(exc)]
     problems = [f"fmpy: {p}" for p in validate_fmu(str(path))]
     try:
         md = read_model_description(str(path))

@@ -40,8 +40,12 @@ def check_member(info: zipfile.ZipInfo, archive: Path) -> PurePosixPath:
     return path
 
 
-def safe_extract(archive, dest, max_entries: int = MAX_ENTRIES, max_bytes: int = MAX_BYTES) -> Path:
-    """Unpack ``archive`` into ``dest`` (created) after checking every entry; returns dest."""
+def safe_extract(archive, dest, max_entries: int | None = None, max_bytes: int | None = None):
+    """Unpack ``archive`` into ``dest`` (created) after checking every entry; returns dest.
+    Limits default to :data:`MAX_ENTRIES` and :data:`MAX_BYTES` (read at call time). On a
+    refusal midway, what this call wrote is removed again."""
+    max_entries = MAX_ENTRIES if max_entries is None else max_entries
+    max_bytes = MAX_BYTES if max_bytes is None else max_bytes
     archive, dest = Path(archive), Path(dest)
     try:
         zf = zipfile.ZipFile(archive)
@@ -52,41 +56,81 @@ def safe_extract(archive, dest, max_entries: int = MAX_ENTRIES, max_bytes: int =
         if len(infos) > max_entries:
             raise ArchiveError(f"{archive.name}: {len(infos)} entries, more than {max_entries}")
         members = [(info, check_member(info, archive)) for info in infos]
+        created = not dest.exists()
         dest.mkdir(parents=True, exist_ok=True)
         root = dest.resolve()
+        written: list[Path] = []
         total = 0
-        for info, rel in members:
-            target = root.joinpath(*rel.parts)
-            if not target.resolve().is_relative_to(root):
-                raise ArchiveError(f"{archive.name}: entry {info.filename!r} leaves the folder")
-            if info.is_dir():
-                target.mkdir(parents=True, exist_ok=True)
-                continue
-            target.parent.mkdir(parents=True, exist_ok=True)
-            with zf.open(info) as src, open(target, "wb") as out:
-                while chunk := src.read(_CHUNK):
-                    total += len(chunk)
-                    if total > max_bytes:
-                        out.close()
-                        shutil.rmtree(dest, ignore_errors=True)
-                        raise ArchiveError(
-                            f"{archive.name}: unpacks to more than {max_bytes} bytes (stopped at "
-                            f"entry {info.filename!r}); refusing a possible zip bomb"
-                        )
-                    out.write(chunk)
+        try:
+            for info, rel in members:
+                target = root.joinpath(*rel.parts)
+                if not target.resolve().is_relative_to(root):
+                    raise ArchiveError(f"{archive.name}: entry {info.filename!r} leaves the folder")
+                if info.is_dir():
+                    target.mkdir(parents=True, exist_ok=True)
+                    continue
+                target.parent.mkdir(parents=True, exist_ok=True)
+                written.append(target)
+                with zf.open(info) as src, open(target, "wb") as out:
+                    while chunk := src.read(_CHUNK):
+                        total += len(chunk)
+                        if total > max_bytes:
+                            raise ArchiveError(
+                                f"{archive.name}: unpacks to more than {max_bytes} bytes "
+                                f"(stopped at entry {info.filename!r}); refusing a possible "
+                                "zip bomb"
+                            )
+                        out.write(chunk)
+        except (ArchiveError, zipfile.BadZipFile, OSError, EOFError) as exc:
+            if created:
+                shutil.rmtree(dest, ignore_errors=True)
+            else:  # a folder that was there: remove only what this call wrote
+                for f in written:
+                    f.unlink(missing_ok=True)
+            if isinstance(exc, ArchiveError):
+                raise
+            raise ArchiveError(f"{archive.name}: cannot be unpacked ({exc})") from None
     return dest
 
 
 def read_member(archive, name: str, max_bytes: int = 64 * 1024**2) -> bytes:
     """One entry of a zip (e.g. modelDescription.xml) after the same checks, size-bounded."""
     archive = Path(archive)
-    with zipfile.ZipFile(archive) as zf:
-        info = zf.getinfo(name)
-        check_member(info, archive)
-        data = bytearray()
-        with zf.open(info) as src:
-            while chunk := src.read(_CHUNK):
-                data += chunk
-                if len(data) > max_bytes:
-                    raise ArchiveError(f"{archive.name}: entry {name!r} is larger than {max_bytes}")
+    try:
+        with zipfile.ZipFile(archive) as zf:
+            try:
+                info = zf.getinfo(name)
+            except KeyError:
+                raise ArchiveError(f"{archive.name}: no {name}") from None
+            check_member(info, archive)
+            data = bytearray()
+            with zf.open(info) as src:
+                while chunk := src.read(_CHUNK):
+                    data += chunk
+                    if len(data) > max_bytes:
+                        raise ArchiveError(
+                            f"{archive.name}: entry {name!r} is larger than {max_bytes} bytes"
+                        )
+    except (zipfile.BadZipFile, OSError, EOFError) as exc:
+        raise ArchiveError(f"{archive}: not a readable zip archive ({exc})") from None
     return bytes(data)
+
+
+def check_archive(archive) -> list[str]:
+    """Every entry of ``archive`` that :func:`safe_extract` would refuse (empty: fine), without
+    unpacking anything."""
+    archive = Path(archive)
+    try:
+        with zipfile.ZipFile(archive) as zf:
+            infos = zf.infolist()
+    except (zipfile.BadZipFile, OSError) as exc:
+        return [f"{archive}: not a readable zip archive ({exc})"]
+    problems = []
+    if len(infos) > MAX_ENTRIES:
+        problems.append(f"{archive.name}: {len(infos)} entries, more than {MAX_ENTRIES}")
+    for info in infos:
+        try:
+            check_member(info, archive)
+        except ArchiveError as exc:
+            problems.append(str(exc))
+    return problems

@@ -211,6 +211,7 @@ def run(
     out_dir=None,
     progress: bool = True,
     fmu_dir=None,
+    output_interval: float | None = None,
 ) -> RunResult:
     """Co-simulate ``system`` (a :class:`System`, or a path for :func:`load_system`).
 
@@ -227,13 +228,14 @@ def run(
         its outputs at that time were computed from.
     out_dir : folder for ``results.csv`` (also written on failure, with the partial results)
     progress : show a progress bar when the run takes longer than two seconds
+    output_interval : keep a row every this many seconds (a multiple of the step; default
+        every step), and always the last one
     """
     own = not isinstance(system, System)
     sys_ = load_system(system, fmu_dir=fmu_dir) if own else system
     try:
-        return _run(
-            sys_, parameters, signals or {}, start, stop, step, algorithm, record, out_dir, progress
-        )
+        settings = _Settings(algorithm, record, out_dir, progress, output_interval)
+        return _run(sys_, parameters, signals or {}, start, stop, step, settings)
     finally:
         if own:
             sys_.close()
@@ -258,7 +260,19 @@ def _overrides(system: System, parameters) -> dict[str, object]:
     return out
 
 
-def _run(system, parameters, signals, start, stop, step, algorithm, record, out_dir, progress):
+@dataclass(frozen=True)
+class _Settings:
+    """How a run steps and what it keeps (see :func:`run`)."""
+
+    algorithm: str
+    record: list | None
+    out_dir: object
+    progress: bool
+    output_interval: float | None
+
+
+def _run(system, parameters, signals, start, stop, step, settings: _Settings):
+    algorithm = settings.algorithm
     if algorithm not in ALGORITHMS:
         raise HarnessError(f"algorithm = {algorithm!r} is not one of {list(ALGORITHMS)}")
     start = system.start_time if start is None else float(start)
@@ -268,6 +282,8 @@ def _run(system, parameters, signals, start, stop, step, algorithm, record, out_
         raise HarnessError(f"step = {h!r}: give a positive communication step (none in the SSD)")
     if not stop > start:
         raise HarnessError(f"stop = {stop!r} s must be after start = {start!r} s")
+    if settings.output_interval is not None and not settings.output_interval > 0:
+        raise HarnessError(f"output_interval = {settings.output_interval!r} s must be > 0")
     overrides = _overrides(system, parameters)
     connected = {c.end for c in system.connections}
     for target, sig in signals.items():
@@ -284,40 +300,16 @@ def _run(system, parameters, signals, start, stop, step, algorithm, record, out_
         for comp in system.components.values():  # FMUs unpacked once per loaded system
             units[comp.name] = _Unit(comp, system.unpacked(comp.fmu))
         return _simulate(
-            system,
-            units,
-            order,
-            overrides,
-            signals,
-            start,
-            h,
-            n_steps,
-            algorithm,
-            record,
-            out_dir,
-            progress,
-            t0_wall,
+            system, units, order, overrides, signals, start, h, n_steps, settings, t0_wall
         )
     finally:
         for u in units.values():
             u.close()
 
 
-def _simulate(
-    system,
-    units,
-    order,
-    overrides,
-    signals,
-    start,
-    h,
-    n_steps,
-    algorithm,
-    record,
-    out_dir,
-    progress,
-    t0_wall,
-):
+def _simulate(system, units, order, overrides, signals, start, h, n_steps, settings, t0_wall):
+    algorithm, record, out_dir = settings.algorithm, settings.record, settings.out_dir
+    progress, output_interval = settings.progress, settings.output_interval
     # --- what to record -----------------------------------------------------------------
     if record is None:
         record = [
@@ -386,7 +378,10 @@ def _simulate(
             raise HarnessError(
                 f"record {target!r}: only outputs and signal-driven inputs can be recorded"
             )
-    rows = np.empty((n_steps + 1, 1 + len(getters)))
+    every = max(1, round(output_interval / h)) if output_interval else 1
+    n_rows = n_steps // every + 1 + (1 if n_steps % every else 0)
+    rows = np.empty((n_rows, 1 + len(getters)))
+    stored = [-1]  # index of the last row written
     dtype = [("time", float)] + [(t, float) for t in record]
 
     def result(k, failed=False, message=""):
@@ -402,7 +397,7 @@ def _simulate(
             res.csv = res.to_csv(Path(out_dir) / "results.csv")
         return res
 
-    def fail(name, what, status, t, k):
+    def fail(name, what, status, t):
         u = units[name]
         label = STATUS[status] if 0 <= status < 6 else str(status)
         log = " | ".join(list(u.log)[-5:]) or "(no log message)"
@@ -410,13 +405,18 @@ def _simulate(
             f"component {name!r} ({u.comp.model_identifier}) returned fmi2{label} from {what} at "
             f"t = {t:.6g} s: {log}"
         )
-        res = result(k, True, message)
-        where = (
-            f"; results up to t = {res.data['time'][-1]:.6g} s in {res.csv}"
-            if res.csv and len(res.data)
-            else ""
+        res = result(stored[0], True, message)
+        details = "\n".join(
+            [message, ""] + [f"[{n}] {line}" for n, unit in units.items() for line in unit.log]
         )
-        raise HarnessError(message + where, result=res, details="\n".join(u.log))
+        where = ""
+        if out_dir is not None:
+            log_file = Path(out_dir) / "failure.log"
+            log_file.write_text(details + "\n")
+            where = f"; the FMUs' log in {log_file}"
+        if res.csv and len(res.data):
+            where += f"; results up to t = {res.data['time'][-1]:.6g} s in {res.csv}"
+        raise HarnessError(message + where, result=res, details=details)
 
     def read(name):
         u = units[name]
@@ -446,8 +446,9 @@ def _simulate(
             return u.set_real(u.c, u.in_vr, u.n_in, val)
         return 0
 
-    def store(k, t):
-        row = rows[k]
+    def store(t):
+        stored[0] += 1
+        row = rows[stored[0]]
         row[0] = t
         for j, (kind, ref) in enumerate(getters, start=1):
             if kind == "r":
@@ -472,26 +473,26 @@ def _simulate(
                 if cname == name:
                     _set_value(u.slave, u.comp.variables[vname], value)
         except FMICallException as exc:
-            fail(name, "initialization", exc.status if hasattr(exc, "status") else 3, start, -1)
+            fail(name, "initialization", exc.status if hasattr(exc, "status") else 3, start)
     for _ in range(2):  # settle chains of direct feedthrough
         for name in order:
             if (status := write_inputs(name, start)) > 1:
-                fail(name, "fmi2SetReal", status, start, -1)
+                fail(name, "fmi2SetReal", status, start)
             if (status := read(name)) > 1:
-                fail(name, "fmi2GetReal", status, start, -1)
+                fail(name, "fmi2GetReal", status, start)
     for name in order:
         try:
             units[name].slave.exitInitializationMode()
         except FMICallException as exc:
-            fail(name, "fmi2ExitInitializationMode", getattr(exc, "status", 3), start, -1)
+            fail(name, "fmi2ExitInitializationMode", getattr(exc, "status", 3), start)
         if units[name].log and any(m.startswith("[Error]") for m in units[name].log):
-            fail(name, "fmi2ExitInitializationMode", 3, start, -1)
+            fail(name, "fmi2ExitInitializationMode", 3, start)
     for name in order:
         if (status := write_inputs(name, start)) > 1:
-            fail(name, "fmi2SetReal", status, start, -1)
+            fail(name, "fmi2SetReal", status, start)
         if (status := read(name)) > 1:
-            fail(name, "fmi2GetReal", status, start, -1)
-    store(0, start)
+            fail(name, "fmi2GetReal", status, start)
+    store(start)
     # --- stepping -------------------------------------------------------------------------
     from tqdm import tqdm
 
@@ -505,25 +506,26 @@ def _simulate(
             if jacobi:
                 for name in order:
                     if (status := write_inputs(name, t)) > 1:
-                        fail(name, "fmi2SetReal", status, t, k)
+                        fail(name, "fmi2SetReal", status, t)
                 for name in order:
                     u = units[name]
                     if (status := u.do_step(u.c, t, h, 1)) > 1:
-                        fail(name, "fmi2DoStep", status, t, k)
+                        fail(name, "fmi2DoStep", status, t)
                 for name in order:
                     if (status := read(name)) > 1:
-                        fail(name, "fmi2GetReal", status, t, k)
+                        fail(name, "fmi2GetReal", status, t)
             else:
                 for name in order:
                     u = units[name]
                     if (status := write_inputs(name, t)) > 1:
-                        fail(name, "fmi2SetReal", status, t, k)
+                        fail(name, "fmi2SetReal", status, t)
                     if (status := u.do_step(u.c, t, h, 1)) > 1:
-                        fail(name, "fmi2DoStep", status, t, k)
+                        fail(name, "fmi2DoStep", status, t)
                     if (status := read(name)) > 1:
-                        fail(name, "fmi2GetReal", status, t, k)
-            store(k + 1, start + (k + 1) * h)
+                        fail(name, "fmi2GetReal", status, t)
+            if (k + 1) % every == 0 or k + 1 == n_steps:
+                store(start + (k + 1) * h)
             bar.update()
     finally:
         bar.close()
-    return result(n_steps)
+    return result(stored[0])

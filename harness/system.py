@@ -14,6 +14,7 @@ causality or type, a unit mismatch across a connection, a parameter the FMU does
 
 from __future__ import annotations
 
+import math
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -132,13 +133,22 @@ def _read_parameter_set(data: bytes, what: str) -> dict[str, tuple[str, object]]
             elem = p.find(f"ssv:{t}", NS)
             if elem is not None:
                 raw = elem.get("value")
-                value = {
-                    "Real": float,
-                    "Integer": int,
-                    "Boolean": lambda s: s.strip().lower() in ("true", "1"),
-                    "String": str,
-                    "Enumeration": str,
-                }[t](raw)
+                try:
+                    value = {
+                        "Real": float,
+                        "Integer": int,
+                        "Boolean": lambda s: s.strip().lower() in ("true", "1"),
+                        "String": str,
+                        "Enumeration": str,
+                    }[t](raw)
+                except (TypeError, ValueError):
+                    raise SystemError_(
+                        [f"{what}: parameter {p.get('name')!r}: {raw!r} is not a {t} value"]
+                    ) from None
+                if t == "Real" and not math.isfinite(value):
+                    raise SystemError_(
+                        [f"{what}: parameter {p.get('name')!r}: {raw!r} is not finite"]
+                    )
                 values[p.get("name")] = (t, value)
                 break
     return values
@@ -259,6 +269,7 @@ def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
 def _check(system: System) -> list[str]:
     """Every problem of a parsed system against its FMUs."""
     problems = []
+    unreadable = set()  # components whose FMU could not be read: no further checks on them
     for comp in system.components.values():
         if comp.fmu is None:
             continue
@@ -267,7 +278,9 @@ def _check(system: System) -> list[str]:
                 comp.fmu
             )
         except HarnessError as exc:
-            problems.append(f"component {comp.name!r}: {exc}")
+            details = exc.problems if isinstance(exc, SystemError_) else [str(exc)]
+            problems += [f"component {comp.name!r}: {d}" for d in details]
+            unreadable.add(comp.name)
             continue
         for name, (kind, ctype, unit) in comp.connectors.items():
             v = comp.variables.get(name)
@@ -308,7 +321,7 @@ def _check(system: System) -> list[str]:
                 ends.append(None)
                 continue
             v = comp.variables.get(vname) if comp.variables else None
-            if comp.fmu is not None and v is None:
+            if comp.fmu is not None and v is None and cname not in unreadable:
                 problems.append(
                     f"connection {cname}.{vname} ({role}): the FMU has no variable {vname!r}"
                 )

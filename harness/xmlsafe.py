@@ -29,6 +29,8 @@ class XMLError(SystemError_):
 def parse(data: bytes, what: str) -> etree._Element:
     """Parse ``data`` safely; documents with a DOCTYPE are refused (FMI and SSP use none, and a
     DTD is how entity-expansion and external-entity attacks get in)."""
+    if b"<!DOCTYPE" in data or "<!DOCTYPE".encode("utf-16-le") in data:
+        raise XMLError(f"{what}: a DOCTYPE/DTD is not allowed (entity expansion is refused)")
     try:
         tree = etree.fromstring(data, parser=_PARSER).getroottree()
     except etree.XMLSyntaxError as exc:

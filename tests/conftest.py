@@ -26,3 +26,17 @@ def fmus(tmp_path_factory):
 
     out = tmp_path_factory.mktemp("fmus")
     return {p.stem: p for p in build_all(out, FMUS)}
+
+
+def pytest_addoption(parser):
+    parser.addoption(
+        "--long",
+        action="store_true",
+        help="full sizes of the robustness tests (10,000 fuzz cases per FMU, 1,000,000-step "
+        "soaks): `make test-long`",
+    )
+
+
+@pytest.fixture(scope="session")
+def long_mode(request) -> bool:
+    return bool(request.config.getoption("--long"))

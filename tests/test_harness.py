@@ -319,6 +319,9 @@ def test_failing_fmu_stops_the_run_and_keeps_the_results(tmp_path, out):
     on_disk = np.genfromtxt(tmp_path / "results.csv", delimiter=",", names=True)
     assert on_disk["time"][-1] == pytest.approx(t_fail)
     assert np.all(on_disk["bearingtemperature"] <= 473.15)
+    assert "\n" not in str(err)  # one line for the user ...
+    log = (tmp_path / "failure.log").read_text()  # ... the detail in a log
+    assert str(tmp_path / "failure.log") in str(err) and "[bearing]" in log
 
 
 def test_bad_run_arguments(out):
@@ -381,3 +384,43 @@ def test_cli_scenario_prints_its_table(tmp_path, out, capsys, monkeypatch):
     text = capsys.readouterr().out
     assert "EMA stiffness test" in text and "vs Liu" in text
     assert (tmp_path / "stiffness_test.csv").is_file()
+
+
+def test_output_interval_keeps_every_kth_row_and_the_last(out):
+    system = load_system(out / "seeker_gimbal.ssp")
+    try:
+        full = run(system, stop=0.0105, step=5e-4, record=["motor.speed"], progress=False)
+        thin = run(
+            system,
+            stop=0.0105,
+            step=5e-4,
+            record=["motor.speed"],
+            progress=False,
+            output_interval=2e-3,
+        )
+        with pytest.raises(HarnessError, match="output_interval = -1"):
+            run(system, stop=0.01, output_interval=-1.0)
+    finally:
+        system.close()
+    assert thin["time"] == pytest.approx([0.0, 0.002, 0.004, 0.006, 0.008, 0.010, 0.0105])
+    picked = np.searchsorted(full["time"], thin["time"] - 1e-12)
+    assert np.array_equal(thin["motor.speed"], full["motor.speed"][picked])
+
+
+def test_cli_internal_error_is_one_line_with_the_traceback_in_a_log(monkeypatch, capsys):
+    import tempfile
+    from pathlib import Path
+
+    from servofmu import cli
+
+    def broken(args):
+        raise RuntimeError("something unforeseen")
+
+    monkeypatch.setattr(cli, "_host_env", broken)
+    assert cli.main(["host-env"]) == 3
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "RuntimeError: something unforeseen" in err
+    log = Path(tempfile.gettempdir()) / "servofmu-error.log"
+    assert "Traceback" in log.read_text() and "broken" in log.read_text()
+    with pytest.raises(RuntimeError):
+        cli.main(["--debug", "host-env"])

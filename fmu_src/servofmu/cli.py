@@ -115,6 +115,7 @@ def _run(args) -> int:
             algorithm=args.algorithm,
             record=args.record or None,
             out_dir=out,
+            output_interval=args.output_interval,
         )
     except HarnessError as exc:
         print(f"servofmu: run failed: {exc}", file=sys.stderr)
@@ -324,6 +325,9 @@ def build_parser() -> argparse.ArgumentParser:
         prog="servofmu", description="Temperature-aware servo-mechanism physics and FMUs."
     )
     parser.add_argument("--version", action="version", version=f"servofmu {__version__}")
+    parser.add_argument(
+        "--debug", action="store_true", help="show the traceback of an internal error"
+    )
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser(
         "paper",
@@ -366,6 +370,9 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--stop", type=float, help="stop time [s] (default: the SSD's)")
     r.add_argument("--step", type=float, help="communication step [s] (default: the SSD's)")
     r.add_argument("--algorithm", choices=("gauss-seidel", "jacobi"), default="gauss-seidel")
+    r.add_argument(
+        "--output-interval", type=float, help="keep a row every this many seconds (default: all)"
+    )
     r.add_argument(
         "--record", action="append", default=[], metavar="comp.var", help="record only these"
     )
@@ -470,12 +477,36 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Exit codes: 0 done, 1 a run failed (partial results kept), 2 bad input (data,
+    arguments, system description), 3 an internal error (traceback in a log file)."""
+    from .harness.errors import HarnessError, SystemError_
+
     args = build_parser().parse_args(argv)
     try:
         return args.func(args)
-    except ValueError as exc:
+    except SystemError_ as exc:  # every problem of the description, one per line
         print(f"servofmu: error: {exc}", file=sys.stderr)
         return 2
+    except HarnessError as exc:
+        print(f"servofmu: run failed: {exc}", file=sys.stderr)
+        return 1
+    except (ValueError, OSError) as exc:
+        print(f"servofmu: error: {exc}", file=sys.stderr)
+        return 2
+    except Exception as exc:
+        if args.debug:
+            raise
+        import tempfile
+        import traceback
+
+        log = Path(tempfile.gettempdir()) / "servofmu-error.log"
+        log.write_text(traceback.format_exc())
+        print(
+            f"servofmu: internal error: {type(exc).__name__}: {exc} (traceback in {log}; "
+            "run again with --debug to see it here)",
+            file=sys.stderr,
+        )
+        return 3
 
 
 if __name__ == "__main__":  # pragma: no cover

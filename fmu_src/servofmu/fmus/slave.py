@@ -303,6 +303,14 @@ class ServoSlave(Fmi2Slave):
 
     def do_step(self, current_time: float, step_size: float) -> bool:
         try:
+            if not (math.isfinite(current_time) and math.isfinite(step_size) and step_size >= 0):
+                self._error = (
+                    f"fmi2DoStep(currentCommunicationPoint = {current_time!r}, "
+                    f"communicationStepSize = {step_size!r}): the point must be finite and the "
+                    "step size finite and ≥ 0"
+                )
+                self._report(Fmi2Status.discard)
+                return False
             if not (self._configured or self._ensure_configured()):
                 self._report(Fmi2Status.discard)
                 return False
@@ -313,8 +321,8 @@ class ServoSlave(Fmi2Slave):
                 if bad:
                     self._error = bad
                     ok = False
-                else:
-                    ok = self.advance(current_time, step_size)
+                else:  # a zero step advances nothing (the outputs stay those at the point)
+                    ok = step_size == 0.0 or self.advance(current_time, step_size)
             if not ok:
                 self._report(Fmi2Status.discard)
             return ok

@@ -257,10 +257,17 @@ def linkage_rotation(act: Actuator, output_angle, load_torque) -> np.ndarray:
     return np.abs(d_theta1) * np.sign(m) + torsion + bending
 
 
+#: Smallest hinge moment [N·m] whose linkage rotation eq 14–16 resolve: below it the closure
+#: of the two circles loses its digits (at 1e-12 N·m K_rod came out 14× too small, found by the
+#: FMU fuzzing), and the secant at this moment is used; K_rod is linear in M to 1e-5.
+SMALLEST_MOMENT = 1.0e-3
+
+
 def linkage_stiffness(act: Actuator, output_angle, load_torque):
-    """K_rod = M/Δθ [N·m/rad] (Liu 2014 eq 20); at M = 0 the limit for a small moment."""
+    """K_rod = M/Δθ [N·m/rad] (Liu 2014 eq 20); for |M| below :data:`SMALLEST_MOMENT`
+    (M = 0 included) the secant at that moment, with the sign of M."""
     m = np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float)
-    probe = np.where(m == 0.0, 1.0, m)
+    probe = np.where(np.abs(m) < SMALLEST_MOMENT, np.copysign(SMALLEST_MOMENT, m), m)
     return probe / linkage_rotation(act, output_angle, probe)
 
 

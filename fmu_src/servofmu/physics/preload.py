@@ -112,11 +112,19 @@ class PreloadLoop:
         return 1.0 / compliance if compliance > 0 else np.inf
 
 
+#: Smallest loop stiffness [N/m] accepted: below it the loop carries no preload worth the
+#: name, and the compatibility residual F/k overflows (5e-324 N/m did, in the FMU fuzzing).
+SMALLEST_LOOP_STIFFNESS = 1.0
+
+
 def check_loop_stiffness(value) -> float:
-    """Loop stiffness [N/m]: > 0, with +inf meaning a rigid loop."""
+    """Loop stiffness [N/m]: ≥ 1 N/m, with +inf meaning a rigid loop."""
     k = float(value)
-    if not k > 0:
-        raise ValueError(f"loop_stiffness = {k!r} N/m is outside the valid range (0, inf]")
+    if not k >= SMALLEST_LOOP_STIFFNESS:
+        raise ValueError(
+            f"loop_stiffness = {k!r} N/m is outside the valid range "
+            f"[{SMALLEST_LOOP_STIFFNESS:g}, inf]"
+        )
     return k
 
 

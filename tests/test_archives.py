@@ -1,0 +1,194 @@
+"""Crafted archives and XML against the harness and `servofmu validate` (issue 7): entries
+with absolute paths, `..`, backslashes, drive letters or links, too many entries, a zip bomb,
+billion laughs, external entities; each refused with a clear message, nothing written
+outside the target folder, no entity expanded or external file read."""
+
+from __future__ import annotations
+
+import shutil
+import stat
+import zipfile
+
+import pytest
+
+from servofmu.build.ssp import SSP_DIR
+from servofmu.harness import HarnessError, SystemError_, load_system, run
+from servofmu.harness import archive as archive_module
+from servofmu.harness.archive import ArchiveError, check_archive, safe_extract
+
+SECRET = "top-secret-3141592653"
+
+
+@pytest.fixture(scope="module")
+def out(fmus):
+    return fmus["BearingFriction"].parent
+
+
+def _zip(path, entries, link=None):
+    """A zip with {name: bytes} entries (and a symbolic-link entry ``link`` = (name, target))."""
+    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as zf:
+        for name, data in entries.items():
+            zf.writestr(name, data)
+        if link:
+            info = zipfile.ZipInfo(link[0])
+            info.external_attr = (stat.S_IFLNK | 0o777) << 16
+            zf.writestr(info, link[1])
+    return path
+
+
+def _system_entries(name="seeker_gimbal"):
+    return {
+        f.relative_to(SSP_DIR / name).as_posix(): f.read_bytes()
+        for f in (SSP_DIR / name).rglob("*")
+        if f.is_file() and f.suffix in (".ssd", ".ssv")
+    }
+
+
+@pytest.mark.parametrize(
+    "entry, message",
+    [
+        ("/tmp/servofmu_evil.txt", "absolute path"),
+        ("../servofmu_evil.txt", "leaves the archive"),
+        ("resources/../../servofmu_evil.txt", "leaves the archive"),
+        ("..\\servofmu_evil.txt", "backslash"),
+        ("C:servofmu_evil.txt", "absolute path"),
+    ],
+)
+def test_path_traversal_entries_are_refused(tmp_path, entry, message):
+    bad = _zip(tmp_path / "evil.ssp", {**_system_entries(), entry: b"pwned"})
+    target = tmp_path / "deep" / "target"
+    with pytest.raises(ArchiveError, match=message):
+        safe_extract(bad, target)
+    with pytest.raises(ArchiveError, match=message):
+        load_system(bad)
+    assert not list(tmp_path.rglob("servofmu_evil.txt"))
+    assert not target.exists()  # nothing half-unpacked is left
+    assert check_archive(bad)  # `servofmu validate` sees it without unpacking
+
+
+def test_symbolic_link_entry_is_refused(tmp_path):
+    bad = _zip(tmp_path / "link.ssp", _system_entries(), link=("resources/x", "/etc/passwd"))
+    with pytest.raises(ArchiveError, match="symbolic link"):
+        load_system(bad)
+
+
+def test_zip_bomb_and_entry_count_are_bounded(tmp_path, monkeypatch):
+    bomb = _zip(tmp_path / "bomb.ssp", {**_system_entries(), "resources/zeros": bytes(8 << 20)})
+    assert bomb.stat().st_size < 100_000  # 8 MiB of zeros packs small
+    monkeypatch.setattr(archive_module, "MAX_BYTES", 1 << 20)
+    with pytest.raises(ArchiveError, match="zip bomb"):
+        load_system(bomb)
+    many = _zip(tmp_path / "many.ssp", {f"f{i}": b"" for i in range(50)})
+    monkeypatch.setattr(archive_module, "MAX_ENTRIES", 20)
+    with pytest.raises(ArchiveError, match="50 entries, more than 20"):
+        safe_extract(many, tmp_path / "m")
+    existing = tmp_path / "existing"
+    existing.mkdir()
+    (existing / "keep.txt").write_text("mine")
+    monkeypatch.setattr(archive_module, "MAX_ENTRIES", 10_000)
+    with pytest.raises(ArchiveError):
+        safe_extract(bomb, existing)
+    assert (existing / "keep.txt").read_text() == "mine"  # a refused unpack removes only its own
+
+
+def test_not_a_zip(tmp_path):
+    junk = tmp_path / "junk.ssp"
+    junk.write_bytes(b"PK\x03\x04 not really")
+    with pytest.raises(ArchiveError, match="not a readable zip"):
+        load_system(junk)
+
+
+BILLION_LAUGHS = b"""<?xml version="1.0"?>
+<!DOCTYPE lolz [
+ <!ENTITY lol "lol">
+ <!ENTITY lol2 "&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;">
+ <!ENTITY lol3 "&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;">
+ <!ENTITY lol4 "&lol3;&lol3;&lol3;&lol3;&lol3;&lol3;&lol3;&lol3;&lol3;&lol3;">
+ <!ENTITY lol9 "&lol4;&lol4;&lol4;&lol4;&lol4;&lol4;&lol4;&lol4;&lol4;&lol4;">
+]>
+<ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription"
+  version="1.0" name="&lol9;"><ssd:System name="s"/></ssd:SystemStructureDescription>
+"""
+
+
+def _external_entity(secret_file) -> bytes:
+    return f"""<?xml version="1.0"?>
+<!DOCTYPE x [ <!ENTITY xxe SYSTEM "file://{secret_file}"> ]>
+<ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription"
+  version="1.0" name="&xxe;"><ssd:System name="s"/></ssd:SystemStructureDescription>
+""".encode()
+
+
+@pytest.mark.parametrize("kind", ["billion_laughs", "external_entity"])
+def test_entity_attacks_in_the_ssd_are_refused(tmp_path, kind):
+    secret = tmp_path / "secret.txt"
+    secret.write_text(SECRET)
+    xml = BILLION_LAUGHS if kind == "billion_laughs" else _external_entity(secret)
+    bad = _zip(tmp_path / "x.ssp", {**_system_entries(), "SystemStructure.ssd": xml})
+    with pytest.raises(SystemError_, match="DOCTYPE/DTD is not allowed") as info:
+        load_system(bad)
+    assert SECRET not in str(info.value) and "lollol" not in str(info.value)
+
+
+def test_external_entity_in_a_parameter_set_is_refused(tmp_path, out):
+    secret = tmp_path / "secret.txt"
+    secret.write_text(SECRET)
+    folder = tmp_path / "seeker_gimbal"
+    shutil.copytree(SSP_DIR / "seeker_gimbal", folder)
+    ssv = folder / "bearing.ssv"
+    text = ssv.read_text().replace(
+        '<?xml version="1.0" encoding="UTF-8"?>',
+        f'<?xml version="1.0" encoding="UTF-8"?>\n<!DOCTYPE x [ <!ENTITY e SYSTEM '
+        f'"file://{secret}"> ]>',
+    )
+    ssv.write_text(text.replace('value="krytox_143aa"', 'value="&e;"'))
+    with pytest.raises(SystemError_, match=r"bearing\.ssv: a DOCTYPE/DTD") as info:
+        run(folder, fmu_dir=out, stop=0.01)
+    assert SECRET not in str(info.value)
+
+
+def _fmu_with_model_description(tmp_path, source_fmu, xml: bytes):
+    target = tmp_path / source_fmu.name
+    with zipfile.ZipFile(source_fmu) as src, zipfile.ZipFile(target, "w") as dst:
+        for item in src.infolist():
+            data = xml if item.filename == "modelDescription.xml" else src.read(item)
+            dst.writestr(item, data)
+    return target
+
+
+def test_fmu_with_an_entity_attack_is_refused_by_the_harness_and_validate(tmp_path, out, capsys):
+    from servofmu.cli import main
+
+    secret = tmp_path / "secret.txt"
+    secret.write_text(SECRET)
+    md = (
+        f'<?xml version="1.0"?>\n<!DOCTYPE f [ <!ENTITY e SYSTEM "file://{secret}"> ]>\n'
+        '<fmiModelDescription fmiVersion="2.0" modelName="&e;" guid="x"/>'
+    ).encode()
+    fmu_dir = tmp_path / "fmus"
+    fmu_dir.mkdir()
+    for f in out.glob("*.fmu"):
+        shutil.copy(f, fmu_dir)
+    evil = _fmu_with_model_description(fmu_dir, out / "BearingFriction.fmu", md)
+    with pytest.raises(SystemError_, match="DOCTYPE/DTD is not allowed"):
+        load_system(SSP_DIR / "seeker_gimbal", fmu_dir=fmu_dir)
+    assert main(["validate", str(evil)]) == 1
+    printed = capsys.readouterr().out
+    assert "DOCTYPE/DTD is not allowed" in printed and SECRET not in printed
+
+
+def test_fmu_with_a_traversal_entry_is_refused_before_instantiation(tmp_path, out):
+    fmu_dir = tmp_path / "fmus"
+    fmu_dir.mkdir()
+    for f in out.glob("*.fmu"):
+        shutil.copy(f, fmu_dir)
+    target = fmu_dir / "DCMotor.fmu"
+    with zipfile.ZipFile(target, "a") as zf:
+        zf.writestr("resources/../../../servofmu_evil.txt", b"pwned")
+    system = load_system(SSP_DIR / "seeker_gimbal", fmu_dir=fmu_dir)  # reads only the XML
+    try:
+        with pytest.raises(HarnessError, match="leaves the archive"):
+            run(system, stop=0.01)
+    finally:
+        system.close()
+    assert not list(tmp_path.rglob("servofmu_evil.txt"))
