@@ -255,9 +255,33 @@ def _overrides(system: System, parameters) -> dict[str, object]:
             out.update({k: v for k, (_, v) in system.variants[item].items()})
         else:
             out.update(item)
-    for target in out:
-        system.variable(target)
+    for target, value in out.items():
+        _, var = system.variable(target)
+        out[target] = _typed(target, var, value)
     return out
+
+
+def _typed(target: str, var, value):
+    """``value`` (text from a command line, or a Python value) as the type of ``var``."""
+    try:
+        if var.type == "Real":
+            x = float(value)
+            if x != x or x in (float("inf"), float("-inf")):
+                raise ValueError
+            return x
+        if var.type in ("Integer", "Enumeration"):
+            return int(value)
+        if var.type == "Boolean":
+            if isinstance(value, str):
+                if value.strip().lower() not in ("true", "false", "1", "0"):
+                    raise ValueError
+                return value.strip().lower() in ("true", "1")
+            return bool(value)
+        return str(value)
+    except (TypeError, ValueError):
+        raise HarnessError(
+            f"parameter {target} = {value!r} is not a finite {var.type} value"
+        ) from None
 
 
 @dataclass(frozen=True)

@@ -43,8 +43,12 @@ def tolerance_points(mounting: str, samples: int, seed: int) -> list[dict]:
         bore = d.pop("housing_bore") - mids["housing_bore"]
         d["outer_interference"] = nominal["outer_interference"] + ring - bore
         d["shim"] = nominal["shim"] + d["shim"] - mids["shim"]
-    grid = grid_points({"temperature": [celsius_to_kelvin(t) for t in TEMPS_C], "speed": [SPEED]})
-    return cross(draws, grid)
+    return cross(draws, _grid())
+
+
+def _grid() -> list[dict]:
+    """The temperatures of :data:`TEMPS_C` at :data:`SPEED`."""
+    return grid_points({"temperature": [celsius_to_kelvin(t) for t in TEMPS_C], "speed": [SPEED]})
 
 
 def run(
@@ -66,9 +70,7 @@ def run(
     runs_file = sweep.write(out / "runs.csv")
     temps = np.array([p["temperature"] for p in points])
     torque, seized = sweep.column("running_torque"), sweep.column("seized")
-    nominal = ModelTask(base, OUTPUTS)(
-        grid_points({"temperature": [celsius_to_kelvin(t) for t in TEMPS_C], "speed": [SPEED]})
-    )
+    nominal = ModelTask(base, OUTPUTS)(_grid())
     rows = []
     for k, t_c in enumerate(TEMPS_C):
         sel = np.isclose(temps, celsius_to_kelvin(t_c)) & np.isfinite(torque)

@@ -223,6 +223,10 @@ def test_unknown_override_variant_and_signal_targets(out, no_instantiation):
             run(system, parameters="arctic", stop=0.01)
         with pytest.raises(HarnessError, match="only unconnected inputs"):
             run(system, signals={"motor.voltage": Steps((0.0,), (1.0,))}, stop=0.01)
+        with pytest.raises(HarnessError, match=r"bearing\.temperature = 'warm' is not a finite"):
+            run(system, parameters={"bearing.temperature": "warm"}, stop=0.01)
+        with pytest.raises(HarnessError, match=r"motor\.inertia = 'nan' is not a finite Real"):
+            run(system, parameters={"motor.inertia": "nan"}, stop=0.01)
     finally:
         system.close()
 
@@ -346,6 +350,8 @@ def test_cli_run_writes_results_and_reports_failures(tmp_path, out, capsys):
             "warm",
             "--parameters",
             "controller.kp=3",
+            "--parameters",
+            "bearing.bearing=71803",  # a String parameter stays text
             "--signal",
             f"bearing.temperature={profile}:T",
             "--stop",

@@ -64,19 +64,42 @@ def _system_path(arg: str) -> tuple[Path, Path | None]:
     raise ValueError(f"system = {arg!r}: no such file or folder, nor one of {names}")
 
 
+def _value(text: str):
+    """A float when the text reads as one, else the text (catalogue keys)."""
+    try:
+        return float(text)
+    except ValueError:
+        return text.strip()
+
+
+def _set_known(params: dict, items: list[str]) -> dict:
+    """Apply --set NAME=VALUE items to ``params``: NAME must be one of its keys; the value is
+    text where the parameter is text, else a number."""
+    for item in items:
+        key, sep, text = item.partition("=")
+        key = key.strip()
+        if not sep or key not in params:
+            raise ValueError(f"--set {item!r}: write NAME=VALUE with NAME one of {list(params)}")
+        if isinstance(params[key], str):  # a catalogue key stays text, even "71803"
+            params[key] = text.strip()
+            continue
+        value = _value(text)
+        if isinstance(value, str):
+            raise ValueError(f"--set {item!r}: {key} takes a number")
+        params[key] = value
+    return params
+
+
 def _parameters(items: list[str]) -> list:
-    """--parameters values: a variant name, or comp.var=value (a float when it reads as one)."""
+    """--parameters values: a variant name, or comp.var=value (text: the harness converts it
+    to the variable's type)."""
     out = []
     for item in items:
         if "=" not in item:
             out.append(item)
             continue
         target, _, text = item.partition("=")
-        try:
-            value: object = float(text)
-        except ValueError:
-            value = text
-        out.append({target.strip(): value})
+        out.append({target.strip(): text.strip()})
     return out
 
 
@@ -174,12 +197,7 @@ def _calibrate(args) -> int:
         params["bearing"] = args.bearing
     if args.lubricant:
         params["lubricant"] = args.lubricant
-    for item in args.set:
-        key, sep, text = item.partition("=")
-        key = key.strip()
-        if not sep or key not in params:
-            raise ValueError(f"--set {item!r}: write NAME=VALUE with NAME one of {list(params)}")
-        params[key] = text.strip() if isinstance(params[key], str) else float(text)
+    _set_known(params, args.set)
     speed = parse_quantity(args.speed, "speed") if args.speed else None
     unknowns = (
         [u.strip() for u in args.fit.split(",") if u.strip()]
@@ -207,14 +225,6 @@ def _calibrate(args) -> int:
         print(text)
         print("\n".join(f"file: {f}" for f in [out / "report.txt", *files]))
     return 0
-
-
-def _value(text: str):
-    """A float when the text reads as one, else the text (catalogue keys)."""
-    try:
-        return float(text)
-    except ValueError:
-        return text.strip()
 
 
 def _axis(item: str) -> tuple[str, list]:
@@ -272,12 +282,7 @@ def _sweep(args) -> int:
     if not points:
         raise ValueError("give at least one --grid or --sample")
     if args.target == "model":
-        base = default_parameters(args.mounting, args.lubrication)
-        for item in args.set:
-            key, sep, text = item.partition("=")
-            if not sep or key.strip() not in base:
-                raise ValueError(f"--set {item!r}: write NAME=VALUE, NAME one of {list(base)}")
-            base[key.strip()] = _value(text) if isinstance(base[key.strip()], str) else float(text)
+        base = _set_known(default_parameters(args.mounting, args.lubrication), args.set)
         task = ModelTask(base, tuple(args.record)) if args.record else ModelTask(base)
     else:
         if args.set or not args.record:
