@@ -219,7 +219,6 @@ class SystemTask:
             system.variable(name)
 
     def __call__(self, points: Sequence[dict]) -> list[dict]:
-        from servofmu.harness import HarnessError
         from servofmu.harness import run as run_system
 
         system = _system(self.digest, self.ssp)
@@ -241,26 +240,25 @@ class SystemTask:
                 for name in self.record:
                     row[name] = float(np.mean(res[name][start:]))
                 rows.append(row)
-            except HarnessError as exc:
-                rows.append(_failed(p, exc))
-            except Exception as exc:
+            except Exception as exc:  # a HarnessError or anything else: this run fails alone
                 rows.append(_failed(p, exc))
         return rows
 
 
-_SYSTEMS: dict[str, object] = {}  # per worker process: digest → loaded System
+_SYSTEMS: dict[str, tuple] = {}  # per process: digest → (loaded System, its temp folder)
 
 
 def _system(digest: str, data: bytes):
-    """The system of archive ``data``, loaded once per process (unpacked to a temp folder)."""
+    """The system of archive ``data``, loaded once per process (the archive in a temporary
+    folder that is removed when the process ends)."""
     from servofmu.harness import load_system
 
     if digest not in _SYSTEMS:
-        folder = Path(tempfile.mkdtemp(prefix="servofmu_sweep_"))
-        archive = folder / f"{digest}.ssp"
+        folder = tempfile.TemporaryDirectory(prefix="servofmu_sweep_")
+        archive = Path(folder.name) / f"{digest}.ssp"
         archive.write_bytes(data)
-        _SYSTEMS[digest] = load_system(archive)
-    return _SYSTEMS[digest]
+        _SYSTEMS[digest] = (load_system(archive), folder)
+    return _SYSTEMS[digest][0]
 
 
 def _failed(point: dict, exc: BaseException) -> dict:
