@@ -345,6 +345,13 @@ def stiffness_breakdown(
     )
 
 
+#: Screw force [N] below which the support pair's secant F3/Δz is replaced by its tangent
+#: stiffness (the limit): Δz is solved to 1e-16 m, so a few-pN force has no digits left, and
+#: 5e-324 N·m of hinge moment divided by zero (found by the FMU fuzzing). At 1 N the secant
+#: and the tangent of a 200 N-preloaded pair agree to 1e-3.
+SMALLEST_SCREW_FORCE = 1.0
+
+
 @functools.lru_cache(maxsize=8)
 def _support_pair(mounting: str):
     from .bearing import BearingPair
@@ -357,8 +364,8 @@ def support_axial_stiffness(act: Actuator, screw_force, temperature):
     F3 [N] at temperature T [K], in series with the seat stiffness (this project's extension
     of Liu 2014: the Hertzian element that makes the stiffness rise with load). Δz is the
     shaft displacement of the preloaded pair from its unloaded state (general geometry,
-    :func:`preload.pair_offsets`); at F3 = 0 the tangent stiffness. inf when the actuator has
-    no support mounting."""
+    :func:`preload.pair_offsets`); below :data:`SMALLEST_SCREW_FORCE` the tangent stiffness
+    (its limit). inf when the actuator has no support mounting."""
     f3, t = np.broadcast_arrays(
         np.asarray(check_finite("screw_force", screw_force, "N"), dtype=float),
         np.asarray(check_temperature("temperature", temperature), dtype=float),
@@ -373,8 +380,8 @@ def support_axial_stiffness(act: Actuator, screw_force, temperature):
     off = pair_offsets(th.geometry, th.closure, th.loop_stiffness, f3)
     dz = 0.5 * (off.offset_a - off.offset_b)
     tangent = axial_load_state(pair, th, th.preload_offset, th.preload_offset).axial_stiffness
-    with np.errstate(invalid="ignore", divide="ignore"):
-        bearing = np.where(f3 > 0, f3 / np.where(dz > 0, dz, 1.0), tangent)
+    secant = (f3 >= SMALLEST_SCREW_FORCE) & (dz > 0)
+    bearing = np.where(secant, f3 / np.where(secant, dz, 1.0), tangent)
     return series_stiffness(bearing, act.seat_stiffness)
 
 
@@ -405,7 +412,8 @@ class ActuatorModel:
         if self._bearings is None:
             return np.inf
         out = self._bearings.evaluate(t, 0.0, f3)
-        bearing = f3 / out.axial_displacement if f3 > 0 else out.axial_stiffness
+        secant = f3 >= SMALLEST_SCREW_FORCE and out.axial_displacement > 0
+        bearing = f3 / out.axial_displacement if secant else out.axial_stiffness
         return float(series_stiffness(bearing, self.act.seat_stiffness))
 
     def evaluate(self, output_angle: float, load_torque: float, temperature: float):
