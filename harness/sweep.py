@@ -146,7 +146,7 @@ class ModelTask:
                 )
 
     def __call__(self, points: Sequence[dict]) -> list[dict]:
-        from servofmu.physics.bearing import bearing_outputs, load_state, thermal_state
+        from servofmu.physics.bearing import operating_outputs
         from servofmu.physics.bearing_parameters import pair_from_parameters
 
         rows: list[dict | None] = [None] * len(points)
@@ -165,9 +165,8 @@ class ModelTask:
             inputs = {n: np.array([points[i].get(n, d) for i in idx]) for n, d in INPUTS.items()}
             if not np.any(inputs["radial_load"] != 0.0):  # vectorised over the group
                 try:
-                    th = thermal_state(pair, inputs["temperature"])
-                    out = bearing_outputs(
-                        pair, th, load_state(pair, th, inputs["axial_load"]), inputs["speed"]
+                    out = operating_outputs(
+                        pair, inputs["temperature"], inputs["speed"], inputs["axial_load"]
                     )
                     values = {
                         o: np.broadcast_to(getattr(out, o), (len(idx),)) for o in self.outputs
@@ -182,12 +181,16 @@ class ModelTask:
         return rows
 
     def _one(self, pair, inputs, point):
-        from servofmu.physics.bearing import bearing_outputs, load_state, thermal_state
+        from servofmu.physics.bearing import operating_outputs
 
         try:
-            th = thermal_state(pair, inputs["temperature"])
-            ls = load_state(pair, th, inputs["axial_load"], inputs["radial_load"])
-            out = bearing_outputs(pair, th, ls, inputs["speed"])
+            out = operating_outputs(
+                pair,
+                inputs["temperature"],
+                inputs["speed"],
+                inputs["axial_load"],
+                inputs["radial_load"],
+            )
             return {**point, **{o: _plain(np.asarray(getattr(out, o))[()]) for o in self.outputs}}
         except Exception as exc:
             return _failed(point, exc)

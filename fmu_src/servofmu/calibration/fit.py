@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import least_squares
 
-from ..physics.bearing import bearing_outputs, load_state, thermal_state
+from ..physics.bearing import operating_outputs
 from ..physics.bearing_parameters import PARAMETER_NAMES, pair_from_parameters
 from ..physics.units import DEG
 from .measurements import FrictionMeasurements
@@ -94,11 +94,17 @@ def running_torque(parameters: Mapping[str, object], temperature, speed) -> np.n
     :data:`~servofmu.physics.bearing_parameters.PARAMETER_NAMES`) at temperatures [K] and
     speed magnitudes [rad/s] (arrays of one shape), no external load: Yu 2017 eq 9 (grease)
     or Ning's sum (solid), through :mod:`servofmu.physics.bearing`."""
+    return _running(_outputs(parameters, temperature, speed), temperature)
+
+
+def _outputs(parameters, temperature, speed):
     pair = pair_from_parameters(parameters)
-    t = np.asarray(temperature, dtype=float)
-    th = thermal_state(pair, t)
-    out = bearing_outputs(pair, th, load_state(pair, th, 0.0, 0.0), np.asarray(speed, float))
-    return np.broadcast_to(np.asarray(out.running_torque, dtype=float), t.shape).copy()
+    return operating_outputs(pair, np.asarray(temperature, float), np.asarray(speed, float))
+
+
+def _running(out, temperature) -> np.ndarray:
+    shape = np.shape(temperature)
+    return np.broadcast_to(np.asarray(out.running_torque, dtype=float), shape).copy()
 
 
 @dataclass
@@ -213,7 +219,8 @@ def calibrate(
     sol = least_squares(resid, x0, bounds=(lower, upper), method="trf", diff_step=1e-6)
     theta = np.array([_from_x(s, xi) for s, xi in zip(specs, sol.x, strict=True)])
     fitted = with_x(sol.x)
-    model = running_torque(fitted, data.temperature, w)
+    out = _outputs(fitted, data.temperature, w)  # the fitted model, once: torque and seizure
+    model = _running(out, data.temperature)
     r = sol.fun
     dof = n - p
     s2 = float(r @ r) / dof
@@ -248,7 +255,8 @@ def calibrate(
         evaluations=int(sol.nfev),
     )
     cal.warnings = identifiability_warnings(cal, jac, specs, sol.x, sol.active_mask)
-    seized = _seized_points(fitted, data, w)
+    seized_at = np.broadcast_to(np.asarray(out.seized, dtype=bool), w.shape)
+    seized = [line for line, s in zip(data.lines, seized_at, strict=True) if s]
     if seized:
         cal.warnings.append(
             f"the model calls the pair seized (Hertz pressure above the limit) at lines "
@@ -336,12 +344,3 @@ def _to_x(spec: Unknown, value: float) -> float:
 
 def _from_x(spec: Unknown, x: float) -> float:
     return 10.0**x if spec.log else x * spec.scale
-
-
-def _seized_points(parameters, data: FrictionMeasurements, speed) -> list[int]:
-    pair = pair_from_parameters(parameters)
-    th = thermal_state(pair, data.temperature)
-    seized = np.asarray(load_state(pair, th, 0.0, 0.0).seized, dtype=bool)
-    return [
-        line for line, s in zip(data.lines, np.broadcast_to(seized, speed.shape), strict=True) if s
-    ]

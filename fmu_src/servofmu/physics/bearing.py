@@ -528,6 +528,16 @@ def bearing_outputs(
     )
 
 
+def operating_outputs(
+    pair: BearingPair, temperature, speed, axial_load=0.0, radial_load=0.0
+) -> BearingOutputs:
+    """Exact outputs at temperature [K], speed [rad/s], axial load [N] (arrays broadcast
+    together; vectorised when the radial load is zero) and radial load [N] (then scalars):
+    :func:`thermal_state`, :func:`load_state` and :func:`bearing_outputs` in one call."""
+    th = thermal_state(pair, temperature)
+    return bearing_outputs(pair, th, load_state(pair, th, axial_load, radial_load), speed)
+
+
 def to_floats(obj):
     """The dataclass ``obj`` with every 0-d array field (recursively) made a Python float or
     bool, for the per-step scalar path."""
@@ -720,5 +730,4 @@ class BearingModel:
     def curves(self, temperatures, speed: float, axial_load: float = 0.0) -> BearingOutputs:
         """Outputs over an array of temperatures [K] at one speed and axial load, vectorised
         and exact (zero radial load)."""
-        th = thermal_state(self.pair, temperatures)
-        return bearing_outputs(self.pair, th, load_state(self.pair, th, axial_load, 0.0), speed)
+        return operating_outputs(self.pair, temperatures, speed, axial_load)
