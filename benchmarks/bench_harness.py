@@ -16,9 +16,9 @@ import statistics
 import time
 from pathlib import Path
 
-from servofmu.build.fmu import DEFAULT_OUT, ensure_built
 from servofmu.harness import load_system, run
 from servofmu.harness.libcosim import run_libcosim
+from servofmu.harness.scenarios.common import system_path
 
 SYSTEM = "seeker_gimbal"
 RECORD = ["motor.speed", "motor.current", "bearing.running_torque"]
@@ -47,7 +47,7 @@ def main(argv=None) -> dict:
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args(argv)
-    ssp = ensure_built(DEFAULT_OUT) / f"{SYSTEM}.ssp"
+    ssp = system_path(SYSTEM)
     engines = {
         "harness, Gauss-Seidel": lambda stop: harness_wall(ssp, stop, "gauss-seidel"),
         "harness, Jacobi": lambda stop: harness_wall(ssp, stop, "jacobi"),

@@ -24,14 +24,14 @@ import time
 import numpy as np
 from dask.distributed import Client
 
-from servofmu.build.fmu import DEFAULT_OUT, ensure_built
+from servofmu.harness.scenarios.common import system_path
 from servofmu.harness.sweep import ModelTask, SystemTask, grid_points, local_cluster, run_sweep
 from servofmu.harness.tolerance import tolerance_points
 from servofmu.physics.bearing_parameters import default_parameters
 
 
 def workloads(samples: int):
-    ssp = (ensure_built(DEFAULT_OUT) / "seeker_gimbal.ssp").read_bytes()
+    ssp = system_path("seeker_gimbal").read_bytes()
     temps = list(np.linspace(233.15, 333.15, 48))
     return {
         "co-simulation (seeker_gimbal, 1 s)": (

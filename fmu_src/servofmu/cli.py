@@ -54,13 +54,14 @@ def _system_path(arg: str) -> tuple[Path, Path | None]:
     build), or the name of a system in ssp/ (its built .ssp)."""
     from servofmu.build.fmu import DEFAULT_OUT, ensure_built
     from servofmu.build.ssp import systems
+    from servofmu.harness.scenarios.common import system_path
 
     names = [s.name for s in systems()]
     path = Path(arg)
     if path.exists():
         return path, (ensure_built(DEFAULT_OUT) if path.is_dir() or path.suffix == ".ssd" else None)
     if arg in names:
-        return ensure_built(DEFAULT_OUT) / f"{arg}.ssp", None
+        return system_path(arg), None
     raise ValueError(f"system = {arg!r}: no such file or folder, nor one of {names}")
 
 
