@@ -18,15 +18,16 @@ _KEEP = []  # ctypes callbacks and extracted folders must outlive the instances
 class Fmu:
     """One FMU instance with name-based access and a captured log."""
 
-    def __init__(self, path, instance_name="inst", unzip_dir=None, log=None):
-        self.md = read_model_description(str(path))
+    def __init__(self, path, instance_name="inst", unzip_dir=None, log=None, md=None):
+        self.md = md or read_model_description(str(path))
         self.dir = unzip_dir or extract(str(path))
         self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
         self.type = {v.name: v.type for v in self.md.modelVariables}
         self.log: list[tuple[int, str]] = [] if log is None else log
 
         def logger(env, name, status, category, message):
-            self.log.append((status, message.decode() if isinstance(message, bytes) else message))
+            text = message.decode(errors="replace") if isinstance(message, bytes) else message
+            self.log.append((status, str(text)))
 
         cb = fmi2CallbackFunctions()
         cb.logger = fmi2CallbackLoggerTYPE(logger)

@@ -28,16 +28,12 @@ from collections import Counter
 from pathlib import Path
 
 from fmpy import extract, read_model_description
-from fmpy.fmi1 import FMICallException, calloc, free
-from fmpy.fmi2 import (
-    FMU2Slave,
-    fmi2CallbackAllocateMemoryTYPE,
-    fmi2CallbackFreeMemoryTYPE,
-    fmi2CallbackFunctions,
-    fmi2CallbackLoggerTYPE,
-)
+from fmpy.fmi1 import FMICallException
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # tests/: the shared FMU driver
+from fmu_helpers import Fmu
 
 NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController")
 EXTREMES = (
@@ -72,32 +68,14 @@ STRINGS = (
     "x" * 300,
     "\u00e9\u2013\U0001f600",
 )
-_KEEP = []
 
 
-class Instance:
-    """One FMU instance; every call goes through :meth:`call`, which records the status."""
+class Instance(Fmu):
+    """One instance of ``target``; every call goes through :meth:`call`, which records the
+    status."""
 
-    def __init__(self, fmu):
-        self.fmu = fmu
-        self.log: list[tuple[int, str]] = []
-
-        def logger(env, name, status, category, message):
-            text = message.decode(errors="replace") if isinstance(message, bytes) else message
-            self.log.append((status, str(text)))
-
-        cb = fmi2CallbackFunctions()
-        cb.logger = fmi2CallbackLoggerTYPE(logger)
-        cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
-        cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        _KEEP.append((cb, logger))
-        self.slave = FMU2Slave(
-            guid=fmu.md.guid,
-            unzipDirectory=fmu.dir,
-            modelIdentifier=fmu.md.coSimulation.modelIdentifier,
-            instanceName="fuzz",
-        )
-        self.slave.instantiate(callbacks=cb, loggingOn=True)
+    def __init__(self, target: Target):
+        super().__init__(target.path, "fuzz", unzip_dir=target.dir, md=target.md)
         self.states = []
 
     def call(self, name, *args):
@@ -107,13 +85,15 @@ class Instance:
         except FMICallException as exc:
             return exc.status, None
 
-    def close(self):
+    def close(self):  # no fmi2Terminate: the sequence may have left any state
         for s in self.states:
             self.call("freeFMUstate", s)
         self.slave.freeInstance()
 
 
-class Fmu:
+class Target:
+    """An FMU under test: its description, its unpacked folder, the variables used."""
+
     def __init__(self, path: Path):
         self.path = path
         self.md = read_model_description(str(path))
@@ -142,7 +122,7 @@ def _value(v):
     return st.integers(-(2**31), 2**31 - 1)
 
 
-def operations(fmu: Fmu):
+def operations(fmu: Target):
     """One FMI call: a set (any settable variable, a value mostly in range), a step (mostly
     a usual size), an output read, or one of the rarer calls."""
     sets = st.sampled_from(fmu.settable).flatmap(
@@ -180,7 +160,7 @@ def bad(v, value) -> bool:
     return (v.min is not None and x < float(v.min)) or (v.max is not None and x > float(v.max))
 
 
-def run_calls(fmu: Fmu, ops, stats: Counter) -> None:
+def run_calls(fmu: Target, ops, stats: Counter) -> None:
     inst = Instance(fmu)
     time = 0.0
     recently_bad: dict[str, float] = {}  # names set to a bad value since the last good step
@@ -266,7 +246,7 @@ def run_calls(fmu: Fmu, ops, stats: Counter) -> None:
         inst.close()
 
 
-def run_state(fmu: Fmu, inputs, steps_before: int, steps_after: int, h: float) -> None:
+def run_state(fmu: Target, inputs, steps_before: int, steps_after: int, h: float) -> None:
     """Save at a point, continue; restore (same instance, and a fresh one from bytes) and
     continue again: identical outputs."""
     names = [v for v in fmu.settable if v.causality == "input" and v.type == "Real"]
@@ -316,7 +296,7 @@ def in_range(v):
     return st.floats(min_value=mid - 0.01 * half, max_value=mid + 0.01 * half)
 
 
-def _properties(fmu: Fmu, stats: Counter, common: dict, state_examples: int):
+def _properties(fmu: Target, stats: Counter, common: dict, state_examples: int):
     """The two hypothesis tests of one FMU."""
     inputs = [v for v in fmu.settable if v.causality == "input" and v.type == "Real"]
 
@@ -346,7 +326,7 @@ def main(argv=None) -> int:
     parser.add_argument("--seed", type=int, help="derandomised run with this seed")
     args = parser.parse_args(argv)
     for name in args.fmu or NAMES:
-        fmu = Fmu(Path(args.fmu_dir) / f"{name}.fmu")
+        fmu = Target(Path(args.fmu_dir) / f"{name}.fmu")
         stats: Counter = Counter()
         common = dict(
             max_examples=args.examples,
