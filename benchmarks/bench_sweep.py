@@ -40,7 +40,7 @@ def workloads(samples: int):
             grid_points({"bearing.temperature": temps[:2]}),
         ),
         "model evaluation (tolerance study)": (
-            ModelTask(default_parameters("yu2017_gimbal"), ("running_torque", "seized")),
+            ModelTask(default_parameters("yu2017_gimbal"), ("running_torque", "overloaded")),
             tolerance_points("yu2017_gimbal", samples, seed=3),
             tolerance_points("yu2017_gimbal", 4, seed=4),
         ),

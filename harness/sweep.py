@@ -132,7 +132,9 @@ class ModelTask:
         "kinematic_viscosity",
         "axial_stiffness",
         "max_contact_pressure",
-        "seized",
+        "overloaded",
+        "locked",
+        "unloaded",
     )
 
     def check(self, points: Sequence[dict]) -> None:

@@ -1,6 +1,6 @@
 """Monte-Carlo tolerance study of a bearing pair (``servofmu montecarlo``): the outer ring's
 fit and the preload washer drawn from their manufacturing tolerances
-(``physics/data/tolerances.toml``), the friction torque and the probability of seizure
+(``physics/data/tolerances.toml``), the friction torque and the probability of an overload
 (Hertz pressure above the static limit) versus temperature, run as a Dask sweep of
 bearing-model evaluations.
 
@@ -27,7 +27,7 @@ from .sweep import ModelTask, Uniform, cross, grid_points, run_sweep, sample_poi
 
 TEMPS_C = tuple(float(t) for t in range(-40, 61, 10))
 SPEED = 10.0 * DEG  # rad/s, the speed of the Yu reproduction
-OUTPUTS = ("running_torque", "preload", "max_contact_pressure", "seized")
+OUTPUTS = ("running_torque", "preload", "max_contact_pressure", "overloaded")
 
 
 def tolerance_points(mounting: str, samples: int, seed: int) -> list[dict]:
@@ -69,14 +69,14 @@ def run(
     )
     runs_file = sweep.write(out / "runs.csv")
     temps = np.array([p["temperature"] for p in points])
-    torque, seized = sweep.column("running_torque"), sweep.column("seized")
+    torque, overloaded = sweep.column("running_torque"), sweep.column("overloaded")
     nominal = ModelTask(base, OUTPUTS)(_grid())
     rows = []
     for k, t_c in enumerate(TEMPS_C):
         sel = np.isclose(temps, celsius_to_kelvin(t_c)) & np.isfinite(torque)
         n = int(sel.sum())
-        p_seize = float(np.mean(seized[sel])) if n else math.nan
-        lo, hi = _wilson(p_seize, n)
+        p_over = float(np.mean(overloaded[sel])) if n else math.nan
+        lo, hi = _wilson(p_over, n)
         q5, q50, q95 = (np.percentile(torque[sel], [5, 50, 95]) / NMM) if n else [math.nan] * 3
         rows.append(
             {
@@ -85,7 +85,7 @@ def run(
                 "p5 [N.mm]": float(q5),
                 "median [N.mm]": float(q50),
                 "p95 [N.mm]": float(q95),
-                "P(seized)": p_seize,
+                "P(overloaded)": p_over,
                 "P low (95%)": lo,
                 "P high (95%)": hi,
                 "runs": n,
@@ -95,7 +95,7 @@ def run(
     result = ScenarioResult(
         "montecarlo",
         f"Monte-Carlo tolerance study, {mounting}: {samples} draws of fit and shim, running "
-        f"torque at {SPEED / DEG:g} °/s and seizure probability versus temperature",
+        f"torque at {SPEED / DEG:g} °/s and overload probability versus temperature",
         list(rows[0]),
         rows,
         summary={
@@ -111,7 +111,7 @@ def run(
             f"{name}: {lo / UM:+g}…{hi / UM:+g} µm ({src})" for name, (lo, hi, src) in tol.items()
         ]
         + [
-            "P(seized): fraction of draws whose largest Hertz pressure exceeds 4200 MPa "
+            "P(overloaded): fraction of draws whose largest Hertz pressure exceeds 4200 MPa "
             "(ISO 76), with its 95 % Wilson interval.",
         ],
     )
@@ -156,12 +156,12 @@ def _plot(rows, path: Path, title: str) -> Path:
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     ax.set_title("\n".join(textwrap.wrap(title, 85)), fontsize=9)
-    p = np.array([r["P(seized)"] for r in rows])
+    p = np.array([r["P(overloaded)"] for r in rows])
     lo = np.array([r["P low (95%)"] for r in rows])
     hi = np.array([r["P high (95%)"] for r in rows])
     yerr = np.clip([p - lo, hi - p], 0.0, None)  # Wilson bounds hold p up to rounding
     axp.errorbar(t, p, yerr=yerr, fmt="o-", ms=4, capsize=3)
-    axp.set_ylabel("P(seized)")
+    axp.set_ylabel("P(overloaded)")
     axp.set_ylim(-0.05, 1.05)
     axp.set_xlabel("temperature [°C]")
     axp.grid(True, alpha=0.3)

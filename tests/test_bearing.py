@@ -42,10 +42,12 @@ def test_axial_load_table_matches_the_exact_solution(printed, axial):
     assert fast.contact_angle == pytest.approx(exact.contact_angle, abs=1e-4)
 
 
-def test_load_beyond_the_table_is_solved_exactly_and_seizes(printed):
+def test_load_beyond_the_table_is_solved_exactly_and_overloads(printed):
     m = BearingModel(printed)
     out = m.evaluate(293.15, 0.3, 5000.0)
-    assert out.seized and out.max_contact_pressure > printed.pressure_limit
+    assert out.overloaded and out.max_contact_pressure > printed.pressure_limit
+    # 5000 N against a preload of a few hundred N lifts bearing B off: the preload is lost
+    assert out.unloaded and out.force_b == 0.0 and not out.locked
     assert out.force_a - out.force_b == pytest.approx(5000.0, rel=1e-9)
 
 
@@ -76,16 +78,23 @@ def test_thermal_state_is_cached_per_temperature(yu_pair, monkeypatch):
     assert calls == [293.15, 253.15]
 
 
-def test_seizure_is_a_reported_state(yu_pair):
+def test_overload_is_a_reported_state(yu_pair):
     out = BearingModel(yu_pair).evaluate(233.15, 0.1)  # stated reading, rigid loop, −40 °C
-    assert out.seized is True
+    assert out.overloaded is True and out.locked is False and out.unloaded is False
     assert math.isfinite(out.running_torque) and out.max_contact_pressure > 4.2e9
+
+
+def test_lost_preload_is_reported_as_unloaded(yu_pair):
+    m = BearingModel(yu_pair)  # stated reading: the loop opens on heating
+    warm, room = m.evaluate(333.15, 0.1), m.evaluate(293.15, 0.1)
+    assert warm.preload == 0.0 and warm.unloaded is True and not warm.overloaded
+    assert room.preload > 0.0 and room.unloaded is False
 
 
 def test_negative_clearance_stays_finite(yu_pair):
     tight = with_mounting(yu_pair, outer_interference=16e-6, loop_stiffness=1e6)
     out = BearingModel(tight).evaluate(233.15, 0.1)
-    assert out.radial_clearance < 0
+    assert out.radial_clearance < 0 and out.locked is True
     assert all(math.isfinite(v) for v in dataclasses.astuple(out))
 
 

@@ -76,7 +76,8 @@ def test_bearing_outputs_right_after_initialization(fmus):
         "viscous_torque",
     ):
         assert fmu.get(name) == pytest.approx(getattr(lib, name), rel=1e-12), name
-    assert fmu.get("seized") == lib.seized
+    for flag in ("overloaded", "locked", "unloaded"):
+        assert fmu.get(flag) == getattr(lib, flag), flag
     # direct feedthrough: a new input shows at once, without a step
     fmu.set(speed=-0.2)
     assert fmu.get("friction_torque") == pytest.approx(-lib.friction_torque, rel=1e-12)
@@ -234,10 +235,11 @@ def test_bad_parameters_are_reported(fmus, name, params, text):
     fmu.close()
 
 
-def test_extreme_load_is_a_seized_state_not_a_crash(fmus):
+def test_extreme_load_is_an_overloaded_state_not_a_crash(fmus):
     fmu = Fmu(fmus["BearingFriction"], "x").init(axial_load=9.0e4, temperature=233.15)
     fmu.slave.doStep(0.0, 1e-3)
-    assert fmu.get("seized") is True and math.isfinite(fmu.get("running_torque"))
+    assert fmu.get("overloaded") is True and math.isfinite(fmu.get("running_torque"))
+    assert fmu.get("unloaded") is True  # bearing B lifted off
     fmu.close()
 
 

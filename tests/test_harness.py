@@ -292,11 +292,11 @@ def test_results_csv_and_plot(tmp_path, out):
     res = run(
         out / "seeker_gimbal.ssp",
         stop=0.02,
-        record=["motor.speed", "bearing.seized"],
+        record=["motor.speed", "bearing.overloaded"],
         out_dir=tmp_path,
         progress=False,
     )
-    assert res.data.dtype.names == ("time", "motor.speed", "bearing.seized")
+    assert res.data.dtype.names == ("time", "motor.speed", "bearing.overloaded")
     assert len(res.data) == 21 and res["time"][-1] == pytest.approx(0.02)
     table = np.genfromtxt(res.csv, delimiter=",", names=True)
     assert np.allclose(table["motorspeed"], res["motor.speed"])

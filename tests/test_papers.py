@@ -76,9 +76,9 @@ def test_yu_known_gaps_are_reported_not_tuned(yu):
     ):
         assert r[rid].status == "not-reproduced"
     assert r["fig8.geometric_max.stated"].computed > 10 * 0.87
-    assert "seized" in r["fig8.total_m40.stated"].note
+    assert "overloaded" in r["fig8.total_m40.stated"].note
     assert r["fig3.coupled"].status == "qualitative"
-    assert r["fig4.seizure"].status == "qualitative"
+    assert r["fig4.locked"].status == "qualitative"
 
 
 def test_yu_files_written(yu):

@@ -54,7 +54,7 @@ def test_points_grid_sample_and_cross():
 
 
 def test_model_task_matches_the_bearing_model_and_isolates_bad_points():
-    task = ModelTask(BASE, ("running_torque", "preload", "seized"))
+    task = ModelTask(BASE, ("running_torque", "preload", "overloaded"))
     points = [
         {"temperature": 253.15, "speed": 0.2},
         {"temperature": 273.15, "speed": 0.1, "axial_load": 20.0},
@@ -151,10 +151,10 @@ def test_tolerance_study(tmp_path):
     result = run(tmp_path, samples=40, seed=5, workers=1, progress=False)
     rows = {r["temperature [degC]"]: r for r in result.rows}
     assert len(rows) == len(TEMPS_C) and result.summary["failed runs"] == 0
-    assert rows[-40.0]["P(seized)"] == 1.0 and rows[20.0]["P(seized)"] == 0.0
+    assert rows[-40.0]["P(overloaded)"] == 1.0 and rows[20.0]["P(overloaded)"] == 0.0
     for r in result.rows:
         assert r["p5 [N.mm]"] <= r["median [N.mm]"] <= r["p95 [N.mm]"]
-        assert r["P low (95%)"] <= r["P(seized)"] <= r["P high (95%)"] + 1e-12
+        assert r["P low (95%)"] <= r["P(overloaded)"] <= r["P high (95%)"] + 1e-12
     assert rows[0.0]["p95 [N.mm]"] > 1.1 * rows[0.0]["p5 [N.mm]"]  # the tolerances matter
     assert {f.suffix for f in result.files} == {".csv", ".png"}
 
@@ -187,4 +187,4 @@ def test_cli_sweep_and_montecarlo(tmp_path, capsys):
     assert main(["sweep", "model", "--grid", "temperatur=300", "--out", str(out)]) == 2
     assert "'temperatur' is neither" in capsys.readouterr().err
     rc = main(["montecarlo", "--samples", "5", "--workers", "1", "--out", str(tmp_path / "mc")])
-    assert rc == 0 and "P(seized)" in capsys.readouterr().out
+    assert rc == 0 and "P(overloaded)" in capsys.readouterr().out

@@ -427,7 +427,7 @@ def build_parser() -> argparse.ArgumentParser:
     mc = sub.add_parser(
         "montecarlo",
         help="Monte-Carlo tolerance study: fit and shim from their tolerances, torque and "
-        "seizure probability versus temperature",
+        "overload probability versus temperature",
     )
     mc.add_argument("--samples", type=int, default=500)
     mc.add_argument("--seed", type=int, default=1)

@@ -42,7 +42,9 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
                 "motor.speed",
                 "bearing.running_torque",
                 "bearing.preload",
-                "bearing.seized",
+                "bearing.overloaded",
+                "bearing.locked",
+                "bearing.unloaded",
                 "bearing.temperature",
             ],
             out_dir=out,
@@ -68,7 +70,10 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
                     "model [N.mm]": model / NMM,
                     "difference [%]": 100.0 * (measured / model - 1.0),
                     "preload [N]": plateau_mean(t, res["bearing.preload"], a, b),
-                    "seized": bool(plateau_mean(t, res["bearing.seized"], a, b) > 0.5),
+                    **{
+                        flag: bool(plateau_mean(t, res[f"bearing.{flag}"], a, b) > 0.5)
+                        for flag in ("overloaded", "locked", "unloaded")
+                    },
                 }
             )
     result = ScenarioResult(

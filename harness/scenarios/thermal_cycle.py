@@ -59,7 +59,9 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
                 "bearing.contact_angle",
                 "bearing.outer_fit_interference",
                 "bearing.inner_fit_interference",
-                "bearing.seized",
+                "bearing.overloaded",
+                "bearing.locked",
+                "bearing.unloaded",
             ],
             out_dir=out,
         )
@@ -110,7 +112,10 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
         summary={
             "largest |difference| [%]": max(abs(r["difference [%]"]) for r in rows),
             "largest rising/falling torque gap [%]": 100.0 * max(gaps) if gaps else float("nan"),
-            "seized anywhere": bool(np.any(res["bearing.seized"] > 0.5)),
+            **{
+                f"{flag} anywhere": bool(np.any(res[f"bearing.{flag}"] > 0.5))
+                for flag in ("overloaded", "locked", "unloaded")
+            },
         },
         files=[res.csv],
         notes=[

@@ -219,7 +219,7 @@ def calibrate(
     sol = least_squares(resid, x0, bounds=(lower, upper), method="trf", diff_step=1e-6)
     theta = np.array([_from_x(s, xi) for s, xi in zip(specs, sol.x, strict=True)])
     fitted = with_x(sol.x)
-    out = _outputs(fitted, data.temperature, w)  # the fitted model, once: torque and seizure
+    out = _outputs(fitted, data.temperature, w)  # the fitted model, once: torque and flags
     model = _running(out, data.temperature)
     r = sol.fun
     dof = n - p
@@ -255,12 +255,12 @@ def calibrate(
         evaluations=int(sol.nfev),
     )
     cal.warnings = identifiability_warnings(cal, jac, specs, sol.x, sol.active_mask)
-    seized_at = np.broadcast_to(np.asarray(out.seized, dtype=bool), w.shape)
-    seized = [line for line, s in zip(data.lines, seized_at, strict=True) if s]
-    if seized:
+    overloaded_at = np.broadcast_to(np.asarray(out.overloaded, dtype=bool), w.shape)
+    overloaded = [line for line, s in zip(data.lines, overloaded_at, strict=True) if s]
+    if overloaded:
         cal.warnings.append(
-            f"the model calls the pair seized (Hertz pressure above the limit) at lines "
-            f"{seized}: its torque there is outside the model's validity"
+            f"the model calls the pair overloaded (Hertz pressure above the limit: permanent "
+            f"deformation) at lines {overloaded}: its torque there is outside the model's validity"
         )
     return cal
 

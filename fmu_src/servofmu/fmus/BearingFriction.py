@@ -139,8 +139,24 @@ class BearingFriction(ServoSlave):
             ("temperature",),
         ),
         _out(
-            "seized",
-            "True when the contact pressure exceeds the pressure limit",
+            "overloaded",
+            "Contact pressure at or above pressure_limit (permanent deformation, ISO 76)",
+            None,
+            None,
+            _LOADS,
+            "Boolean",
+        ),
+        _out(
+            "locked",
+            "No operating clearance left (balls pinched radially) or no load equilibrium",
+            None,
+            None,
+            _LOADS,
+            "Boolean",
+        ),
+        _out(
+            "unloaded",
+            "Preload lost: a bearing of the pair carries no axial load (axial play)",
             None,
             None,
             _LOADS,
@@ -354,7 +370,7 @@ class BearingFriction(ServoSlave):
             "pressure_limit",
             "Real",
             "parameter",
-            "Hertz pressure above which the pair counts as seized",
+            "Hertz pressure at which the pair counts as overloaded (permanent deformation)",
             PRESSURE_LIMIT,
             "Pa",
             "MPa",
@@ -403,4 +419,6 @@ class BearingFriction(ServoSlave):
         self.max_contact_pressure = o.max_contact_pressure
         self.outer_fit_interference = o.outer_interference
         self.inner_fit_interference = o.inner_interference
-        self.seized = o.seized
+        self.overloaded = o.overloaded
+        self.locked = o.locked
+        self.unloaded = o.unloaded

@@ -382,7 +382,11 @@ def _extension_note(act: Actuator) -> str:
         + " N·m/°, stiffer than the gap at every load, so a linear seat compliance is "
         f"fitted in series and the pair supplies the load stiffening. At 300 N·m its contact "
         f"pressure reaches {p300.max_contact_pressure / 1e6:.0f} MPa"
-        + (" (above 4200 MPa: seized, the pair is undersized)" if p300.seized else "")
+        + (
+            " (above 4200 MPa: overloaded, permanent deformation; the pair is undersized)"
+            if p300.overloaded
+            else ""
+        )
     )
 
 

@@ -246,9 +246,9 @@ def reproduce(out_dir) -> Report:
     neg = CURVE_C[pd8 < 0]
     rep.rows.append(
         trend(
-            "fig4.seizure",
+            "fig4.locked",
             "Δ = 0.008 mm at low temperature",
-            "negative clearance, contact angle 0 (seizure)",
+            "negative clearance, contact angle 0 (Yu: the bearing locks, 卡死)",
             bool(neg.size and neg[0] == CURVE_C[0]),
             (
                 f"clearance < 0 below {neg.max():.0f} °C ({pd8[0] / UM:.2f} µm at −40 °C), "
@@ -408,9 +408,12 @@ def reproduce(out_dir) -> Report:
             f"({k_pair:.2g} N/m): {share:.0f} % of the thermal mismatch of frame and shaft "
             "goes into the balls"
         )
-        if np.asarray(o.seized)[0]:
+        if np.asarray(o.overloaded)[0]:
             p_max = float(o.max_contact_pressure[0]) / 1e6
-            why += f"; at −40 °C the contact pressure {p_max:.0f} MPa exceeds 4200 MPa (seized)"
+            why += (
+                f"; at −40 °C the contact pressure {p_max:.0f} MPa exceeds 4200 MPa "
+                "(overloaded: permanent deformation)"
+            )
         if reading == "printed":
             rep.rows.append(
                 calibrated(

@@ -7,7 +7,8 @@ Composition (Yu 2017 §1–3; Ning §1–2):
    preload at zero external load, the lubricant viscosity (eq 18).
 2. :func:`load_state` — the pair under external axial and radial loads: per-ball loads and
    contact angles (Jones), the speed-independent torques (eq 1–7, Ning), preload, axial
-   stiffness, maximum contact pressure and the seized flag.
+   stiffness, maximum contact pressure and the flags ``overloaded``, ``locked`` and
+   ``unloaded`` (:func:`state_flags`).
 3. :func:`bearing_outputs` — the speed-dependent part: Palmgren's viscous torque (eq 8), the
    total (eq 9), breakaway versus running torque, the regularised signed friction torque and
    the power loss.
@@ -53,7 +54,8 @@ from .viscosity import WaltherViscosity
 LUBRICATIONS = ("grease", "solid")
 DEFAULT_COEFFICIENTS = FrictionCoefficients()
 #: Static load limit: 4200 MPa maximum Hertz pressure for ball bearings (ISO 76:2006, the basis
-#: of the basic static load rating). Above it the pair is reported as seized.
+#: of the basic static load rating): above it the contacts deform permanently (dents of about
+#: 1e-4 of the ball diameter), and the pair is reported as ``overloaded``. It is not seizure.
 PRESSURE_LIMIT = 4.2e9
 
 
@@ -103,7 +105,7 @@ class BearingPair:
     coefficients : :class:`friction.FrictionCoefficients`
     regularisation_speed : width ω_r of the smooth sign through zero speed [rad/s]
     stribeck_speed : decay speed ω_s of the breakaway excess [rad/s]
-    pressure_limit : maximum Hertz pressure above which the pair is seized [Pa]
+    pressure_limit : maximum Hertz pressure above which the pair is overloaded [Pa]
     differential_sliding : include Heathcote sliding; None: True for solid, False for grease
     thermal_coupling : False ignores the fit pressures (Yu Fig 3 "without coupling")
     """
@@ -300,7 +302,7 @@ class LoadState:
         contact angle when A carries no load)
     axial_stiffness : stiffness of the shaft in the pair [N/m]
     max_contact_pressure : largest Hertz pressure over all contacts [Pa]
-    seized : max_contact_pressure ≥ the pair's pressure_limit
+    overloaded, locked, unloaded : the flags of :func:`state_flags`
     torques : speed-independent torques of both bearings (:class:`friction.BallSetTorques`)
     axial_displacement : axial displacement of the shaft from its unloaded position,
         z = (a_A − a_B)/2 [m] (positive towards bearing A)
@@ -313,10 +315,38 @@ class LoadState:
     contact_angle: np.ndarray
     axial_stiffness: np.ndarray
     max_contact_pressure: np.ndarray
-    seized: np.ndarray
+    overloaded: np.ndarray
+    locked: np.ndarray
+    unloaded: np.ndarray
     torques: BallSetTorques
     axial_displacement: np.ndarray = 0.0
     converged: bool = True
+
+
+def state_flags(
+    pair: BearingPair, clearance, max_contact_pressure, force_a, force_b, converged=True
+) -> dict:
+    """What the model knows about the state of the pair, as three flags (arrays or bools).
+
+    - ``overloaded``: the largest Hertz pressure ``max_contact_pressure`` [Pa] reaches the
+      pair's ``pressure_limit`` (ISO 76: 4200 MPa, permanent deformation of the races);
+    - ``locked``: no operating clearance is left (diametral ``clearance`` [m] ≤ 0: the balls
+      are pinched between the rings already without axial offset, the contact angle has
+      collapsed and the pair can no longer set its own contact angle), or the load
+      equilibrium has no solution (``converged`` False);
+    - ``unloaded``: the preload is lost: one bearing's axial force ``force_a``/``force_b`` [N]
+      is zero, so the shaft has axial play (with no external load: both are zero).
+    """
+    p = np.asarray(max_contact_pressure)
+    locked = np.asarray(clearance) <= 0.0
+    if not converged:
+        locked = np.ones_like(locked)
+    unloaded = np.minimum(np.asarray(force_a), np.asarray(force_b)) <= 0.0
+    return {
+        "overloaded": p >= pair.pressure_limit,
+        "locked": locked,
+        "unloaded": unloaded,
+    }
 
 
 def _torques(pair: BearingPair, geom: RaceGeometry, load, alpha, inner, outer, count=1):
@@ -392,7 +422,7 @@ def axial_load_state(pair: BearingPair, thermal: ThermalState, offset_a, offset_
         contact_angle=angle,
         axial_stiffness=pair_axial_stiffness(sa.axial_stiffness, sb.axial_stiffness, k),
         max_contact_pressure=p_max,
-        seized=p_max >= pair.pressure_limit,
+        **state_flags(pair, geom.clearance, p_max, sa.axial_force, sb.axial_force),
         torques=t,
         axial_displacement=0.5 * (np.asarray(offset_a) - np.asarray(offset_b)),
     )
@@ -429,7 +459,7 @@ def _combined_load_state(pair, thermal, f_ext, f_r) -> LoadState:
         contact_angle=angle,
         axial_stiffness=float(pair_axial_stiffness(ka, kb, k)),
         max_contact_pressure=p_max,
-        seized=p_max >= pair.pressure_limit,
+        **state_flags(pair, geom.clearance, p_max, fa, fb, st.converged),
         torques=t,
         axial_displacement=0.5 * (st.offset_a - st.offset_b),
         converged=st.converged,
@@ -443,9 +473,10 @@ class BearingOutputs:
     friction_torque [N·m] signed like speed (opposes rotation), running_torque and
     breakaway_torque [N·m], hysteresis/spin/sliding/viscous_torque [N·m], preload [N],
     contact_angle [rad], radial_clearance [m], kinematic_viscosity [m²/s], axial_stiffness
-    [N/m], power_loss [W], seized; plus inner_ring_torque/outer_ring_torque [N·m],
-    max_contact_pressure [Pa], outer/inner_fit_pressure [Pa], outer/inner_interference [m],
-    force_a/force_b [N], axial_displacement [m].
+    [N/m], power_loss [W], overloaded, locked, unloaded (see :func:`state_flags`); plus
+    inner_ring_torque/outer_ring_torque [N·m], max_contact_pressure [Pa],
+    outer/inner_fit_pressure [Pa], outer/inner_interference [m], force_a/force_b [N],
+    axial_displacement [m].
     """
 
     friction_torque: float
@@ -461,7 +492,9 @@ class BearingOutputs:
     kinematic_viscosity: float
     axial_stiffness: float
     power_loss: float
-    seized: bool
+    overloaded: bool
+    locked: bool
+    unloaded: bool
     inner_ring_torque: float
     outer_ring_torque: float
     max_contact_pressure: float
@@ -514,7 +547,9 @@ def bearing_outputs(
         kinematic_viscosity=thermal.kinematic_viscosity,
         axial_stiffness=load.axial_stiffness,
         power_loss=signed * w,
-        seized=load.seized,
+        overloaded=load.overloaded,
+        locked=load.locked,
+        unloaded=load.unloaded,
         inner_ring_torque=t.inner_ring,
         outer_ring_torque=t.outer_ring,
         max_contact_pressure=load.max_contact_pressure,
@@ -587,6 +622,7 @@ class AxialLoadTable:
         ]
         self.load = [r[0] for r in self.rows]
         self.pressure_limit = pair.pressure_limit
+        self.locked = bool(float(geom.clearance) <= 0.0)
 
     def lookup(self, axial_load: float) -> LoadState | None:
         """Interpolated :class:`LoadState` (floats) at ``axial_load`` [N], or None."""
@@ -610,6 +646,8 @@ class AxialLoadTable:
             stiffness,
             p_max,
             bool(p_max >= self.pressure_limit),
+            self.locked,
+            min(fa, fb) <= 0.0,
             BallSetTorques(*torques),
             disp,
         )
