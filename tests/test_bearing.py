@@ -31,18 +31,20 @@ def test_scalar_path_equals_vectorised_curves(yu_pair):
 
 
 @pytest.mark.parametrize("axial", [-350.0, -40.0, -1.0, 0.5, 25.0, 180.0, 400.0])
-def test_axial_load_table_matches_the_exact_solution(printed, axial):
+def test_per_step_load_equals_the_exact_solution(printed, axial):
     m = BearingModel(printed)
+    m.evaluate(293.15, 0.3)  # the continuation starts from the unloaded state
     fast = m.evaluate(293.15, 0.3, axial)
     exact = m.load(293.15, axial)
-    assert fast.force_a - fast.force_b == pytest.approx(axial, rel=1e-3, abs=1e-3)
-    assert fast.hysteresis_torque + fast.spin_torque == pytest.approx(exact.torques.total, rel=1e-3)
-    assert fast.preload == pytest.approx(exact.preload, rel=1e-3)
-    assert fast.axial_stiffness == pytest.approx(exact.axial_stiffness, rel=2e-3)
-    assert fast.contact_angle == pytest.approx(exact.contact_angle, abs=1e-4)
+    assert fast.force_a - fast.force_b == pytest.approx(axial, rel=1e-9, abs=1e-9)
+    assert fast.hysteresis_torque + fast.spin_torque == pytest.approx(exact.torques.total, rel=1e-9)
+    assert fast.preload == pytest.approx(exact.preload, rel=1e-9)
+    assert fast.axial_stiffness == pytest.approx(exact.axial_stiffness, rel=1e-9)
+    assert fast.contact_angle == pytest.approx(exact.contact_angle, rel=1e-9)
+    assert m.exact_steps == 1  # only the first call was solved exactly
 
 
-def test_load_beyond_the_table_is_solved_exactly_and_overloads(printed):
+def test_large_load_is_solved_and_overloads(printed):
     m = BearingModel(printed)
     out = m.evaluate(293.15, 0.3, 5000.0)
     assert out.overloaded and out.max_contact_pressure > printed.pressure_limit
@@ -55,15 +57,15 @@ def test_speed_change_does_not_resolve_state(yu_pair, monkeypatch):
     m = BearingModel(yu_pair)
     m.evaluate(293.15, 0.1, 10.0)
     calls = []
-    for name in ("thermal_state", "load_state", "axial_load_state"):
+    for name in ("thermal_state", "load_state", "thermal_floats"):
         monkeypatch.setattr(bm, name, lambda *a, _n=name, **k: calls.append(_n))
+    monkeypatch.setattr(m.solver, "solve", lambda *a: calls.append("solve"))
     for w in np.linspace(-1, 1, 11):
         m.evaluate(293.15, float(w), 10.0)
-    m.evaluate(293.15, 0.2, 12.0)  # a new load at the same temperature: table only
     assert calls == []
 
 
-def test_thermal_state_is_cached_per_temperature(yu_pair, monkeypatch):
+def test_only_the_first_step_of_a_ramp_is_solved_exactly(yu_pair, monkeypatch):
     m = BearingModel(yu_pair)
     real = bm.thermal_state
     calls = []
@@ -73,9 +75,9 @@ def test_thermal_state_is_cached_per_temperature(yu_pair, monkeypatch):
         return real(pair, t)
 
     monkeypatch.setattr(bm, "thermal_state", counting)
-    for t in (293.15, 253.15, 293.15, 253.15):
-        m.evaluate(t, 0.1)
-    assert calls == [293.15, 253.15]
+    for t in np.linspace(253.15, 263.15, 50):
+        m.evaluate(float(t), 0.1, 5.0)
+    assert len(calls) == 1 and m.steps == 50 and m.exact_steps == 1
 
 
 def test_overload_is_a_reported_state(yu_pair):

@@ -258,3 +258,11 @@ class ActuatorStiffness(ServoSlave):
         self.deflection = b.deflection
         self.screw_force = b.screw_force
         self.motor_load_torque = self.load_torque / b.reduction_ratio
+
+    def hidden_state(self):
+        # the support pair's continuation (physics/continuation.py): restored bit for bit
+        return {"continuation": self.model.state() if self._configured else None}
+
+    def restore_hidden_state(self, state):
+        if self._configured:
+            self.model.restore(state.get("continuation"))

@@ -385,10 +385,17 @@ class BearingFriction(ServoSlave):
         self._point = None  # (temperature, axial_load, radial_load) of the last evaluate
         self.model = BearingModel(pair)
 
+    def hidden_state(self):
+        # the continuation of the thermal and load state (physics/continuation.py): a restored
+        # instance continues bit for bit
+        return {"continuation": self.model.state() if self._configured else None}
+
     def restore_hidden_state(self, state):
         # the restored outputs need not belong to the model's last operating point: the next
         # compute evaluates every output (found by the state fuzzing of tests/robustness)
         self._point = None
+        if self._configured:
+            self.model.restore(state.get("continuation"))
 
     def compute(self):
         point = (self.temperature, self.axial_load, self.radial_load)

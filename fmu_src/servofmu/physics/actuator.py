@@ -392,8 +392,8 @@ def per_degree(stiffness):
 
 class ActuatorModel:
     """Scalar evaluation of an :class:`Actuator` for the per-step path of the FMU: the
-    support-bearing pair is read from the cached :class:`bearing.BearingModel` (its
-    per-temperature axial-load table) instead of the exact nested solve; everything else is
+    support-bearing pair is solved by :class:`bearing.BearingModel` (continuation from the
+    previous step, exact to 1e-9) instead of the exact nested solve; everything else is
     :func:`stiffness_breakdown`."""
 
     def __init__(self, act: Actuator, support_pair=None):
@@ -415,6 +415,15 @@ class ActuatorModel:
         secant = f3 >= SMALLEST_SCREW_FORCE and out.axial_displacement > 0
         bearing = f3 / out.axial_displacement if secant else out.axial_stiffness
         return float(series_stiffness(bearing, self.act.seat_stiffness))
+
+    def state(self) -> dict | None:
+        """The support pair's continuation state (JSON-serialisable; None without one)."""
+        return None if self._bearings is None else self._bearings.state()
+
+    def restore(self, state: dict | None) -> None:
+        """Continue from a :meth:`state` (bit for bit)."""
+        if self._bearings is not None:
+            self._bearings.restore(state)
 
     def evaluate(self, output_angle: float, load_torque: float, temperature: float):
         """:class:`StiffnessBreakdown` with float fields at one operating point."""

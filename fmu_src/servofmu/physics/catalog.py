@@ -12,8 +12,11 @@ import math
 import tomllib
 from importlib import resources
 
+from .fits import RadialFit
 from .geometry import BallBearing, ball_diameter_from_grooves, free_contact_angle
 from .materials import Material
+from .mounting import Mounting
+from .preload import LoopMember, PreloadLoop
 from .units import to_si
 from .viscosity import WaltherViscosity, walther_from_two_points
 
@@ -151,11 +154,7 @@ def mounting_entry(key: str) -> dict:
 
 @functools.cache
 def mounting(key: str):
-    """The :class:`bearing.Mounting` ``key`` from ``data/mountings.toml``."""
-    from .bearing import Mounting
-    from .fits import RadialFit
-    from .preload import LoopMember, PreloadLoop
-
+    """The :class:`mounting.Mounting` ``key`` from ``data/mountings.toml``."""
     entry = mounting_entry(key)
     prov = {}
 
@@ -177,7 +176,9 @@ def mounting(key: str):
         area = None
         if "area" in m:
             area, prov[f"loop.{m['name']}.area"] = quantity(m["area"], f"loop[{i}].area")
-        members.append(LoopMember(m["name"], m["role"], length, material(m["material"]), area))
+        members.append(
+            LoopMember(m["name"], m["role"], length, material(m["material"]), area, m.get("part"))
+        )
     shim = q("shim") if "shim" in entry else 0.0
     stiffness = q("loop_stiffness") if "loop_stiffness" in entry else None
     loop = PreloadLoop(tuple(members), shim=shim, stiffness=stiffness)

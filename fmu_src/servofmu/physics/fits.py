@@ -161,37 +161,48 @@ def mounted_geometry(
     assembly_temperature: float,
     coupled: bool = True,
 ) -> MountedGeometry:
-    """Operating geometry of a bearing mounted with ``fit`` at ``temperature`` [K]
-    (Yu 2017 eq 10–13; Ning §2.1), all parts at one uniform temperature.
+    """Operating geometry of a bearing mounted with ``fit`` (Yu 2017 eq 10–13; Ning §2.1).
 
     Parameters
     ----------
     bearing : catalogue geometry (at ``assembly_temperature``)
     fit : seats and interferences at ``assembly_temperature``
-    temperature : T [K] (scalar or array)
+    temperature : T [K], uniform (scalar or array), or a
+        :class:`~.temperatures.PartTemperatures` (housing, shaft, outer ring, inner ring; the
+        balls take the rings' mean)
     assembly_temperature : T0 [K] at which ``fit`` holds
     coupled : False gives free thermal growth only (Yu Fig 3 "without coupling")
 
-    Each part grows freely by α·(T − T0) (eq 10); the interferences become
-    δ_o(T) = D·(1 + α_ring·ΔT) − (D − δ_o0)·(1 + α_housing·ΔT) and likewise for the inner ring;
-    the Lamé pressures (eq 12) then shrink the outer raceway (eq 13) and expand the inner
-    raceway. The clearance follows as Pd = d_o − d_i − 2·Dw (Yu §2.1).
-    """
-    t = check_temperature("temperature", temperature)
-    t0 = check_temperature("assembly_temperature", assembly_temperature)
-    dt = np.asarray(t) - t0
-    ring, ball = bearing.ring_material, bearing.ball_material
-    grow_r = 1.0 + ring.expansion * dt
-    d_ring_o = bearing.outer_diameter * grow_r
-    d_groove_o = bearing.outer_groove_diameter * grow_r
-    d_ring_i = bearing.bore * grow_r
-    d_groove_i = bearing.inner_groove_diameter * grow_r
+    Returns
+    -------
+    MountedGeometry
+        Operating race geometry [m], fit pressures [Pa] and interferences [m].
 
+    Each part grows freely by α·(T_part − T0) (eq 10); the interferences become
+    δ_o = D·(1 + α_ring·ΔT_o) − (D − δ_o0)·(1 + α_housing·ΔT_h) and likewise for the inner
+    ring on the shaft; the Lamé pressures (eq 12) then shrink the outer raceway (eq 13) and
+    expand the inner raceway. The clearance follows as Pd = d_o − d_i − 2·Dw (Yu §2.1).
+    """
+    from .temperatures import part_temperatures
+
+    temps = part_temperatures(temperature)
+    t0 = check_temperature("assembly_temperature", assembly_temperature)
+    ring, ball = bearing.ring_material, bearing.ball_material
     hm, sm = fit.housing_material, fit.shaft_material
-    bore_h = (bearing.outer_diameter - fit.outer_interference) * (1.0 + hm.expansion * dt)
-    d_h = fit.housing_outer_diameter * (1.0 + hm.expansion * dt)
-    d_shaft = (bearing.bore + fit.inner_interference) * (1.0 + sm.expansion * dt)
-    d_shaft_bore = fit.shaft_bore * (1.0 + sm.expansion * dt)
+    grow_o = 1.0 + ring.expansion * (np.asarray(temps.outer_ring) - t0)
+    grow_i = 1.0 + ring.expansion * (np.asarray(temps.inner_ring) - t0)
+    grow_b = 1.0 + ball.expansion * (np.asarray(temps.balls) - t0)
+    grow_h = 1.0 + hm.expansion * (np.asarray(temps.housing) - t0)
+    grow_s = 1.0 + sm.expansion * (np.asarray(temps.shaft) - t0)
+    d_ring_o = bearing.outer_diameter * grow_o
+    d_groove_o = bearing.outer_groove_diameter * grow_o
+    d_ring_i = bearing.bore * grow_i
+    d_groove_i = bearing.inner_groove_diameter * grow_i
+
+    bore_h = (bearing.outer_diameter - fit.outer_interference) * grow_h
+    d_h = fit.housing_outer_diameter * grow_h
+    d_shaft = (bearing.bore + fit.inner_interference) * grow_s
+    d_shaft_bore = fit.shaft_bore * grow_s
     delta_o = d_ring_o - bore_h
     delta_i = d_shaft - d_ring_i
     if coupled:
@@ -204,13 +215,13 @@ def mounted_geometry(
             p_i, d_ring_i, d_groove_i, ring
         )
     else:
-        p_o = p_i = np.zeros_like(dt)
+        p_o = p_i = np.zeros_like(delta_o)
     race = RaceGeometry(
-        ball_diameter=bearing.ball_diameter * (1.0 + ball.expansion * dt),
+        ball_diameter=bearing.ball_diameter * grow_b,
         inner_race_diameter=d_groove_i,
         outer_race_diameter=d_groove_o,
-        inner_groove_radius=bearing.inner_curvature * bearing.ball_diameter * grow_r,
-        outer_groove_radius=bearing.outer_curvature * bearing.ball_diameter * grow_r,
+        inner_groove_radius=bearing.inner_curvature * bearing.ball_diameter * grow_i,
+        outer_groove_radius=bearing.outer_curvature * bearing.ball_diameter * grow_o,
         n_balls=bearing.n_balls,
         compliance=reduced_compliance(ring, ball),
     )

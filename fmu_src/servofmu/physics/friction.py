@@ -238,6 +238,62 @@ class BallSetTorques:
         return self.hysteresis + self.spin + self.sliding
 
 
+def ball_torque_terms(
+    load,
+    inner,
+    outer,
+    r_in,
+    r_out,
+    sin_abs,
+    ball_diameter,
+    groove_radii,
+    coefficients,
+    solid,
+    differential_sliding,
+):
+    """Friction torques of single balls about the bearing axis [N·m], elementwise on floats
+    or arrays (Yu 2017 eq 1–3, 5–7; Ning, reconstructed): the one place these equations are
+    written, for :func:`ball_set_torques` and the per-step continuation.
+
+    Parameters
+    ----------
+    load : Q [N]
+    inner, outer : (a, b, E(e)) of the inner / outer contact: semi-axes [m] at Q and the
+        complete elliptic integral of the second kind [-]
+    r_in, r_out : race contact radii (dm ∓ Dw·cos α)/2 [m] (Yu eq 2)
+    sin_abs : |sin α| [-]
+    ball_diameter : Dw [m]
+    groove_radii : (r_i, r_o) [m]
+    coefficients : :class:`FrictionCoefficients` (α_r, μ)
+    solid : outer-race control (spin at the inner race only) instead of Yu eq 7's larger race
+    differential_sliding : include Heathcote sliding
+
+    Returns
+    -------
+    tuple
+        (hysteresis inner, hysteresis outer, sliding inner, sliding outer, spin inner,
+        spin outer) [N·m].
+    """
+    (a_i, b_i, e_i), (a_o, b_o, e_o) = inner, outer
+    dw = ball_diameter
+    alpha_r, mu = coefficients.hysteresis_loss, coefficients.sliding_friction
+    hyst_i = _hysteresis(load, b_i, dw, alpha_r) * r_in
+    hyst_o = _hysteresis(load, b_o, dw, alpha_r) * r_out
+    if differential_sliding:
+        slide_i = _heathcote(load, a_i, dw, groove_radii[0], mu) * r_in
+        slide_o = _heathcote(load, a_o, dw, groove_radii[1], mu) * r_out
+    else:
+        slide_i = slide_o = 0.0 * load
+    spin_i = _spin(load, a_i, e_i, mu) * sin_abs
+    spin_o = _spin(load, a_o, e_o, mu) * sin_abs
+    if solid:
+        spin_o = 0.0 * spin_o
+    else:  # Yu eq 7: the race with the larger spin moment spins
+        inner_spins = spin_i >= spin_o
+        spin_i, spin_o = spin_i * inner_spins, spin_o * (1 - inner_spins)
+    return hyst_i, hyst_o, slide_i, slide_o, spin_i, spin_o
+
+
 def ball_set_torques(
     load,
     contact_angle,
@@ -275,24 +331,19 @@ def ball_set_torques(
     dm, dw = g(pitch_diameter), g(ball_diameter)
     a_i, b_i = inner.semi_axes(load)
     a_o, b_o = outer.semi_axes(load)
-    r_in = _race_radius(dm, dw, contact_angle, "inner")
-    r_out = _race_radius(dm, dw, contact_angle, "outer")
-    alpha_r, mu = coefficients.hysteresis_loss, coefficients.sliding_friction
-    hyst_i = _hysteresis(load, b_i, dw, alpha_r) * r_in
-    hyst_o = _hysteresis(load, b_o, dw, alpha_r) * r_out
-    if differential_sliding:
-        slide_i = _heathcote(load, a_i, dw, g(inner_groove_radius), mu) * r_in
-        slide_o = _heathcote(load, a_o, dw, g(outer_groove_radius), mu) * r_out
-    else:
-        slide_i = slide_o = np.zeros_like(load)
-    sin_a = np.abs(np.sin(contact_angle))
-    spin_i = _spin(load, a_i, inner.e_integral, mu) * sin_a
-    spin_o = _spin(load, a_o, outer.e_integral, mu) * sin_a
-    if lubrication == "solid":
-        spin_o = np.zeros_like(spin_o)
-    else:
-        inner_spins = spin_i >= spin_o
-        spin_i, spin_o = np.where(inner_spins, spin_i, 0.0), np.where(inner_spins, 0.0, spin_o)
+    hyst_i, hyst_o, slide_i, slide_o, spin_i, spin_o = ball_torque_terms(
+        load,
+        (a_i, b_i, inner.e_integral),
+        (a_o, b_o, outer.e_integral),
+        _race_radius(dm, dw, contact_angle, "inner"),
+        _race_radius(dm, dw, contact_angle, "outer"),
+        np.abs(np.sin(contact_angle)),
+        dw,
+        (g(inner_groove_radius), g(outer_groove_radius)),
+        coefficients,
+        lubrication == "solid",
+        differential_sliding,
+    )
     inner_ring = np.sum(hyst_i + slide_i + spin_i, axis=-1)
     outer_ring = np.sum(hyst_o + slide_o + spin_o, axis=-1)
     return BallSetTorques(

@@ -67,14 +67,36 @@ def curvature_difference_of_ellipticity(k):
     return out if out.ndim else float(out)
 
 
-# The inverse k(F) has no closed form. F(k) above is explicit and monotonic, so it is
-# tabulated once on a dense logarithmic grid of k and inverted by monotone (PCHIP)
-# interpolation of ln k against F; tests check the inverse against a bracketing root finder.
+def hertz_relation(k, k_integral, e_integral):
+    """F(k) and dF/dk of the Hertz relation F = ((k² + 1)·E − 2·K)/((k² − 1)·E) for the
+    ellipticity k > 1 [-], given K = K(m) and E = E(m) at m = 1 − 1/k² [-] (Harris & Kotzalas
+    2007, ch. 6). dF/dk uses dK/dm = (E − (1 − m)·K)/(2m(1 − m)), dE/dm = (E − K)/(2m)
+    (Byrd & Friedman 1971, 710.00, 710.02) and dm/dk = 2/k³. Floats or arrays; the Newton
+    step of :func:`ellipticity` and of the per-step continuation (:mod:`.continuation`)."""
+    k2 = k * k
+    m = 1.0 - 1.0 / k2
+    dk_dm = (e_integral - (1.0 - m) * k_integral) / (2.0 * m * (1.0 - m))
+    de_dm = (e_integral - k_integral) / (2.0 * m)
+    dm_dk = 2.0 / (k2 * k)
+    num = (k2 + 1.0) * e_integral - 2.0 * k_integral
+    den = (k2 - 1.0) * e_integral
+    dnum = 2.0 * k * e_integral + ((k2 + 1.0) * de_dm - 2.0 * dk_dm) * dm_dk
+    dden = 2.0 * k * e_integral + (k2 - 1.0) * de_dm * dm_dk
+    return num / den, (dnum * den - num * dden) / (den * den)
+
+
+# The inverse k(F) has no closed form. F(k) above is explicit and monotonic: it is tabulated
+# once on a dense logarithmic grid of k and inverted by monotone (PCHIP) interpolation of ln k
+# against F (error about 1e-10), then polished by Newton steps on the exact relation to
+# machine precision wherever k > 1 + 1e-3 (nearer a circle F(k) loses its digits to
+# cancellation, and the interpolant is kept: ball–groove contacts have k > 5). Tests check the
+# inverse against a bracketing root finder.
 _K_MAX = 1.0e4
 _LOG_K = np.concatenate([[0.0], np.linspace(np.log(1.0 + 1e-4), np.log(_K_MAX), 6000)])
 _F_OF_K = curvature_difference_of_ellipticity(np.exp(_LOG_K))
 _F_MAX = float(_F_OF_K[-1])
 _LOG_K_OF_F = PchipInterpolator(_F_OF_K, _LOG_K, extrapolate=False)
+_POLISH_K = 1.0 + 1e-3
 
 
 def ellipticity(curvature_difference):
@@ -84,8 +106,19 @@ def ellipticity(curvature_difference):
     2007, ch. 6) for k in [1, 1e4]; F(ρ) must lie in [0, F(k=1e4)) ≈ [0, 0.99999).
     """
     f = check_range("curvature_difference", curvature_difference, 0.0, _F_MAX, hi_open=True)
-    out = np.exp(_LOG_K_OF_F(f))
-    return out if np.ndim(out) else float(out)
+    k = np.exp(_LOG_K_OF_F(f))
+    polish = k > _POLISH_K
+    if np.any(polish):
+        kp, fp = k[polish] if k.ndim else k, f[polish] if k.ndim else f
+        for _ in range(2):  # from 1e-10: the first step reaches rounding, the second checks
+            m = 1.0 - 1.0 / (kp * kp)
+            f_k, df_dk = hertz_relation(kp, ellipk(m), ellipe(m))
+            kp = kp - (f_k - fp) / df_dk
+        if k.ndim:
+            k[polish] = kp
+        else:
+            k = kp
+    return k if np.ndim(k) else float(k)
 
 
 @dataclass(frozen=True)

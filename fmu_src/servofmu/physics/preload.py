@@ -48,8 +48,17 @@ from ._checks import (
 from .equilibrium import _geometry_args, _geometry_from_args, axial_force, offset_for_axial_force
 from .geometry import RaceGeometry
 from .materials import Material
+from .temperatures import MEMBER_PARTS, part_temperatures
 
 ROLES = {"opening": 1.0, "closing": -1.0}
+#: The part whose temperature a loop member takes, by member name, when the data do not say.
+DEFAULT_PARTS = {
+    "frame": "housing",
+    "housing": "housing",
+    "shaft": "shaft",
+    "spacer": "shaft",
+    "bearings": "rings",
+}
 
 
 @dataclass(frozen=True)
@@ -63,6 +72,9 @@ class LoopMember:
     length : axial length L [m]
     material : its :class:`Material`
     area : cross-section A [m²] for the loop compliance L/(E·A); None: not counted
+    part : whose temperature it takes (:data:`~.temperatures.MEMBER_PARTS`): "housing",
+        "shaft" or "rings"; None: from the name (frame/housing → housing, shaft and spacer →
+        shaft, bearings → rings)
     """
 
     name: str
@@ -70,9 +82,13 @@ class LoopMember:
     length: float
     material: Material
     area: float | None = None
+    part: str | None = None
 
     def __post_init__(self):
         check_choice("role", self.role, ROLES)
+        if self.part is None:
+            object.__setattr__(self, "part", DEFAULT_PARTS.get(self.name, "rings"))
+        check_choice("part", self.part, MEMBER_PARTS)
         check_positive("length", self.length, "m")
         if self.area is not None:
             check_positive("area", self.area, "m²")
@@ -129,12 +145,28 @@ def check_loop_stiffness(value) -> float:
 
 
 def loop_interference(loop: PreloadLoop, temperature, assembly_temperature: float):
-    """Axial interference of the loop [m] at temperature T [K]:
-    s − Σ_j σ_j·L_j·α_j·(T − T0) (Yu 2017 eq 14–15, the thermal part C2 − 2·b0 with sign)."""
-    t = check_temperature("temperature", temperature)
-    dt = np.asarray(t) - check_temperature("assembly_temperature", assembly_temperature)
-    growth = sum(ROLES[m.role] * m.length * m.material.expansion for m in loop.members)
-    return loop.shim - growth * dt
+    """Axial interference of the loop [m]: s − Σ_j σ_j·L_j·α_j·(T_j − T0) (Yu 2017 eq 14–15,
+    the thermal part C2 − 2·b0 with sign), each member j at the temperature T_j of its part.
+
+    Parameters
+    ----------
+    loop : the :class:`PreloadLoop`
+    temperature : uniform T [K] (float or array) or a
+        :class:`~.temperatures.PartTemperatures`
+    assembly_temperature : T0 [K]
+
+    Returns
+    -------
+    float or ndarray
+        The interference [m] (positive: the loop squeezes the pair).
+    """
+    temps = part_temperatures(temperature)
+    t0 = check_temperature("assembly_temperature", assembly_temperature)
+    growth = 0.0
+    for m in loop.members:
+        dt = np.asarray(temps.of(m.part)) - t0
+        growth = growth + ROLES[m.role] * m.length * m.material.expansion * dt
+    return loop.shim - growth
 
 
 def _pair_residual(p, z, closure, k_loop, geom):

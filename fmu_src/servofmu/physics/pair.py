@@ -1,0 +1,159 @@
+"""A preloaded pair of angular-contact ball bearings in a frame: the :class:`BearingPair`
+configuration (bearing, mounting, lubrication, friction coefficients), its mounting changes
+(:func:`with_mounting`) and the loop quantities fixed at assembly (Yu 2017 eq 14–15)."""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+from dataclasses import dataclass
+
+from . import catalog
+from ._checks import check_choice, check_positive
+from .fits import mounted_geometry
+from .friction import FrictionCoefficients
+from .geometry import BallBearing, RaceGeometry
+from .mounting import Mounting
+from .preload import PreloadLoop, loop_interference, shim_for_preload
+from .viscosity import WaltherViscosity
+
+LUBRICATIONS = ("grease", "solid")
+DEFAULT_COEFFICIENTS = FrictionCoefficients()
+#: Static load limit: 4200 MPa maximum Hertz pressure for ball bearings (ISO 76:2006, the basis
+#: of the basic static load rating): above it the contacts deform permanently (dents of about
+#: 1e-4 of the ball diameter), and the pair is reported as ``overloaded``. It is not seizure.
+PRESSURE_LIMIT = 4.2e9
+
+
+@dataclass(frozen=True)
+class BearingPair:
+    """Configuration of a preloaded pair of angular-contact ball bearings in a frame.
+
+    Attributes
+    ----------
+    bearing : :class:`geometry.BallBearing`
+    mounting : :class:`Mounting`
+    lubrication : "grease" (Yu 2017 eq 9) or "solid" (Ning)
+    lubricant : viscosity model (grease); None for a dry film
+    coefficients : :class:`friction.FrictionCoefficients`
+    regularisation_speed : width ω_r of the smooth sign through zero speed [rad/s]
+    stribeck_speed : decay speed ω_s of the breakaway excess [rad/s]
+    pressure_limit : maximum Hertz pressure above which the pair is overloaded [Pa]
+    differential_sliding : include Heathcote sliding; None: True for solid, False for grease
+    thermal_coupling : False ignores the fit pressures (Yu Fig 3 "without coupling")
+    """
+
+    bearing: BallBearing
+    mounting: Mounting
+    lubrication: str = "grease"
+    lubricant: WaltherViscosity | None = None
+    coefficients: FrictionCoefficients = DEFAULT_COEFFICIENTS
+    regularisation_speed: float = 1e-3
+    stribeck_speed: float = 1e-2
+    pressure_limit: float = PRESSURE_LIMIT
+    differential_sliding: bool | None = None
+    thermal_coupling: bool = True
+
+    def __post_init__(self):
+        check_choice("lubrication", self.lubrication, LUBRICATIONS)
+        if self.lubrication == "grease" and self.lubricant is None:
+            raise ValueError("lubrication = 'grease' needs a lubricant viscosity model")
+        check_positive("regularisation_speed", self.regularisation_speed, "rad/s")
+        check_positive("stribeck_speed", self.stribeck_speed, "rad/s")
+        check_positive("pressure_limit", self.pressure_limit, "Pa")
+
+    @property
+    def sliding(self) -> bool:
+        if self.differential_sliding is None:
+            return self.lubrication == "solid"
+        return self.differential_sliding
+
+    @classmethod
+    def from_catalog(cls, mounting: str, lubricant: str | None = None, **overrides):
+        """Pair built from catalogue keys: ``mounting`` (``data/mountings.toml``; it names its
+        bearing) and ``lubricant`` (``data/lubricants.toml``; a dry film gives solid
+        lubrication). Other fields as keyword overrides."""
+        mnt = catalog.mounting(mounting)
+        kwargs = {"bearing": catalog.bearing(mnt.bearing_key), "mounting": mnt}
+        if lubricant is not None:
+            visc = catalog.lubricant(lubricant)
+            kwargs["lubricant"] = visc
+            kwargs["lubrication"] = "solid" if visc is None else "grease"
+        kwargs.update(overrides)
+        return cls(**kwargs)
+
+
+MOUNTING_CHANGES = (
+    "outer_interference",
+    "inner_interference",
+    "shim",
+    "loop_stiffness",
+    "assembly_preload",
+    "assembly_temperature",
+)
+
+
+def with_mounting(pair: BearingPair, **changes) -> BearingPair:
+    """A copy of ``pair`` with mounting values changed: ``outer_interference``,
+    ``inner_interference`` (diametral, m), ``shim`` (m; clears ``assembly_preload``),
+    ``loop_stiffness`` (N/m, None = from the members), ``assembly_preload`` (N),
+    ``assembly_temperature`` (K)."""
+    unknown = set(changes) - set(MOUNTING_CHANGES)
+    if unknown:
+        raise ValueError(f"mounting change {sorted(unknown)} is not one of {MOUNTING_CHANGES}")
+    m = pair.mounting
+    fit = dataclasses.replace(
+        m.fit,
+        **{k: changes[k] for k in ("outer_interference", "inner_interference") if k in changes},
+    )
+    loop = m.loop
+    if "shim" in changes:
+        loop = dataclasses.replace(loop, shim=changes["shim"])
+    if "loop_stiffness" in changes:
+        loop = dataclasses.replace(loop, stiffness=changes["loop_stiffness"])
+    preload = m.assembly_preload
+    if "shim" in changes:
+        preload = None
+    preload = changes.get("assembly_preload", preload)
+    mounting = dataclasses.replace(
+        m,
+        fit=fit,
+        loop=loop,
+        assembly_preload=preload,
+        assembly_temperature=changes.get("assembly_temperature", m.assembly_temperature),
+    )
+    return dataclasses.replace(pair, mounting=mounting)
+
+
+@functools.lru_cache(maxsize=64)
+def assembly_geometry(pair: BearingPair) -> RaceGeometry:
+    """Mounted geometry at the assembly temperature."""
+    m = pair.mounting
+    return mounted_geometry(
+        pair.bearing, m.fit, m.assembly_temperature, m.assembly_temperature, pair.thermal_coupling
+    ).race
+
+
+@functools.lru_cache(maxsize=64)
+def effective_shim(pair: BearingPair) -> float:
+    """The shim [m]: the loop's, or the one that gives ``assembly_preload`` at T0."""
+    m = pair.mounting
+    if m.assembly_preload is None:
+        return m.loop.shim
+    return shim_for_preload(assembly_geometry(pair), m.assembly_preload, loop_stiffness(pair))
+
+
+def loop_stiffness(pair: BearingPair) -> float:
+    """Structural axial stiffness of the preload loop [N/m] (inf: rigid)."""
+    return pair.mounting.loop.structural_stiffness
+
+
+def loop_closure(pair: BearingPair, temperature):
+    """C(T) = 2·h(T0) + s − Σ σ·L·α·(T_j − T0) [m] at a uniform temperature [K] or the parts'
+    temperatures (each member j at its part's T_j; see :mod:`preload`)."""
+    m = pair.mounting
+    loop = m.loop
+    if effective_shim(pair) != loop.shim:
+        loop = PreloadLoop(loop.members, effective_shim(pair), loop.stiffness)
+    h0 = float(assembly_geometry(pair).first_contact_offset)
+    return 2.0 * h0 + loop_interference(loop, temperature, m.assembly_temperature)

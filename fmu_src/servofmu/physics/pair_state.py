@@ -1,0 +1,440 @@
+"""The exact state of a bearing pair, vectorised over operating points (Yu 2017 §1–3;
+Ning §1–2):
+
+1. :func:`thermal_state` — everything that depends on temperature only: the mounted geometry
+   (Yu eq 10–13), the clearance and free contact angle, the loop closure (eq 14–15), the
+   preload at zero external load, the lubricant viscosity (eq 18);
+2. :func:`load_state` — the pair under external axial and radial loads: per-ball loads and
+   contact angles (Jones), the speed-independent torques (eq 1–7, Ning), preload, axial
+   stiffness, maximum contact pressure and the flags ``overloaded``, ``locked`` and
+   ``unloaded`` (:func:`state_flags`);
+3. :func:`bearing_outputs` — the speed-dependent part: Palmgren's viscous torque (eq 8), the
+   total (eq 9), breakaway versus running torque, the regularised signed friction torque and
+   the power loss.
+
+Every root is found with bracketing solvers (scipy), so this path cannot fail to converge: it
+is the reference of the per-step continuation (:mod:`.continuation`) and its fallback.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from ._checks import check_finite
+from .equilibrium import _axial_state, _ring_stiffness
+from .fits import mounted_geometry
+from .friction import BallSetTorques, _palmgren, _regularised, ball_set_torques
+from .geometry import RaceGeometry
+from .pair import BearingPair, loop_closure, loop_stiffness
+from .preload import pair_axial_stiffness, pair_equilibrium, pair_offsets
+from .temperatures import PARTS, PartTemperatures, part_temperatures
+
+
+@dataclass(frozen=True)
+class ThermalState:
+    """Temperature-only state of the pair (arrays over temperature, or scalars).
+
+    Attributes
+    ----------
+    temperatures : the parts' temperatures [K] (:class:`~.temperatures.PartTemperatures`;
+        all equal for a uniform temperature)
+    geometry : mounted :class:`RaceGeometry`
+    outer_fit_pressure, inner_fit_pressure : Lamé pressures [Pa]
+    outer_interference, inner_interference : diametral fit interferences at T [m]
+    closure : loop closure C [m]
+    loop_stiffness : k_loop [N/m]
+    kinematic_viscosity : ν [m²/s] (0 for a dry film)
+    preload_offset : offset of each bearing at zero external load [m]
+    """
+
+    temperatures: PartTemperatures
+    geometry: RaceGeometry
+    outer_fit_pressure: np.ndarray
+    inner_fit_pressure: np.ndarray
+    outer_interference: np.ndarray
+    inner_interference: np.ndarray
+    closure: np.ndarray
+    loop_stiffness: float
+    kinematic_viscosity: np.ndarray
+    preload_offset: np.ndarray
+
+    @property
+    def temperature(self):
+        """Temperature of balls and lubricant [K] (the uniform temperature when uniform)."""
+        return np.asarray(self.temperatures.lubricant)
+
+    @property
+    def clearance(self):
+        """Operating diametral clearance Pd [m]."""
+        return self.geometry.clearance
+
+    @property
+    def pitch_diameter(self):
+        """Operating pitch diameter dm [m]."""
+        return self.geometry.pitch_diameter
+
+    @property
+    def free_contact_angle(self):
+        """Free contact angle at the operating clearance [rad]."""
+        return self.geometry.free_contact_angle
+
+
+def thermal_state(pair: BearingPair, temperature) -> ThermalState:
+    """Temperature-only state of the pair; Yu 2017 eq 10–18.
+
+    Parameters
+    ----------
+    pair : the :class:`BearingPair`
+    temperature : uniform temperature [K] (float or array), or the parts' temperatures
+        (:class:`~.temperatures.PartTemperatures`, fields broadcasting together)
+
+    Returns
+    -------
+    ThermalState
+        Mounted geometry [m], fit pressures [Pa] and interferences [m], loop closure [m],
+        loop stiffness [N/m], viscosity [m²/s] and the unloaded pair's offset [m].
+    """
+    temps = part_temperatures(temperature)
+    temps = PartTemperatures(
+        *np.broadcast_arrays(*(np.asarray(getattr(temps, f), float) for f in PARTS))
+    )
+    m = pair.mounting
+    mounted = mounted_geometry(
+        pair.bearing, m.fit, temps, m.assembly_temperature, pair.thermal_coupling
+    )
+    closure = loop_closure(pair, temps)
+    k = loop_stiffness(pair)
+    offsets = pair_offsets(mounted.race, closure, k, 0.0)
+    t_lub = np.asarray(temps.lubricant)
+    visc = (
+        np.zeros_like(t_lub)
+        if pair.lubricant is None
+        else pair.lubricant.kinematic_viscosity(t_lub)
+    )
+    return ThermalState(
+        temperatures=temps,
+        geometry=mounted.race,
+        outer_fit_pressure=mounted.outer_fit_pressure,
+        inner_fit_pressure=mounted.inner_fit_pressure,
+        outer_interference=np.asarray(mounted.outer_interference),
+        inner_interference=np.asarray(mounted.inner_interference),
+        closure=closure,
+        loop_stiffness=k,
+        kinematic_viscosity=np.asarray(visc),
+        preload_offset=offsets.offset_a,
+    )
+
+
+@dataclass(slots=True)
+class LoadState:
+    """Speed-independent state of the pair under load (arrays or scalars).
+
+    Attributes
+    ----------
+    force_a, force_b : axial forces of bearings A and B [N]
+    preload : loop force (F_A + F_B)/2 [N]
+    contact_angle : load-weighted operating contact angle of bearing A [rad] (the free
+        contact angle when A carries no load)
+    axial_stiffness : stiffness of the shaft in the pair [N/m]
+    max_contact_pressure : largest Hertz pressure over all contacts [Pa]
+    overloaded, locked, unloaded : the flags of :func:`state_flags`
+    torques : speed-independent torques of both bearings (:class:`friction.BallSetTorques`)
+    axial_displacement : axial displacement of the shaft from its unloaded position,
+        z = (a_A − a_B)/2 [m] (positive towards bearing A)
+    converged : the load equilibrium was solved
+    offset_a, offset_b : axial offsets of the groove curvature centres of A and B [m]
+    radial_a, radial_b : radial displacements of the shaft in A and B [m]
+    ball_cosines : per-ball cos α of A and B over half the ring (ψ = 2πj/Z, j ≤ Z/2) under
+        a radial load, else None (the continuation's start after an exact solve)
+    """
+
+    force_a: np.ndarray
+    force_b: np.ndarray
+    preload: np.ndarray
+    contact_angle: np.ndarray
+    axial_stiffness: np.ndarray
+    max_contact_pressure: np.ndarray
+    overloaded: np.ndarray
+    locked: np.ndarray
+    unloaded: np.ndarray
+    torques: BallSetTorques
+    axial_displacement: np.ndarray = 0.0
+    converged: bool = True
+    offset_a: np.ndarray = 0.0
+    offset_b: np.ndarray = 0.0
+    radial_a: float = 0.0
+    radial_b: float = 0.0
+    ball_cosines: tuple | None = None
+
+
+def state_flags(
+    pair: BearingPair, clearance, max_contact_pressure, force_a, force_b, converged=True
+) -> dict:
+    """What the model knows about the state of the pair, as three flags (arrays or bools).
+
+    - ``overloaded``: the largest Hertz pressure ``max_contact_pressure`` [Pa] reaches the
+      pair's ``pressure_limit`` (ISO 76: 4200 MPa, permanent deformation of the races);
+    - ``locked``: no operating clearance is left (diametral ``clearance`` [m] ≤ 0: the balls
+      are pinched between the rings already without axial offset, the contact angle has
+      collapsed and the pair can no longer set its own contact angle), or the load
+      equilibrium has no solution (``converged`` False);
+    - ``unloaded``: the preload is lost: one bearing's axial force ``force_a``/``force_b`` [N]
+      is zero, so the shaft has axial play (with no external load: both are zero).
+
+    Returns
+    -------
+    dict
+        ``{"overloaded", "locked", "unloaded"}``: bools for floats, boolean arrays for arrays.
+    """
+    return {
+        "overloaded": max_contact_pressure >= pair.pressure_limit,
+        "locked": (clearance <= 0.0) | (not converged),
+        "unloaded": (force_a <= 0.0) | (force_b <= 0.0),
+    }
+
+
+def _torques(pair: BearingPair, geom: RaceGeometry, load, alpha, inner, outer, count=1):
+    t = ball_set_torques(
+        load,
+        alpha,
+        inner,
+        outer,
+        geom.pitch_diameter,
+        geom.ball_diameter,
+        geom.inner_groove_radius,
+        geom.outer_groove_radius,
+        pair.coefficients,
+        pair.lubrication,
+        pair.sliding,
+    )
+    if count == 1:
+        return t
+    return BallSetTorques(*(count * getattr(t, f.name) for f in fields(BallSetTorques)))
+
+
+def _add(t1: BallSetTorques, t2: BallSetTorques) -> BallSetTorques:
+    return BallSetTorques(*(getattr(t1, f.name) + getattr(t2, f.name) for f in fields(t1)))
+
+
+def _max_pressure(load, inner, outer):
+    return np.maximum(inner.max_pressure(load), outer.max_pressure(load)).max(axis=-1)
+
+
+def load_state(pair: BearingPair, thermal: ThermalState, axial_load=0.0, radial_load=0.0):
+    """State of the pair at ``thermal`` under ``axial_load`` [N] (pressing bearing A) and
+    ``radial_load`` [N]. Vectorised over temperature when the radial load is zero (every ball
+    of a bearing alike, Yu eq 4); a radial load is solved per ball (Jones) with the pair
+    equilibrium of :func:`preload.pair_equilibrium` (scalar temperature)."""
+    f_ext = check_finite("axial_load", axial_load, "N")
+    f_r = check_finite("radial_load", radial_load, "N")
+    if np.any(np.asarray(f_r) != 0):
+        return _combined_load_state(pair, thermal, float(f_ext), float(f_r))
+    if np.all(np.asarray(f_ext) == 0):
+        a_a = a_b = thermal.preload_offset
+    else:
+        off = pair_offsets(thermal.geometry, thermal.closure, thermal.loop_stiffness, f_ext)
+        a_a, a_b = off.offset_a, off.offset_b
+    return axial_load_state(pair, thermal, a_a, a_b)
+
+
+def axial_load_state(pair: BearingPair, thermal: ThermalState, offset_a, offset_b) -> LoadState:
+    """:class:`LoadState` of the pair with bearings A and B at axial offsets ``offset_a``,
+    ``offset_b`` [m] and no radial load: every ball of a bearing alike (Yu eq 4), so the
+    torques are Z times one ball's (elementwise over arrays)."""
+    geom, k = thermal.geometry, thermal.loop_stiffness
+    sa, sb = _axial_state(geom, offset_a), _axial_state(geom, offset_b)
+    z = geom.n_balls
+
+    def ball(s):
+        """One ball of the state with a trailing ball axis of length 1."""
+        contacts = [
+            type(c)(*(np.asarray(getattr(c, f.name))[..., None] for f in fields(c)))
+            for c in (s.inner, s.outer)
+        ]
+        return np.asarray(s.ball_load)[..., None], np.asarray(s.contact_angle)[..., None], contacts
+
+    (qa, ala, ea), (qb, alb, eb) = ball(sa), ball(sb)
+    t = _add(
+        _torques(pair, geom, qa, ala, *ea, count=z), _torques(pair, geom, qb, alb, *eb, count=z)
+    )
+    p_max = np.maximum(_max_pressure(qa, *ea), _max_pressure(qb, *eb))
+    angle = np.where(sa.ball_load > 0, sa.contact_angle, geom.free_contact_angle)
+    return LoadState(
+        force_a=sa.axial_force,
+        force_b=sb.axial_force,
+        preload=0.5 * (sa.axial_force + sb.axial_force),
+        contact_angle=angle,
+        axial_stiffness=pair_axial_stiffness(sa.axial_stiffness, sb.axial_stiffness, k),
+        max_contact_pressure=p_max,
+        **state_flags(pair, geom.clearance, p_max, sa.axial_force, sb.axial_force),
+        torques=t,
+        axial_displacement=0.5 * (np.asarray(offset_a) - np.asarray(offset_b)),
+        offset_a=np.asarray(offset_a),
+        offset_b=np.asarray(offset_b),
+    )
+
+
+def _combined_load_state(pair, thermal, f_ext, f_r) -> LoadState:
+    if np.ndim(thermal.temperature):
+        raise ValueError("a radial load needs a scalar temperature (one thermal state)")
+    geom, k = thermal.geometry, thermal.loop_stiffness
+    st = pair_equilibrium(geom, float(thermal.closure), k, f_ext, f_r)
+    la, lb = st.balls_a, st.balls_b
+    t = _add(
+        _torques(pair, geom, la.load, la.contact_angle, la.inner, la.outer),
+        _torques(pair, geom, lb.load, lb.contact_angle, lb.inner, lb.outer),
+    )
+    t = BallSetTorques(*(np.asarray(getattr(t, f.name))[0] for f in fields(t)))
+    qa = la.load[0]
+    angle = (
+        float(np.sum(qa * la.contact_angle[0]) / np.sum(qa))
+        if qa.sum() > 0
+        else geom.free_contact_angle
+    )
+    ka = _ring_stiffness(geom, la)[0, 0, 0]
+    kb = _ring_stiffness(geom, lb)[0, 0, 0]
+    p_max = max(
+        float(_max_pressure(la.load, la.inner, la.outer)[0]),
+        float(_max_pressure(lb.load, lb.inner, lb.outer)[0]),
+    )
+    fa, fb = float(la.axial_force[0]), float(lb.axial_force[0])
+    return LoadState(
+        force_a=fa,
+        force_b=fb,
+        preload=0.5 * (fa + fb),
+        contact_angle=angle,
+        axial_stiffness=float(pair_axial_stiffness(ka, kb, k)),
+        max_contact_pressure=p_max,
+        **state_flags(pair, geom.clearance, p_max, fa, fb, st.converged),
+        torques=t,
+        axial_displacement=0.5 * (st.offset_a - st.offset_b),
+        converged=st.converged,
+        offset_a=st.offset_a,
+        offset_b=st.offset_b,
+        radial_a=st.radial_a,
+        radial_b=st.radial_b,
+        ball_cosines=tuple(np.cos(b.contact_angle[0, : geom.n_balls // 2 + 1]) for b in (la, lb)),
+    )
+
+
+@dataclass(slots=True)
+class BearingOutputs:
+    """Everything the BearingFriction FMU reports (DESIGN §3), SI; arrays or floats.
+
+    friction_torque [N·m] signed like speed (opposes rotation), running_torque and
+    breakaway_torque [N·m], hysteresis/spin/sliding/viscous_torque [N·m], preload [N],
+    contact_angle [rad], radial_clearance [m], kinematic_viscosity [m²/s], axial_stiffness
+    [N/m], power_loss [W], overloaded, locked, unloaded (see :func:`state_flags`); plus
+    inner_ring_torque/outer_ring_torque [N·m], max_contact_pressure [Pa],
+    outer/inner_fit_pressure [Pa], outer/inner_interference [m], force_a/force_b [N],
+    axial_displacement [m].
+    """
+
+    friction_torque: float
+    running_torque: float
+    breakaway_torque: float
+    hysteresis_torque: float
+    spin_torque: float
+    sliding_torque: float
+    viscous_torque: float
+    preload: float
+    contact_angle: float
+    radial_clearance: float
+    kinematic_viscosity: float
+    axial_stiffness: float
+    power_loss: float
+    overloaded: bool
+    locked: bool
+    unloaded: bool
+    inner_ring_torque: float
+    outer_ring_torque: float
+    max_contact_pressure: float
+    outer_fit_pressure: float
+    inner_fit_pressure: float
+    outer_interference: float
+    inner_interference: float
+    force_a: float
+    force_b: float
+    axial_displacement: float
+
+    def as_dict(self) -> dict:
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
+def _speed_terms(pair: BearingPair, thermal: ThermalState, load: LoadState, w):
+    """(signed friction, running, viscous, Coulomb part, breakaway excess) at speed w [rad/s]
+    (Yu 2017 eq 8–9 and the regularised sign); floats in, floats out on the per-step path."""
+    t = load.torques
+    s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
+    viscous = 2.0 * _palmgren(thermal.kinematic_viscosity, w, thermal.pitch_diameter, s0)
+    coulomb = t.hysteresis + t.spin + t.sliding
+    excess = (pair.coefficients.static_friction_ratio - 1.0) * (t.spin + t.sliding)
+    running = coulomb + viscous
+    signed = _regularised(w, running, excess, pair.regularisation_speed, pair.stribeck_speed)
+    return signed, running, viscous, coulomb, excess
+
+
+def bearing_outputs(
+    pair: BearingPair, thermal: ThermalState, load: LoadState, speed
+) -> BearingOutputs:
+    """Speed-dependent outputs at ``speed`` [rad/s] (Yu 2017 eq 8–9; regularised sign)."""
+    w = speed if type(speed) is float else check_finite("speed", speed, "rad/s")
+    t = load.torques
+    signed, running, viscous, coulomb, excess = _speed_terms(pair, thermal, load, w)
+    s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
+    dm = thermal.pitch_diameter
+    viscous_rest = 2.0 * _palmgren(thermal.kinematic_viscosity, 0.0, dm, s0)
+    return BearingOutputs(
+        friction_torque=signed,
+        running_torque=running,
+        breakaway_torque=coulomb + excess + viscous_rest,
+        hysteresis_torque=t.hysteresis,
+        spin_torque=t.spin,
+        sliding_torque=t.sliding,
+        viscous_torque=viscous,
+        preload=load.preload,
+        contact_angle=load.contact_angle,
+        radial_clearance=thermal.clearance,
+        kinematic_viscosity=thermal.kinematic_viscosity,
+        axial_stiffness=load.axial_stiffness,
+        power_loss=signed * w,
+        overloaded=load.overloaded,
+        locked=load.locked,
+        unloaded=load.unloaded,
+        inner_ring_torque=t.inner_ring,
+        outer_ring_torque=t.outer_ring,
+        max_contact_pressure=load.max_contact_pressure,
+        outer_fit_pressure=thermal.outer_fit_pressure,
+        inner_fit_pressure=thermal.inner_fit_pressure,
+        outer_interference=thermal.outer_interference,
+        inner_interference=thermal.inner_interference,
+        force_a=load.force_a,
+        force_b=load.force_b,
+        axial_displacement=load.axial_displacement,
+    )
+
+
+def operating_outputs(
+    pair: BearingPair, temperature, speed, axial_load=0.0, radial_load=0.0
+) -> BearingOutputs:
+    """Exact outputs at temperature [K], speed [rad/s], axial load [N] (arrays broadcast
+    together; vectorised when the radial load is zero) and radial load [N] (then scalars):
+    :func:`thermal_state`, :func:`load_state` and :func:`bearing_outputs` in one call."""
+    th = thermal_state(pair, temperature)
+    return bearing_outputs(pair, th, load_state(pair, th, axial_load, radial_load), speed)
+
+
+def to_floats(obj):
+    """The dataclass ``obj`` with every 0-d array field (recursively) made a Python float or
+    bool, for the per-step scalar path."""
+    changes = {}
+    for f in fields(obj):
+        v = getattr(obj, f.name)
+        if dataclasses.is_dataclass(v):
+            changes[f.name] = to_floats(v)
+        elif isinstance(v, (np.ndarray, np.generic)) and np.ndim(v) == 0:
+            changes[f.name] = bool(v) if v.dtype == bool else float(v)
+    return dataclasses.replace(obj, **changes)

@@ -1,0 +1,218 @@
+"""The per-step continuation (physics/continuation.py) against the exact vectorised path.
+
+Every BearingFriction output of BearingModel.evaluate must equal operating_outputs (bracketing
+root finders, no warm start) to a relative 1e-9, or an absolute floor near zero: 1e-12 N·m for
+torques and power, 1e-9 N for forces, 1e-15 m for the shaft displacement (the exact path solves
+offsets to 1e-16 m).
+"""
+
+import dataclasses
+import json
+import math
+
+import numpy as np
+import pytest
+from scipy.special import ellipe, ellipk
+
+from servofmu.physics import continuation
+from servofmu.physics.bearing import (
+    BearingModel,
+    BearingPair,
+    PartTemperatures,
+    operating_outputs,
+    with_mounting,
+)
+from servofmu.physics.hertz import curvature_difference_of_ellipticity, ellipticity
+
+REL = 1e-9
+FLOORS = {"N.m": 1e-12, "N": 1e-9, "m": 1e-15, "W": 1e-12}
+UNIT = {
+    "preload": "N",
+    "force_a": "N",
+    "force_b": "N",
+    "axial_displacement": "m",
+    "power_loss": "W",
+    "outer_interference": "m",
+    "inner_interference": "m",
+}
+FLAGS = ("overloaded", "locked", "unloaded")
+
+
+def _unit(name):
+    return "N.m" if name.endswith("torque") else UNIT.get(name, "")
+
+
+def assert_equal_outputs(fast, exact, where=""):
+    for f in dataclasses.fields(fast):
+        a, b = getattr(fast, f.name), np.asarray(getattr(exact, f.name)).item()
+        if f.name in FLAGS:
+            assert bool(a) == bool(b), f"{f.name} {where}"
+            continue
+        floor = FLOORS.get(_unit(f.name), 0.0)
+        assert a == pytest.approx(b, rel=REL, abs=floor), f"{f.name} {where}"
+
+
+def _trajectory(seed, n, radial):
+    """Temperature down to −60 °C and up to +80 °C with noise, random-walk loads and speed."""
+    rng = np.random.default_rng(seed)
+    swing = np.interp(np.arange(n), [0, n / 3, n], [273.15, 213.15, 353.15])
+    t = np.clip(swing + rng.normal(0.0, 1.0, n), 213.15, 353.15)
+    fa = np.clip(np.cumsum(rng.normal(0.0, 4.0, n)), -150.0, 150.0)
+    fr = np.clip(np.cumsum(rng.normal(0.0, 2.0, n)), 0.0, 40.0) if radial else np.zeros(n)
+    w = rng.normal(0.0, 0.3, n)
+    return t, fa, fr, w
+
+
+PAIRS = {
+    # stated reading, rigid E·A/L loop: overloaded cold, preload lost warm
+    "yu_stated": lambda: BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"),
+    "yu_printed": lambda: BearingPair.from_catalog("yu2017_gimbal_printed", "krytox_143aa"),
+    "yu_yoke": lambda: with_mounting(
+        BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"), loop_stiffness=1e6
+    ),
+    "ning_solid": lambda: BearingPair.from_catalog("ning_space_shaft", "mos2_film"),
+    # a tight outer fit: the clearance closes when cold (locked)
+    "yu_tight": lambda: with_mounting(
+        BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"),
+        outer_interference=16e-6,
+        loop_stiffness=1e6,
+    ),
+}
+
+
+@pytest.mark.parametrize("name", sorted(PAIRS))
+def test_axial_trajectory_equals_the_exact_path(name):
+    pair = PAIRS[name]()
+    model = BearingModel(pair)
+    t, fa, _, w = _trajectory(1, 160, radial=False)
+    seen, flags = set(), None
+    for i in range(len(t)):
+        out = model.evaluate(float(t[i]), float(w[i]), float(fa[i]))
+        now = {f for f in FLAGS if getattr(out, f)}
+        if i % 5 == 0 or now != flags:  # every 5th step, and every change of a flag
+            exact = operating_outputs(pair, float(t[i]), float(w[i]), float(fa[i]))
+            assert_equal_outputs(out, exact, f"step {i}")
+        seen |= now
+        flags = now
+    assert model.exact_steps <= 0.1 * len(t)  # the continuation carries the trajectory
+    if name == "yu_stated":  # the trajectory crosses the preload loss and the overload
+        assert {"overloaded", "unloaded"} <= seen
+    if name == "yu_tight":
+        assert "locked" in seen
+
+
+@pytest.mark.parametrize("name", ["yu_printed", "ning_solid"])
+def test_radial_trajectory_equals_the_exact_path(name):
+    pair = PAIRS[name]()
+    model = BearingModel(pair)
+    t, fa, fr, w = _trajectory(2, 40, radial=True)
+    fr = fr + 1.0  # keep a radial load on every step
+    for i in range(len(t)):
+        out = model.evaluate(float(t[i]), float(w[i]), float(fa[i]), float(fr[i]))
+        exact = operating_outputs(pair, float(t[i]), float(w[i]), float(fa[i]), float(fr[i]))
+        assert_equal_outputs(out, exact, f"step {i}")
+    assert model.exact_steps <= 3
+
+
+def test_part_temperatures_equal_the_exact_path():
+    pair = PAIRS["yu_printed"]()
+    model = BearingModel(pair)
+    rng = np.random.default_rng(3)
+    base = 253.15
+    for i in range(60):
+        base += rng.normal(0.0, 2.0)
+        temps = PartTemperatures(*(base + rng.normal(0.0, 3.0, 4)))
+        out = model.evaluate(temps, 0.1, 10.0)
+        assert_equal_outputs(out, operating_outputs(pair, temps, 0.1, 10.0), f"step {i}")
+
+
+def test_equal_part_temperatures_give_the_uniform_result_exactly():
+    pair = PAIRS["yu_printed"]()
+    for t in (223.15, 293.15, 343.15):
+        uniform = BearingModel(pair).evaluate(t, 0.2, 7.0)
+        parts = BearingModel(pair).evaluate(PartTemperatures(t, t, t, t), 0.2, 7.0)
+        assert uniform == parts
+
+
+def test_a_jump_falls_back_to_the_exact_path_and_continues():
+    pair = PAIRS["yu_stated"]()
+    model = BearingModel(pair)
+    model.evaluate(233.15, 0.1)
+    out = model.evaluate(353.15, 0.1, 400.0, 30.0)  # everything jumps at once
+    assert_equal_outputs(out, operating_outputs(pair, 353.15, 0.1, 400.0, 30.0))
+    before = model.exact_steps
+    out = model.evaluate(353.0, 0.1, 399.0, 30.0)
+    assert_equal_outputs(out, operating_outputs(pair, 353.0, 0.1, 399.0, 30.0))
+    assert model.exact_steps == before  # the next small step is a warm start again
+
+
+def test_state_restore_mid_ramp_repeats_bit_for_bit():
+    pair = PAIRS["yu_yoke"]()
+    ramp = np.linspace(223.15, 333.15, 60)
+    a = BearingModel(pair)
+    for t in ramp[:30]:
+        a.evaluate(float(t), 0.1, 5.0)
+    saved = json.loads(json.dumps(a.state()))
+    rest_a = [a.evaluate(float(t), 0.1, 5.0 + 0.1 * k) for k, t in enumerate(ramp[30:])]
+    b = BearingModel(pair)
+    b.restore(saved)
+    rest_b = [b.evaluate(float(t), 0.1, 5.0 + 0.1 * k) for k, t in enumerate(ramp[30:])]
+    assert rest_a == rest_b  # dataclass equality: every float identical
+    assert b.exact_steps == 0
+
+
+@pytest.mark.parametrize("f_rho", [0.85, 0.93, 0.97])
+def test_anchor_expansion_error_at_the_renewal_threshold(f_rho):
+    # k, K(m), E(m) from the second-order anchor expansion against scipy at Δk/k = ANCHOR_DRIFT
+    k0 = ellipticity(f_rho)
+    anchor = continuation.Anchor(k0)
+    k_true = k0 * (1.0 + continuation.ANCHOR_DRIFT)
+    df = curvature_difference_of_ellipticity(k_true) - anchor.f
+    q = df / anchor.f1
+    k = anchor.k + q * (1.0 - 0.5 * anchor.f2 * q / anchor.f1)
+    dm = (1.0 - 1.0 / k**2) - anchor.m
+    m_true = 1.0 - 1.0 / k_true**2
+    assert k == pytest.approx(k_true, rel=2e-12)
+    k_int = anchor.k_int + (anchor.k1 + 0.5 * anchor.k2 * dm) * dm
+    e_int = anchor.e_int + (anchor.e1 + 0.5 * anchor.e2 * dm) * dm
+    assert k_int == pytest.approx(float(ellipk(m_true)), rel=2e-12)
+    assert e_int == pytest.approx(float(ellipe(m_true)), rel=2e-12)
+
+
+def test_anchor_derivatives_against_finite_differences():
+    k0 = 8.0
+    a = continuation.Anchor(k0)
+    h = 1e-5 * k0
+    f = curvature_difference_of_ellipticity
+    assert a.f1 == pytest.approx((f(k0 + h) - f(k0 - h)) / (2 * h), rel=1e-7)
+    assert a.f2 == pytest.approx((f(k0 + h) - 2 * f(k0) + f(k0 - h)) / h**2, rel=1e-4)
+    m0, dm = a.m, 1e-6
+    assert a.k1 == pytest.approx((ellipk(m0 + dm) - ellipk(m0 - dm)) / (2 * dm), rel=1e-7)
+    assert a.e2 == pytest.approx(
+        (ellipe(m0 + dm) - 2 * ellipe(m0) + ellipe(m0 - dm)) / dm**2, rel=1e-3
+    )
+
+
+def test_bad_input_names_the_variable_and_keeps_the_state():
+    model = BearingModel(PAIRS["yu_printed"]())
+    good = model.evaluate(293.15, 0.1, 5.0)
+    with pytest.raises(ValueError, match=r"housing_temperature = -1\.0 K"):
+        model.evaluate(PartTemperatures(-1.0, 293.15, 293.15, 293.15), 0.1, 5.0)
+    with pytest.raises(ValueError, match=r"axial_load = nan N"):
+        model.evaluate(293.15, 0.1, math.nan)
+    assert model.evaluate(293.15, 0.1, 5.0) == good
+
+
+def test_state_restore_right_after_an_exact_solve_repeats_bit_for_bit():
+    # the fuzzing's case: save right after the exact path solved a radial step, restore, and
+    # ask for the same operating point again
+    pair = PAIRS["yu_stated"]()
+    a = BearingModel(pair)
+    a.evaluate(293.15, 0.0)
+    first = a.evaluate(322.0, 0.0, 0.0, 1.0)
+    saved = json.loads(json.dumps(a.state()))
+    nxt = a.evaluate(322.5, 0.0, 0.0, 1.0)
+    b = BearingModel(pair)
+    b.restore(saved)
+    assert b.evaluate(322.0, 0.0, 0.0, 1.0) == first
+    assert b.evaluate(322.5, 0.0, 0.0, 1.0) == nxt
