@@ -7,6 +7,9 @@ from pathlib import Path
 
 from servofmu.fmus.slave import BUILD_INFO
 
+from .archive import ArchiveError, check_archive, read_member
+from .xmlsafe import XMLError, parse
+
 
 def validate(path) -> list[str]:
     """All problems found in the FMU at ``path`` (empty when it passes).
@@ -18,10 +21,6 @@ def validate(path) -> list[str]:
     from fmpy import read_model_description
     from fmpy.validation import validate_fmu
 
-    from servofmu.harness import HarnessError
-    from servofmu.harness.archive import check_archive, read_member
-    from servofmu.harness.xmlsafe import parse
-
     path = Path(path)
     if not path.is_file():
         return [f"{path}: no such FMU"]
@@ -32,7 +31,7 @@ def validate(path) -> list[str]:
         return unsafe
     try:
         parse(read_member(path, "modelDescription.xml"), f"{path.name}/modelDescription.xml")
-    except HarnessError as exc:
+    except (ArchiveError, XMLError) as exc:
         return [str(exc)]
     problems = [f"fmpy: {p}" for p in validate_fmu(str(path))]
     try:

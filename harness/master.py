@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import HarnessError
-from .system import System, load_system
+from .system import System, describe_items, load_system
 
 STATUS = ("OK", "Warning", "Discard", "Error", "Fatal", "Pending")
 ALGORITHMS = ("gauss-seidel", "jacobi")
@@ -262,7 +262,10 @@ def _overrides(system: System, parameters) -> dict[str, object]:
 
 
 def _typed(target: str, var, value):
-    """``value`` (text from a command line, or a Python value) as the type of ``var``."""
+    """``value`` (text from a command line, or a Python value) as the type of ``var``; a
+    choice takes an item name or its value."""
+    if var.items is not None:
+        return _item(target, var, value)
     try:
         if var.type == "Real":
             x = float(value)
@@ -282,6 +285,19 @@ def _typed(target: str, var, value):
         raise HarnessError(
             f"parameter {target} = {value!r} is not a finite {var.type} value"
         ) from None
+
+
+def _item(target: str, var, value) -> int:
+    """The value of choice ``var`` named by ``value`` (an item name, or its value as an int
+    or as text)."""
+    if isinstance(value, str):
+        text = value.strip()
+        if text in var.items:
+            return var.items[text]
+        value = int(text) if text.lstrip("+-").isdigit() else text
+    if type(value) is int and value in var.items.values():
+        return value
+    raise HarnessError(f"parameter {target} = {value!r} is not one of {describe_items(var.items)}")
 
 
 @dataclass(frozen=True)
