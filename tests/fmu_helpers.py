@@ -3,10 +3,6 @@
 from __future__ import annotations
 
 from fmpy import extract, read_model_description
-
-from servofmu.build.archive import read_member
-from servofmu.build.choices import choice_items
-from servofmu.build.xmlsafe import parse
 from fmpy.fmi1 import calloc, free
 from fmpy.fmi2 import (
     FMU2Slave,
@@ -15,6 +11,10 @@ from fmpy.fmi2 import (
     fmi2CallbackFunctions,
     fmi2CallbackLoggerTYPE,
 )
+
+from servofmu.build.archive import read_member
+from servofmu.build.choices import choice_items
+from servofmu.build.xmlsafe import parse
 
 _KEEP = []  # ctypes callbacks and extracted folders must outlive the instances
 
