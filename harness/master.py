@@ -288,15 +288,21 @@ def _typed(target: str, var, value):
 
 
 def _item(target: str, var, value) -> int:
-    """The value of choice ``var`` named by ``value`` (an item name, or its value as an int
-    or as text)."""
+    """The value of choice ``var`` named by ``value``: an item name, or its value (an int, or
+    text or a float that reads as one); a number that is no item value may still be an item
+    name that reads as a number (a bearing "71803" from a command line)."""
     if isinstance(value, str):
         text = value.strip()
         if text in var.items:
             return var.items[text]
         value = int(text) if text.lstrip("+-").isdigit() else text
-    if type(value) is int and value in var.items.values():
-        return value
+    if isinstance(value, float) and value.is_integer():
+        value = int(value)
+    if type(value) is int:
+        if value in var.items.values():
+            return value
+        if str(value) in var.items:
+            return var.items[str(value)]
     raise HarnessError(f"parameter {target} = {value!r} is not one of {describe_items(var.items)}")
 
 

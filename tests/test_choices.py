@@ -191,3 +191,22 @@ def test_physics_does_not_import_the_fmu_layer():
                 assert "fmus" not in (node.module or ""), source.name
             if isinstance(node, ast.Import):
                 assert not [a for a in node.names if "fmus" in a.name], source.name
+
+
+def test_a_catalogue_key_that_reads_as_a_number_stays_a_key(fmus):
+    """The command line parses --grid/--parameters values as floats when they read as one:
+    the bearing "71803" must still name the bearing (harness and the sweep's model task)."""
+    from servofmu.harness.sweep import ModelTask
+    from servofmu.physics.bearing_parameters import default_parameters
+
+    base = default_parameters("yu2017_gimbal")
+    rows = ModelTask(base, ("preload",))([{"bearing": 71803.0}, {"bearing": "71803"}])
+    assert "error" not in rows[0] and rows[0]["preload"] == rows[1]["preload"]
+    system = load_system(fmus["BearingFriction"].parent / "seeker_gimbal.ssp")
+    try:
+        for value in (71803.0, "71803", 2, "2"):  # the name, or the item value 2
+            run(system, parameters={"bearing.bearing": value}, stop=0.002, progress=False)
+        with pytest.raises(HarnessError, match=r"bearing = 71804 is not one of the items"):
+            run(system, parameters={"bearing.bearing": 71804.0}, stop=0.002)
+    finally:
+        system.close()
