@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import dataclasses
 
-from servofmu.fmus.slave import ServoSlave, Var, items, output, real_input
+from servofmu.fmus.slave import ServoSlave, Var, items, output, real_input, real_parameter
 from servofmu.physics import catalog
 from servofmu.physics.actuator import ActuatorModel
 from servofmu.physics.bearing import BearingPair, with_mounting
@@ -41,18 +41,8 @@ _ELEMENTS = (*_GEAR, "screw_axial_stiffness", "housing_axial_stiffness", *_LINKA
 def _p(name, description, unit, display, lo, hi, field=None):
     """A Real parameter whose default and provenance are the Liu 2014 record's ``field``."""
     field = field or name
-    return Var(
-        name=name,
-        type="Real",
-        causality="parameter",
-        description=description,
-        start=float(getattr(_A, field)),
-        unit=unit,
-        display_unit=display,
-        min=lo,
-        max=hi,
-        source=_A.source(field),
-    )
+    start = float(getattr(_A, field))
+    return real_parameter(name, description, start, unit, display, lo, hi, source=_A.source(field))
 
 
 def _choice(name, description, choices, declared_type, start, source):
@@ -269,15 +259,14 @@ class ActuatorStiffness(ServoSlave):
             "",
             "catalogue: data/bearings.toml",
         ),
-        Var(
-            name="support_preload",
-            type="Real",
-            causality="parameter",
-            description="Preload of the support pair at assembly",
-            start=200.0,
-            unit="N",
-            min=1e-3,
-            max=1e6,
+        real_parameter(
+            "support_preload",
+            "Preload of the support pair at assembly",
+            200.0,
+            "N",
+            None,
+            1e-3,
+            1e6,
             source=catalog.mounting("liu2014_screw_support").source("assembly_preload"),
         ),
     )

@@ -10,7 +10,7 @@ cast-aluminium frame, 45-steel shaft) with the coefficients calibrated in
 
 from __future__ import annotations
 
-from servofmu.fmus.slave import ServoSlave, Var, real_input, spec_parameter
+from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter
 from servofmu.physics.bearing import BearingModel
 from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in
 
@@ -26,13 +26,12 @@ def _out(name, description, unit, display=None, *, depends=_LOADS, groups=_STATE
     """An output: ``depends`` its direct inputs, ``groups`` the parameter groups (see
     bearing_parameters.GROUPS) its value depends on; it copies the model's field ``name``
     unless ``field`` says otherwise."""
-    return Var(
-        name=name,
+    return output(
+        name,
+        description,
+        unit,
+        display,
         type=kw.pop("kind", "Real"),
-        causality="output",
-        description=description,
-        unit=unit,
-        display_unit=display,
         depends=depends,
         initial_depends=depends + parameters_in(*groups),
         field=kw.pop("field", name),

@@ -6,7 +6,7 @@ for chatter-free low-speed co-simulation at any communication step."""
 
 from __future__ import annotations
 
-from servofmu.fmus.slave import ServoSlave, Var, output, real_input
+from servofmu.fmus.slave import ServoSlave, output, real_input, real_parameter
 from servofmu.physics import motor
 from servofmu.physics.motor import DCMotorParameters
 
@@ -15,18 +15,7 @@ _SRC = "assumed: a small brushed torque motor driving a gimbal axis"
 
 
 def _param(name, description, start, unit, display, lo, hi, source=_SRC):
-    return Var(
-        name=name,
-        type="Real",
-        causality="parameter",
-        description=description,
-        start=start,
-        unit=unit,
-        display_unit=display,
-        min=lo,
-        max=hi,
-        source=source,
-    )
+    return real_parameter(name, description, start, unit, display, lo, hi, source=source)
 
 
 class DCMotor(ServoSlave):

@@ -3,7 +3,7 @@
 
 from __future__ import annotations
 
-from servofmu.fmus.slave import Item, ServoSlave, Var, output, real_input
+from servofmu.fmus.slave import Item, ServoSlave, Var, output, real_input, real_parameter
 from servofmu.physics.control import MODES, PIDParameters, PIDState, pid_sample
 
 _P = PIDParameters()
@@ -15,18 +15,8 @@ _MODES = {
 
 
 def _param(name, description, start, unit, display, lo, hi, variability="tunable"):
-    return Var(
-        name=name,
-        type="Real",
-        causality="parameter",
-        description=description,
-        start=start,
-        unit=unit,
-        display_unit=display,
-        min=lo,
-        max=hi,
-        variability=variability,
-        source=_SRC,
+    return real_parameter(
+        name, description, start, unit, display, lo, hi, variability=variability, source=_SRC
     )
 
 

@@ -147,16 +147,27 @@ class Var:
 
 def real_input(name, description, start, unit, display_unit, lo, hi) -> Var:
     """A continuous Real input with its start value, unit and valid range."""
+    return _real("input", name, description, start, unit, display_unit, lo, hi)
+
+
+def real_parameter(name, description, start, unit, display_unit, lo, hi, **kw) -> Var:
+    """A Real parameter with its default, unit and valid range (``variability`` "fixed" unless
+    given, ``source`` its provenance)."""
+    return _real("parameter", name, description, start, unit, display_unit, lo, hi, **kw)
+
+
+def _real(causality, name, description, start, unit, display_unit, lo, hi, **kw) -> Var:
     return Var(
         name=name,
         type="Real",
-        causality="input",
+        causality=causality,
         description=description,
         start=start,
         unit=unit,
         display_unit=display_unit,
         min=lo,
         max=hi,
+        **kw,
     )
 
 
