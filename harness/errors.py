@@ -33,6 +33,11 @@ class SystemError_(HarnessError):
         return super().__str__() + ":\n  - " + "\n  - ".join(self.problems)
 
 
+class ParameterError(HarnessError, ValueError):
+    """A parameter value or variant given to a run does not fit its variable; raised before
+    any FMU is instantiated (bad input: the command line exits 2)."""
+
+
 class ArchiveRefused(HarnessError, ArchiveError):
     """A refused archive, as a harness error."""
 

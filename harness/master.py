@@ -29,7 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import HarnessError
+from .errors import HarnessError, ParameterError
 from .system import System, describe_items, load_system
 
 STATUS = ("OK", "Warning", "Discard", "Error", "Fatal", "Pending")
@@ -249,14 +249,17 @@ def _overrides(system: System, parameters) -> dict[str, object]:
     for item in items:
         if isinstance(item, str):
             if item not in system.variants:
-                raise HarnessError(
+                raise ParameterError(
                     f"parameter set {item!r} is not one of the variants {sorted(system.variants)}"
                 )
             out.update({k: v for k, (_, v) in system.variants[item].items()})
         else:
             out.update(item)
     for target, value in out.items():
-        _, var = system.variable(target)
+        try:
+            _, var = system.variable(target)
+        except HarnessError as exc:
+            raise ParameterError(str(exc)) from None
         out[target] = _typed(target, var, value)
     return out
 
@@ -282,7 +285,7 @@ def _typed(target: str, var, value):
             return bool(value)
         return str(value)
     except (TypeError, ValueError):
-        raise HarnessError(
+        raise ParameterError(
             f"parameter {target} = {value!r} is not a finite {var.type} value"
         ) from None
 
@@ -303,7 +306,9 @@ def _item(target: str, var, value) -> int:
             return value
         if str(value) in var.items:
             return var.items[str(value)]
-    raise HarnessError(f"parameter {target} = {value!r} is not one of {describe_items(var.items)}")
+    raise ParameterError(
+        f"parameter {target} = {value!r} is not one of {describe_items(var.items)}"
+    )
 
 
 @dataclass(frozen=True)

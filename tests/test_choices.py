@@ -210,3 +210,15 @@ def test_a_catalogue_key_that_reads_as_a_number_stays_a_key(fmus):
             run(system, parameters={"bearing.bearing": 71804.0}, stop=0.002)
     finally:
         system.close()
+
+
+def test_command_line_refuses_a_bad_item_with_exit_2(fmus, tmp_path, capsys):
+    from servofmu.cli import main
+
+    ssp = str(fmus["BearingFriction"].parent / "space_bearing.ssp")
+    args = ["run", ssp, "--stop", "0.02", "--out", str(tmp_path)]
+    assert main([*args, "--parameters", "bearing.mounting=nowhere"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "bearing.mounting = 'nowhere'" in err
+    assert "ning_space_shaft (3)" in err and not (tmp_path / "results.csv").exists()
+    assert main([*args, "--parameters", "bearing.mounting=ning_space_shaft"]) == 0
