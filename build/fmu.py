@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import json
+import shutil
 import tempfile
 from pathlib import Path
 
 import servofmu
-from servofmu.fmus.slave import BUILD_INFO, package_hash
+from servofmu.fmus.slave import BUILD_INFO, SHIPPED, package_hash
 
 from .documentation import write_documentation
 
@@ -19,10 +20,12 @@ DEFAULT_OUT = Path(__file__).resolve().parent / "out"
 def build_fmu(name: str, out_dir: Path = DEFAULT_OUT) -> Path:
     """Build FMU ``name`` (one of :data:`FMUS`) into ``out_dir``; returns the .fmu path.
 
-    The FMU carries the servofmu package in ``resources/servofmu`` (every FMU the same copy,
-    so that several FMUs can share one interpreter), ``resources/servofmu_build.json`` (the
-    package hash checked at instantiation) and ``documentation/index.html``. State handling
-    and serialisation are declared (``canGetAndSetFMUstate``, ``canSerializeFMUstate``)."""
+    The FMU carries what it runs of the servofmu package in ``resources/servofmu`` (the parts
+    :data:`~servofmu.fmus.slave.SHIPPED`: the package ``__init__``, ``physics/`` with its data
+    and ``fmus/``; every FMU the same copy, so that several FMUs can share one interpreter),
+    ``resources/servofmu_build.json`` (the hash of those parts, checked at instantiation) and
+    ``documentation/index.html``. State handling and serialisation are declared
+    (``canGetAndSetFMUstate``, ``canSerializeFMUstate``)."""
     from pythonfmu.builder import FmuBuilder
 
     if name not in FMUS:
@@ -32,13 +35,14 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT) -> Path:
     script = PACKAGE_DIR / "fmus" / f"{name}.py"
     with tempfile.TemporaryDirectory(prefix="servofmu_build_") as tmp:
         tmp = Path(tmp)
+        package = stage_package(tmp / "package")
         info = tmp / BUILD_INFO
         info.write_text(
             json.dumps(
                 {
                     "model": name,
                     "version": servofmu.__version__,
-                    "package_hash": package_hash(PACKAGE_DIR),
+                    "package_hash": package_hash(package),
                 },
                 indent=2,
             )
@@ -48,12 +52,27 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT) -> Path:
         path = FmuBuilder.build_FMU(
             script,
             dest=out_dir,
-            project_files=[PACKAGE_DIR, info],
+            project_files=[package, info],
             documentation_folder=doc,
             canGetAndSetFMUstate=True,
             canSerializeFMUstate=True,
         )
     return Path(path)
+
+
+def stage_package(dest: Path) -> Path:
+    """Copy the parts of the servofmu package that run inside an FMU (:data:`SHIPPED`: .py
+    and .toml files, no caches) to ``dest/servofmu``; returns that folder."""
+    target = Path(dest) / "servofmu"
+    target.mkdir(parents=True)
+    keep = shutil.ignore_patterns("__pycache__", "*.pyc")
+    for part in SHIPPED:
+        src = PACKAGE_DIR / part
+        if src.is_dir():
+            shutil.copytree(src, target / part, ignore=keep)
+        else:
+            shutil.copy2(src, target / part)
+    return target
 
 
 def build_all(out_dir: Path = DEFAULT_OUT, names=FMUS, systems: bool = True) -> list[Path]:
@@ -68,8 +87,10 @@ def build_all(out_dir: Path = DEFAULT_OUT, names=FMUS, systems: bool = True) -> 
 
 
 def is_current(out_dir: Path = DEFAULT_OUT) -> bool:
-    """True when every FMU and system in ``out_dir`` was built from the current package and
-    sources (FMU build hash, and archives newer than their ssp/ sources)."""
+    """True when every FMU and system in ``out_dir`` was built from the current sources: the
+    FMU build hash against the parts of the package an FMU ships (an edit elsewhere, e.g. in
+    papers/ or the CLI, leaves the FMUs current), and archives newer than their ssp/ sources
+    and than the FMUs they pack."""
     import zipfile
 
     from .ssp import systems

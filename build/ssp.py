@@ -5,7 +5,7 @@ from __future__ import annotations
 import zipfile
 from pathlib import Path
 
-from lxml import etree
+from .xmlsafe import parse
 
 SSP_DIR = Path(__file__).resolve().parents[1] / "ssp"
 NS = {"ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription"}
@@ -18,8 +18,8 @@ def systems(ssp_dir: Path = SSP_DIR) -> list[Path]:
 
 def fmu_sources(system_dir: Path) -> list[str]:
     """The component sources named in the system's SSD (e.g. resources/DCMotor.fmu)."""
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False)
-    root = etree.parse(str(Path(system_dir) / "SystemStructure.ssd"), parser).getroot()
+    ssd = Path(system_dir) / "SystemStructure.ssd"
+    root = parse(ssd.read_bytes(), str(ssd))
     return sorted({c.get("source") for c in root.iterfind(".//ssd:Component", NS)})
 
 

@@ -7,20 +7,22 @@ from pathlib import Path
 
 from servofmu.fmus.slave import BUILD_INFO
 
+from . import choices
+from .archive import ArchiveError, check_archive, read_member
+from .xmlsafe import XMLError, parse
+
 
 def validate(path) -> list[str]:
     """All problems found in the FMU at ``path`` (empty when it passes).
 
     fmpy (schema, names, ModelStructure, start values, causality/variability, units), then:
     declared state capabilities, a DefaultExperiment with a step size, a description and an
-    explicit output-dependency list for every variable that needs one, start values within
-    min/max, ``documentation/index.html`` and the build information in ``resources/``."""
+    explicit output-dependency list for every variable that needs one (Outputs and
+    InitialUnknowns), start values within min/max, every choice tied to declared items
+    (:func:`.choices.problems`), ``documentation/index.html`` and the build information in
+    ``resources/``."""
     from fmpy import read_model_description
     from fmpy.validation import validate_fmu
-
-    from servofmu.harness import HarnessError
-    from servofmu.harness.archive import check_archive, read_member
-    from servofmu.harness.xmlsafe import parse
 
     path = Path(path)
     if not path.is_file():
@@ -31,10 +33,11 @@ def validate(path) -> list[str]:
     if unsafe:
         return unsafe
     try:
-        parse(read_member(path, "modelDescription.xml"), f"{path.name}/modelDescription.xml")
-    except HarnessError as exc:
+        root = parse(read_member(path, "modelDescription.xml"), f"{path.name}/modelDescription.xml")
+    except (ArchiveError, XMLError) as exc:
         return [str(exc)]
     problems = [f"fmpy: {p}" for p in validate_fmu(str(path))]
+    problems += choices.problems(root)
     try:
         md = read_model_description(str(path))
     except Exception as exc:  # fmpy already reported it
@@ -60,9 +63,10 @@ def validate(path) -> list[str]:
                 problems.append(f'start of "{v.name}" ({start}) is below its min ({v.min})')
             if v.max is not None and start > float(v.max):
                 problems.append(f'start of "{v.name}" ({start}) is above its max ({v.max})')
-    for unknown in md.outputs:
-        if unknown.dependencies is None:
-            problems.append(f'output "{unknown.variable.name}" lists no dependencies')
+    for kind, unknowns in (("output", md.outputs), ("initial unknown", md.initialUnknowns)):
+        for unknown in unknowns:
+            if unknown.dependencies is None:  # read as "depends on everything"
+                problems.append(f'{kind} "{unknown.variable.name}" lists no dependencies')
     with zipfile.ZipFile(path) as zf:
         names = set(zf.namelist())
     for required in ("documentation/index.html", f"resources/{BUILD_INFO}"):

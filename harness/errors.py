@@ -2,6 +2,11 @@
 
 from __future__ import annotations
 
+from contextlib import contextmanager
+
+from servofmu.build.archive import ArchiveError
+from servofmu.build.xmlsafe import XMLError
+
 
 class HarnessError(Exception):
     """A run failed: the message names what, where and what to do; ``result`` holds what was
@@ -26,3 +31,32 @@ class SystemError_(HarnessError):
         if len(self.problems) == 1:
             return super().__str__()
         return super().__str__() + ":\n  - " + "\n  - ".join(self.problems)
+
+
+class ParameterError(HarnessError, ValueError):
+    """A parameter value or variant given to a run does not fit its variable; raised before
+    any FMU is instantiated (bad input: the command line exits 2)."""
+
+
+class ArchiveRefused(HarnessError, ArchiveError):
+    """A refused archive, as a harness error."""
+
+
+class XMLRefused(SystemError_, XMLError):
+    """A refused XML document (malformed, a DTD, not schema-valid): an unusable description."""
+
+
+@contextmanager
+def refusals():
+    """Raise the refusals of :mod:`servofmu.build.archive` and :mod:`servofmu.build.xmlsafe`
+    as harness errors (still instances of the build's ArchiveError and XMLError)."""
+    try:
+        yield
+    except XMLRefused:
+        raise
+    except XMLError as exc:
+        raise XMLRefused([str(exc)]) from None
+    except ArchiveRefused:
+        raise
+    except ArchiveError as exc:
+        raise ArchiveRefused(str(exc)) from None

@@ -29,8 +29,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import HarnessError
-from .system import System, load_system
+from .errors import HarnessError, ParameterError
+from .system import System, describe_items, load_system
 
 STATUS = ("OK", "Warning", "Discard", "Error", "Fatal", "Pending")
 ALGORITHMS = ("gauss-seidel", "jacobi")
@@ -249,20 +249,26 @@ def _overrides(system: System, parameters) -> dict[str, object]:
     for item in items:
         if isinstance(item, str):
             if item not in system.variants:
-                raise HarnessError(
+                raise ParameterError(
                     f"parameter set {item!r} is not one of the variants {sorted(system.variants)}"
                 )
             out.update({k: v for k, (_, v) in system.variants[item].items()})
         else:
             out.update(item)
     for target, value in out.items():
-        _, var = system.variable(target)
+        try:
+            _, var = system.variable(target)
+        except HarnessError as exc:
+            raise ParameterError(str(exc)) from None
         out[target] = _typed(target, var, value)
     return out
 
 
 def _typed(target: str, var, value):
-    """``value`` (text from a command line, or a Python value) as the type of ``var``."""
+    """``value`` (text from a command line, or a Python value) as the type of ``var``; a
+    choice takes an item name or its value."""
+    if var.items is not None:
+        return _item(target, var, value)
     try:
         if var.type == "Real":
             x = float(value)
@@ -279,9 +285,30 @@ def _typed(target: str, var, value):
             return bool(value)
         return str(value)
     except (TypeError, ValueError):
-        raise HarnessError(
+        raise ParameterError(
             f"parameter {target} = {value!r} is not a finite {var.type} value"
         ) from None
+
+
+def _item(target: str, var, value) -> int:
+    """The value of choice ``var`` named by ``value``: an item name, or its value (an int, or
+    text or a float that reads as one); a number that is no item value may still be an item
+    name that reads as a number (a bearing "71803" from a command line)."""
+    if isinstance(value, str):
+        text = value.strip()
+        if text in var.items:
+            return var.items[text]
+        value = int(text) if text.lstrip("+-").isdigit() else text
+    if isinstance(value, float) and value.is_integer():
+        value = int(value)
+    if type(value) is int:
+        if value in var.items.values():
+            return value
+        if str(value) in var.items:
+            return var.items[str(value)]
+    raise ParameterError(
+        f"parameter {target} = {value!r} is not one of {describe_items(var.items)}"
+    )
 
 
 @dataclass(frozen=True)

@@ -157,7 +157,7 @@ class ModelTask:
             key = tuple(sorted((k, v) for k, v in p.items() if k not in INPUTS))
             groups.setdefault(key, []).append(i)
         for key, idx in groups.items():
-            params = {**self.base, **{k: v for k, v in key if k != "sample"}}
+            params = {**self.base, **{k: _as_key(k, v) for k, v in key if k != "sample"}}
             try:
                 pair = pair_from_parameters(params)
             except Exception as exc:  # a bad parameter fails its points, not the sweep
@@ -196,6 +196,16 @@ class ModelTask:
             return {**point, **{o: _plain(np.asarray(getattr(out, o))[()]) for o in self.outputs}}
         except Exception as exc:
             return _failed(point, exc)
+
+
+def _as_key(name: str, value):
+    """A choice's catalogue key as text: a key that reads as a number (the bearing "71803",
+    parsed from a command line as 71803.0) comes back as "71803"."""
+    from servofmu.physics.bearing_parameters import PARAMETER_NAMES, parameter
+
+    if name in PARAMETER_NAMES and parameter(name).choices and isinstance(value, (int, float)):
+        return str(int(value)) if float(value).is_integer() else str(value)
+    return value
 
 
 @dataclass(frozen=True)

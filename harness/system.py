@@ -19,9 +19,11 @@ import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .archive import read_member, safe_extract
-from .errors import HarnessError, SystemError_
-from .xmlsafe import parse, validate
+from servofmu.build.archive import read_member, safe_extract
+from servofmu.build.choices import choice_items
+from servofmu.build.xmlsafe import parse, validate
+
+from .errors import HarnessError, SystemError_, refusals
 
 NS = {
     "ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
@@ -34,7 +36,8 @@ TYPES = ("Real", "Integer", "Boolean", "String", "Enumeration")
 
 @dataclass(frozen=True)
 class Variable:
-    """One FMU variable as the harness needs it."""
+    """One FMU variable as the harness needs it; ``items`` maps the item names of a choice
+    (an FMI Enumeration, or an Integer that servofmu ties to an item type) to its values."""
 
     name: str
     value_reference: int
@@ -42,6 +45,7 @@ class Variable:
     causality: str
     unit: str | None
     start: object
+    items: dict[str, int] | None = None
 
 
 @dataclass
@@ -92,7 +96,8 @@ class System:
             if self._fmu_tmp is None:
                 self._fmu_tmp = tempfile.TemporaryDirectory(prefix="servofmu_fmus_")
             target = Path(self._fmu_tmp.name) / f"{len(self._unpacked)}_{fmu.stem}"
-            self._unpacked[fmu] = safe_extract(fmu, target)
+            with refusals():
+                self._unpacked[fmu] = safe_extract(fmu, target)
         return self._unpacked[fmu]
 
     def close(self):
@@ -158,14 +163,18 @@ def _model_variables(fmu: Path) -> tuple[str, str, dict[str, Variable], bool]:
     """(modelIdentifier, guid, variables, feedthrough) read from the FMU (XML checked first)."""
     from fmpy import read_model_description
 
-    parse(read_member(fmu, "modelDescription.xml"), f"{fmu.name}/modelDescription.xml")
+    with refusals():
+        root = parse(read_member(fmu, "modelDescription.xml"), f"{fmu.name}/modelDescription.xml")
     md = read_model_description(str(fmu), validate=False)
     if md.coSimulation is None:
         raise HarnessError(f"{fmu.name} has no co-simulation interface")
+    choices = choice_items(root)
     variables = {}
     for v in md.modelVariables:
         unit = v.unit if v.unit is not None else getattr(v.declaredType, "unit", None)
-        variables[v.name] = Variable(v.name, v.valueReference, v.type, v.causality, unit, v.start)
+        variables[v.name] = Variable(
+            v.name, v.valueReference, v.type, v.causality, unit, v.start, choices.get(v.name)
+        )
     feedthrough = any(u.dependencies for u in md.outputs) or any(
         u.dependencies is None for u in md.outputs
     )
@@ -180,7 +189,8 @@ def load_system(path, fmu_dir=None) -> System:
     tmp = None
     if path.is_file() and path.suffix == ".ssp":
         tmp = tempfile.TemporaryDirectory(prefix="servofmu_ssp_")
-        root = safe_extract(path, tmp.name)
+        with refusals():
+            root = safe_extract(path, tmp.name)
     elif path.is_dir():
         root = path
     elif path.is_file() and path.suffix == ".ssd":
@@ -188,7 +198,8 @@ def load_system(path, fmu_dir=None) -> System:
     else:
         raise HarnessError(f"{path}: no .ssp archive or system folder there")
     try:
-        return _load(root, path, tmp, fmu_dir)
+        with refusals():
+            return _load(root, path, tmp, fmu_dir)
     except Exception:
         if tmp is not None:
             tmp.cleanup()
@@ -299,7 +310,7 @@ def _check(system: System) -> list[str]:
                 problems.append(
                     f"connector {comp.name}.{name} has unit {unit!r}, the FMU variable {v.unit!r}"
                 )
-        for pname, (ptype, _) in comp.parameters.items():
+        for pname, (ptype, value) in comp.parameters.items():
             v = comp.variables.get(pname)
             if v is None:
                 problems.append(f"parameter {comp.name}.{pname}: the FMU has no such variable")
@@ -307,10 +318,11 @@ def _check(system: System) -> list[str]:
                 problems.append(
                     f"parameter {comp.name}.{pname}: the FMU variable is an {v.causality}"
                 )
-            elif ptype != v.type and not (ptype == "Integer" and v.type == "Real"):
-                problems.append(
-                    f"parameter {comp.name}.{pname} is given as {ptype}, the FMU wants {v.type}"
-                )
+            else:
+                try:
+                    comp.parameters[pname] = (v.type, bound_value(v, ptype, value))
+                except ValueError as exc:
+                    problems.append(f"parameter {comp.name}.{pname} {exc}")
     inputs_seen = set()
     for con in system.connections:
         ends = []
@@ -350,9 +362,36 @@ def _check(system: System) -> list[str]:
             problems.append(f"input {'.'.join(con.end)} has more than one incoming connection")
         inputs_seen.add(con.end)
     for vname, values in system.variants.items():
-        for target in values:
+        for target, (ptype, value) in values.items():
             cname, _, var = target.partition(".")
             comp = system.components.get(cname)
             if comp is None or (comp.variables and var not in comp.variables):
                 problems.append(f"variant {vname!r}: {target!r} names no variable of the system")
+            elif comp.variables:
+                v = comp.variables[var]
+                try:
+                    values[target] = (v.type, bound_value(v, ptype, value))
+                except ValueError as exc:
+                    problems.append(f"variant {vname!r}: {target} {exc}")
     return problems
+
+
+def bound_value(var: Variable, kind: str, value):
+    """The value an ``.ssv`` binding of type ``kind`` ("Real", "Integer", "Boolean", "String"
+    or "Enumeration", an item name) gives FMU variable ``var``; ValueError (worded to follow
+    the parameter's name) when the two do not fit. An Integer binding sets a Real, an Integer
+    or an Enumeration binding sets a choice."""
+    if var.items is not None:
+        if kind == "Enumeration" and value in var.items:
+            return var.items[value]
+        if kind == "Integer" and value in var.items.values():
+            return value
+        raise ValueError(f"= {value!r} ({kind}) is not one of {describe_items(var.items)}")
+    if kind == var.type or (kind == "Integer" and var.type == "Real"):
+        return value
+    raise ValueError(f"is given as {kind}, the FMU wants {var.type}")
+
+
+def describe_items(items: dict[str, int]) -> str:
+    """ "the items name (value), …" for a message."""
+    return "the items " + ", ".join(f"{name} ({value})" for name, value in items.items())

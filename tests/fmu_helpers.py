@@ -12,6 +12,10 @@ from fmpy.fmi2 import (
     fmi2CallbackLoggerTYPE,
 )
 
+from servofmu.build.archive import read_member
+from servofmu.build.choices import choice_items
+from servofmu.build.xmlsafe import parse
+
 _KEEP = []  # ctypes callbacks and extracted folders must outlive the instances
 
 
@@ -23,6 +27,8 @@ class Fmu:
         self.dir = unzip_dir or extract(str(path))
         self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
         self.type = {v.name: v.type for v in self.md.modelVariables}
+        md_xml = read_member(path, "modelDescription.xml")
+        self.items = choice_items(parse(md_xml, "modelDescription.xml"))  # choice → {name: value}
         self.log: list[tuple[int, str]] = [] if log is None else log
 
         def logger(env, name, status, category, message):
@@ -43,8 +49,11 @@ class Fmu:
         self.slave.instantiate(callbacks=cb, loggingOn=True)
 
     def set(self, **values):
+        """Set variables by name; a choice takes an item name or its value."""
         for name, value in values.items():
             kind = self.type[name]
+            if name in self.items and isinstance(value, str):
+                value = self.items[name][value]
             if kind == "Real":
                 self.slave.setReal([self.vr[name]], [float(value)])
             elif kind == "String":

@@ -11,10 +11,10 @@ import zipfile
 
 import pytest
 
+from servofmu.build import archive as archive_module
+from servofmu.build.archive import ArchiveError, check_archive, safe_extract
 from servofmu.build.ssp import SSP_DIR
 from servofmu.harness import HarnessError, SystemError_, load_system, run
-from servofmu.harness import archive as archive_module
-from servofmu.harness.archive import ArchiveError, check_archive, safe_extract
 
 SECRET = "top-secret-3141592653"
 

@@ -111,8 +111,8 @@ def test_running_torque_is_the_model_of_the_fmu_parameters():
 def test_fitted_ssv_gives_the_same_torque_in_the_fmu(fmus, tmp_path):
     from fmu_helpers import Fmu
 
+    from servofmu.build.xmlsafe import parse, validate
     from servofmu.harness.system import _read_parameter_set
-    from servofmu.harness.xmlsafe import parse, validate
 
     data = synthesise(TRUTH, TEMPS, [5 * DEG, 20 * DEG], seed=4)
     cal = calibrate(data, PRINTED, ["palmgren_s0", "sliding_friction"])
@@ -132,10 +132,13 @@ def test_fitted_ssv_gives_the_same_torque_in_the_fmu(fmus, tmp_path):
 
 def test_fmu_defaults_are_the_yu_gimbal_parameter_set():
     from servofmu.fmus.BearingFriction import BearingFriction
+    from servofmu.physics.bearing_parameters import parameter
 
     defaults = default_parameters("yu2017_gimbal")
     for v in BearingFriction.VARIABLES:
-        if v.causality == "parameter":
+        if v.type == "Enumeration":  # the item whose catalogue key is the default
+            assert v.start == parameter(v.name).item(defaults[v.name]), v.name
+        elif v.causality == "parameter":
             assert v.start == defaults[v.name], v.name
 
 

@@ -217,8 +217,10 @@ def test_bad_tunable_parameter_then_fixed(fmus):
 @pytest.mark.parametrize(
     "name, params, text",
     [
-        ("BearingFriction", {"mounting": "nowhere"}, "mounting = 'nowhere'"),
-        ("ServoController", {"mode": "torque"}, "mode = 'torque'"),
+        ("BearingFriction", {"mounting": 9}, "mounting = 9 is not one of the items (1 = yu2017"),
+        ("BearingFriction", {"bearing": 0}, "bearing = 0 is not one of the items (1 = from_moun"),
+        ("ServoController", {"mode": 3}, "mode = 3 is not one of the items (1 = position, 2 = s"),
+        ("ActuatorStiffness", {"support_mounting": -1}, "support_mounting = -1 is not one of"),
         (
             "ServoController",
             {"output_min": 5.0, "output_max": 1.0},

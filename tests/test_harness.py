@@ -351,7 +351,7 @@ def test_cli_run_writes_results_and_reports_failures(tmp_path, out, capsys):
             "--parameters",
             "controller.kp=3",
             "--parameters",
-            "bearing.bearing=71803",  # a String parameter stays text
+            "bearing.bearing=71803",  # a choice by its item name
             "--signal",
             f"bearing.temperature={profile}:T",
             "--stop",

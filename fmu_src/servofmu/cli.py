@@ -482,12 +482,12 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     """Exit codes: 0 done, 1 a run failed (partial results kept), 2 bad input (data,
     arguments, system description), 3 an internal error (traceback in a log file)."""
-    from .harness.errors import HarnessError, SystemError_
+    from .harness.errors import HarnessError, ParameterError, SystemError_
 
     args = build_parser().parse_args(argv)
     try:
         return args.func(args)
-    except SystemError_ as exc:  # every problem of the description, one per line
+    except (SystemError_, ParameterError) as exc:  # bad input, found before any run
         print(f"servofmu: error: {exc}", file=sys.stderr)
         return 2
     except HarnessError as exc:

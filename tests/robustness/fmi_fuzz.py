@@ -119,7 +119,22 @@ def _value(v):
         return st.one_of(st.sampled_from(STRINGS), st.text(max_size=12))
     if v.type == "Boolean":
         return st.booleans()
-    return st.integers(-(2**31), 2**31 - 1)
+    any_int = st.integers(-(2**31), 2**31 - 1)
+    lo, hi = _int_range(v)
+    if lo is None:
+        return any_int
+    good = st.integers(lo, hi)  # a choice's items, mostly
+    return st.one_of(good, good, good, st.sampled_from([lo - 1, hi + 1, 0]), any_int)
+
+
+def _int_range(v):
+    """(min, max) of an Integer variable (a choice's items), or (None, None)."""
+    if v.type == "Enumeration" and v.declaredType is not None:
+        values = [int(item.value) for item in v.declaredType.items]
+        return min(values), max(values)
+    if v.min is not None and v.max is not None:
+        return int(v.min), int(v.max)
+    return None, None
 
 
 def operations(fmu: Target):
@@ -152,6 +167,9 @@ def operations(fmu: Target):
 
 def bad(v, value) -> bool:
     """Is ``value`` outside what variable ``v`` accepts (non-finite or outside min/max)?"""
+    if v.type in ("Integer", "Enumeration"):
+        lo, hi = _int_range(v)
+        return lo is not None and not lo <= value <= hi
     if v.type != "Real":
         return False
     x = float(value)
@@ -175,6 +193,7 @@ def run_calls(fmu: Target, ops, stats: Counter) -> None:
                     "Integer": "setInteger",
                     "Boolean": "setBoolean",
                     "String": "setString",
+                    "Enumeration": "setInteger",
                 }[v.type]
                 status, _ = inst.call(setter, [v.valueReference], [op[2]])
                 recently_set.add(v.name)

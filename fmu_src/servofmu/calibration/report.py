@@ -9,7 +9,7 @@ from xml.etree.ElementTree import Element, ElementTree, SubElement, indent, regi
 
 import numpy as np
 
-from ..physics.bearing_parameters import PARAMETER_NAMES
+from ..physics.bearing_parameters import PARAMETERS
 from ..physics.units import DEG, NMM, ZERO_CELSIUS
 from .fit import UNKNOWNS, Calibration, running_torque
 
@@ -159,19 +159,23 @@ def plot(cal: Calibration, path) -> Path:
 def write_ssv(parameters, path, component: str | None = None, name: str = "calibrated") -> Path:
     """The whole BearingFriction parameter set as an SSP 1.0 parameter set: bare names (a
     component-level binding, or start values for the FMU), or ``component.name`` names (a
-    variant of a system, e.g. ``ssp/seeker_gimbal/variants/``)."""
+    variant of a system, e.g. ``ssp/seeker_gimbal/variants/``). A choice is written as its
+    item number (``ssv:Integer``, which every engine applies) with the item name as the
+    parameter's description."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     root = Element(f"{{{SSV_NS}}}ParameterSet", {"version": "1.0", "name": name})
     params = SubElement(root, f"{{{SSV_NS}}}Parameters")
-    for key in PARAMETER_NAMES:
-        value = parameters[key]
-        elem = SubElement(
-            params, f"{{{SSV_NS}}}Parameter", {"name": f"{component}.{key}" if component else key}
-        )
-        if isinstance(value, str):
-            SubElement(elem, f"{{{SSV_NS}}}String", {"value": value})
+    for spec in PARAMETERS:
+        value = parameters[spec.name]
+        attrs = {"name": f"{component}.{spec.name}" if component else spec.name}
+        if spec.choices:  # an item number (every engine applies ssv:Integer), its name beside
+            item = spec.item(value)
+            attrs["description"] = spec.choices[item - 1].name
+            elem = SubElement(params, f"{{{SSV_NS}}}Parameter", attrs)
+            SubElement(elem, f"{{{SSV_NS}}}Integer", {"value": str(item)})
         else:
+            elem = SubElement(params, f"{{{SSV_NS}}}Parameter", attrs)
             SubElement(elem, f"{{{SSV_NS}}}Real", {"value": repr(float(value))})
     tree = ElementTree(root)
     indent(tree)

@@ -7,33 +7,68 @@ from __future__ import annotations
 
 import dataclasses
 
-from servofmu.fmus.slave import ServoSlave, Var
+from servofmu.fmus.slave import ServoSlave, Var, items, output, real_input, real_parameter
 from servofmu.physics import catalog
 from servofmu.physics.actuator import ActuatorModel
 from servofmu.physics.bearing import BearingPair, with_mounting
+from servofmu.physics.bearing_parameters import FROM_MOUNTING, Choice, catalogue_choices
 
 _A = catalog.actuator("liu2014_ema")
 _LOAD = ("temperature", "load_torque", "angle")
+_SUPPORT_MOUNTINGS = catalogue_choices(
+    "mountings", Choice("", "none", "no support bearings (rigid: infinite stiffness)")
+)
+_SUPPORT_BEARINGS = catalogue_choices(
+    "bearings", Choice("", FROM_MOUNTING, "the support mounting's own bearing")
+)
+# parameters by the part of the model they enter (the outputs' initial dependencies)
+_KINEMATICS = ("crank_length", "rod_length", "neutral_crank_angle", "neutral_rod_angle")
+_LINKAGE = (
+    "crank_area",
+    "rod_area",
+    "arm_length",
+    "shaft_polar_moment",
+    "arm_second_moment",
+    "youngs_modulus",
+    "shear_modulus",
+)
+_SUPPORT = ("seat_stiffness", "support_mounting", "support_bearing", "support_preload")
+_GEAR = ("screw_lead", "gear_torsional_stiffness")
+_RATIO = ("gear_ratio", "screw_lead")
+_ELEMENTS = (*_GEAR, "screw_axial_stiffness", "housing_axial_stiffness", *_LINKAGE, *_SUPPORT)
 
 
-def _p(name, description, unit, display, lo, hi):
+def _p(name, description, unit, display, lo, hi, field=None):
+    """A Real parameter whose default and provenance are the Liu 2014 record's ``field``."""
+    field = field or name
+    start = float(getattr(_A, field))
+    return real_parameter(name, description, start, unit, display, lo, hi, source=_A.source(field))
+
+
+def _choice(name, description, choices, declared_type, start, source):
     return Var(
-        name,
-        "Real",
-        "parameter",
-        description,
-        float(getattr(_A, name)),
-        unit,
-        display,
-        lo,
-        hi,
-        source=_A.source(name),
+        name=name,
+        type="Enumeration",
+        causality="parameter",
+        description=description,
+        start=[c.key for c in choices].index(start) + 1,
+        items=items(choices),
+        declared_type=declared_type,
+        source=source,
     )
 
 
-def _out(name, description, unit="N.m/rad", display="N.m/deg", depends=_LOAD):
-    return Var(
-        name, "Real", "output", description, unit=unit, display_unit=display, depends=depends
+def _out(name, description, params, unit="N.m/rad", display="N.m/deg", depends=_LOAD, **kw):
+    """An output copying the breakdown's ``field`` (default: none), depending directly on the
+    inputs ``depends`` and at initialization on those and the parameters ``params``."""
+    return output(
+        name,
+        description,
+        unit,
+        display,
+        depends=depends,
+        initial_depends=depends + _KINEMATICS + params,
+        **kw,
     )
 
 
@@ -48,10 +83,8 @@ class ActuatorStiffness(ServoSlave):
     DEFAULT_EXPERIMENT = (0.0, 1.0, 1.0e-2)
     PHYSICS = ("servofmu.physics.actuator",)
     VARIABLES = (
-        Var(
+        real_input(
             "temperature",
-            "Real",
-            "input",
             "Temperature of the actuator (support-bearing preload)",
             293.15,
             "K",
@@ -59,10 +92,8 @@ class ActuatorStiffness(ServoSlave):
             173.15,
             473.15,
         ),
-        Var(
+        real_input(
             "speed",
-            "Real",
-            "input",
             "Output-shaft speed (the quasi-static stiffness does not depend on it)",
             0.0,
             "rad/s",
@@ -70,55 +101,82 @@ class ActuatorStiffness(ServoSlave):
             -1.0e4,
             1.0e4,
         ),
-        Var(
-            "load_torque",
-            "Real",
-            "input",
-            "Hinge moment on the output shaft",
-            0.0,
-            "N.m",
-            None,
-            -1.0e5,
-            1.0e5,
+        real_input(
+            "load_torque", "Hinge moment on the output shaft", 0.0, "N.m", None, -1.0e5, 1.0e5
         ),
-        Var(
-            "angle",
-            "Real",
-            "input",
-            "Output-shaft angle from the neutral position",
-            0.0,
-            "rad",
-            "deg",
-            -1.5,
-            1.5,
-        ),
-        _out("stiffness", "Stiffness of the whole actuator at the output shaft (secant M/Δθ)"),
-        _out(
-            "gear_stiffness", "Gear train, reflected to the output (Liu eq 8)", depends=("angle",)
+        real_input(
+            "angle", "Output-shaft angle from the neutral position", 0.0, "rad", "deg", -1.5, 1.5
         ),
         _out(
-            "screw_stiffness", "Ball screw, reflected to the output (Liu eq 8)", depends=("angle",)
+            "stiffness",
+            "Stiffness of the whole actuator at the output shaft (secant M/Δθ)",
+            _ELEMENTS,
+            field="total",
         ),
-        _out("linkage_stiffness", "Crank-slider linkage (Liu eq 9-20)", depends=("angle",)),
-        _out("housing_stiffness", "Housing, reflected to the output", depends=("angle",)),
+        _out(
+            "gear_stiffness",
+            "Gear train, reflected to the output (Liu eq 8)",
+            _GEAR,
+            depends=("angle",),
+            field="gear",
+        ),
+        _out(
+            "screw_stiffness",
+            "Ball screw, reflected to the output (Liu eq 8)",
+            ("screw_axial_stiffness",),
+            depends=("angle",),
+            field="screw",
+        ),
+        _out(
+            "linkage_stiffness",
+            "Crank-slider linkage (Liu eq 9-20)",
+            _LINKAGE,
+            depends=("load_torque", "angle"),
+            field="linkage",
+        ),
+        _out(
+            "housing_stiffness",
+            "Housing, reflected to the output",
+            ("housing_axial_stiffness",),
+            depends=("angle",),
+            field="housing",
+        ),
         _out(
             "support_bearing_stiffness",
             "Support bearings and seat, reflected to the output (inf when none)",
+            _SUPPORT,
+            field="support_bearing",
         ),
         _out(
-            "reduction_ratio", "Motor radians per output radian (Liu eq 4)", "1", None, ("angle",)
+            "reduction_ratio",
+            "Motor radians per output radian (Liu eq 4)",
+            _RATIO,
+            "1",
+            None,
+            ("angle",),
+            field="reduction_ratio",
         ),
-        _out("deflection", "Elastic deflection of the output under load_torque", "rad", "deg"),
+        _out(
+            "deflection",
+            "Elastic deflection of the output under load_torque",
+            _ELEMENTS,
+            "rad",
+            "deg",
+            field="deflection",
+        ),
         _out(
             "screw_force",
             "Axial force in the ball screw (Liu eq 11)",
+            (),
             "N",
             None,
             ("load_torque", "angle"),
+            field="screw_force",
         ),
         _out(
             "motor_load_torque",
             "Hinge moment reflected to the motor shaft, load_torque/reduction_ratio",
+            _RATIO,
             "N.m",
             "N.mm",
             ("load_torque", "angle"),
@@ -150,76 +208,59 @@ class ActuatorStiffness(ServoSlave):
         ),
         _p("youngs_modulus", "Young's modulus of the linkage", "Pa", "GPa", 1e6, 1e13),
         _p("shear_modulus", "Shear modulus of the linkage", "Pa", "GPa", 1e6, 1e13),
-        Var(
+        _p(
             "gear_torsional_stiffness",
-            "Real",
-            "parameter",
             "Gear-train stiffness, torsional at the screw shaft",
-            float(_A.gear_stiffness),
             "N.m/rad",
             None,
             1e-3,
             1e15,
-            source=_A.source("gear_stiffness"),
+            "gear_stiffness",
         ),
-        Var(
+        _p(
             "screw_axial_stiffness",
-            "Real",
-            "parameter",
             "Ball-screw axial stiffness",
-            float(_A.screw_stiffness),
             "N/m",
             "N/um",
             1e-3,
             1e15,
-            source=_A.source("screw_stiffness"),
+            "screw_stiffness",
         ),
-        Var(
+        _p(
             "housing_axial_stiffness",
-            "Real",
-            "parameter",
             "Housing axial stiffness along the screw",
-            float(_A.housing_stiffness),
             "N/m",
             "N/um",
             1e-3,
             1e15,
-            source=_A.source("housing_stiffness"),
+            "housing_stiffness",
         ),
-        Var(
+        _p(
             "seat_stiffness",
-            "Real",
-            "parameter",
             "Axial stiffness in series with the support bearings",
-            float(_A.seat_stiffness),
             "N/m",
             "N/um",
             1e-3,
             1e15,
-            source=_A.source("seat_stiffness"),
         ),
-        Var(
+        _choice(
             "support_mounting",
-            "String",
-            "parameter",
-            "Catalogue mounting of the support-bearing pair; empty: none",
+            "Catalogue mounting of the support-bearing pair",
+            _SUPPORT_MOUNTINGS,
+            "SupportMounting",
             _A.support_mounting,
-            source="assumed: this project's extension",
-            choices=("", *catalog.keys("mountings")),
+            "assumed: this project's extension",
         ),
-        Var(
+        _choice(
             "support_bearing",
-            "String",
-            "parameter",
-            "Support-bearing designation; empty: the mounting's",
+            "Support-bearing designation",
+            _SUPPORT_BEARINGS,
+            "Bearing",
             "",
-            source="catalogue: data/bearings.toml",
-            choices=("", *catalog.keys("bearings")),
+            "catalogue: data/bearings.toml",
         ),
-        Var(
+        real_parameter(
             "support_preload",
-            "Real",
-            "parameter",
             "Preload of the support pair at assembly",
             200.0,
             "N",
@@ -231,32 +272,31 @@ class ActuatorStiffness(ServoSlave):
     )
 
     def configure(self):
+        mounting = _SUPPORT_MOUNTINGS[self.support_mounting - 1].key
         act = dataclasses.replace(
             _A,
-            **{v.name: getattr(self, v.name) for v in self._params if hasattr(_A, v.name)},
+            **{
+                v.name: getattr(self, v.name)
+                for v in self._params
+                if v.type == "Real" and hasattr(_A, v.name)
+            },
             gear_stiffness=self.gear_torsional_stiffness,
             screw_stiffness=self.screw_axial_stiffness,
             housing_stiffness=self.housing_axial_stiffness,
+            support_mounting=mounting,
         )
         support = None
-        if self.support_mounting:
-            pair = BearingPair.from_catalog(self.support_mounting, "mos2_film")
-            if self.support_bearing:
-                pair = dataclasses.replace(pair, bearing=catalog.bearing(self.support_bearing))
+        if mounting:
+            pair = BearingPair.from_catalog(mounting, "mos2_film")
+            bearing = _SUPPORT_BEARINGS[self.support_bearing - 1].key
+            if bearing:
+                pair = dataclasses.replace(pair, bearing=catalog.bearing(bearing))
             support = with_mounting(pair, assembly_preload=self.support_preload)
         self.model = ActuatorModel(act, support)
 
     def compute(self):
         b = self.model.evaluate(self.angle, self.load_torque, self.temperature)
-        self.stiffness = b.total
-        self.gear_stiffness = b.gear
-        self.screw_stiffness = b.screw
-        self.linkage_stiffness = b.linkage
-        self.housing_stiffness = b.housing
-        self.support_bearing_stiffness = b.support_bearing
-        self.reduction_ratio = b.reduction_ratio
-        self.deflection = b.deflection
-        self.screw_force = b.screw_force
+        self.copy_outputs(b)
         self.motor_load_torque = self.load_torque / b.reduction_ratio
 
     def hidden_state(self):

@@ -6,12 +6,16 @@ for chatter-free low-speed co-simulation at any communication step."""
 
 from __future__ import annotations
 
-from servofmu.fmus.slave import ServoSlave, Var
+from servofmu.fmus.slave import ServoSlave, output, real_input, real_parameter
 from servofmu.physics import motor
 from servofmu.physics.motor import DCMotorParameters
 
 _P = DCMotorParameters()
 _SRC = "assumed: a small brushed torque motor driving a gimbal axis"
+
+
+def _param(name, description, start, unit, display, lo, hi, source=_SRC):
+    return real_parameter(name, description, start, unit, display, lo, hi, source=source)
 
 
 class DCMotor(ServoSlave):
@@ -20,12 +24,12 @@ class DCMotor(ServoSlave):
     description = "Permanent-magnet DC motor with rotor and load inertia (exact ZOH stepping)"
     DEFAULT_EXPERIMENT = (0.0, 1.0, 1.0e-3)
     PHYSICS = ("servofmu.physics.motor",)
+    # the state is integrated inside the FMU: no output depends directly on an input, and
+    # right after initialization each is its initial state (friction_torque: none applied yet)
     VARIABLES = (
-        Var("voltage", "Real", "input", "Armature voltage", 0.0, "V", None, -1.0e3, 1.0e3),
-        Var(
+        real_input("voltage", "Armature voltage", 0.0, "V", None, -1.0e3, 1.0e3),
+        real_input(
             "load_torque",
-            "Real",
-            "input",
             "Load torque, subtracted from the motor torque",
             0.0,
             "N.m",
@@ -33,10 +37,8 @@ class DCMotor(ServoSlave):
             -1.0e3,
             1.0e3,
         ),
-        Var(
+        real_input(
             "friction_running_torque",
-            "Real",
-            "input",
             "Coulomb friction magnitude while turning (opposes the motion)",
             0.0,
             "N.m",
@@ -44,10 +46,8 @@ class DCMotor(ServoSlave):
             0.0,
             1.0e3,
         ),
-        Var(
+        real_input(
             "friction_breakaway_torque",
-            "Real",
-            "input",
             "Coulomb friction magnitude that holds the rotor at rest",
             0.0,
             "N.m",
@@ -55,144 +55,86 @@ class DCMotor(ServoSlave):
             0.0,
             1.0e3,
         ),
-        Var("speed", "Real", "output", "Rotor speed", unit="rad/s", display_unit="rpm"),
-        Var("angle", "Real", "output", "Rotor angle", unit="rad", display_unit="deg"),
-        Var("current", "Real", "output", "Armature current", unit="A"),
-        Var(
+        output("speed", "Rotor speed", "rad/s", "rpm", initial_depends=("initial_speed",)),
+        output("angle", "Rotor angle", "rad", "deg", initial_depends=("initial_angle",)),
+        output("current", "Armature current", "A", initial_depends=("initial_current",)),
+        output(
             "motor_torque",
-            "Real",
-            "output",
             "Electromagnetic torque k_t·i",
-            unit="N.m",
-            display_unit="N.mm",
+            "N.m",
+            "N.mm",
+            initial_depends=("torque_constant", "initial_current"),
         ),
-        Var(
+        output(
             "friction_torque",
-            "Real",
-            "output",
             "Coulomb friction applied over the last step (mean, signed like the speed)",
-            unit="N.m",
-            display_unit="N.mm",
+            "N.m",
+            "N.mm",
+            initial_depends=(),
         ),
-        Var(
-            "resistance",
-            "Real",
-            "parameter",
-            "Armature resistance R",
-            _P.resistance,
-            "Ohm",
-            None,
-            1e-6,
-            1e6,
-            source=_SRC,
+        _param("resistance", "Armature resistance R", _P.resistance, "Ohm", None, 1e-6, 1e6),
+        _param("inductance", "Armature inductance L", _P.inductance, "H", "mH", 1e-9, 1e3),
+        _param(
+            "torque_constant", "Torque constant k_t", _P.torque_constant, "N.m/A", None, 1e-6, 1e3
         ),
-        Var(
-            "inductance",
-            "Real",
-            "parameter",
-            "Armature inductance L",
-            _P.inductance,
-            "H",
-            "mH",
-            1e-9,
-            1e3,
-            source=_SRC,
-        ),
-        Var(
-            "torque_constant",
-            "Real",
-            "parameter",
-            "Torque constant k_t",
-            _P.torque_constant,
-            "N.m/A",
-            None,
-            1e-6,
-            1e3,
-            source=_SRC,
-        ),
-        Var(
+        _param(
             "back_emf_constant",
-            "Real",
-            "parameter",
             "Back-EMF constant k_e",
             _P.back_emf_constant,
             "V.s/rad",
             None,
             1e-6,
             1e3,
-            source=_SRC,
         ),
-        Var(
-            "inertia",
-            "Real",
-            "parameter",
-            "Rotor plus load inertia J",
-            _P.inertia,
-            "kg.m2",
-            None,
-            1e-12,
-            1e6,
-            source=_SRC,
-        ),
-        Var(
+        _param("inertia", "Rotor plus load inertia J", _P.inertia, "kg.m2", None, 1e-12, 1e6),
+        _param(
             "viscous_damping",
-            "Real",
-            "parameter",
             "Viscous damping b",
             _P.viscous_damping,
             "N.m.s/rad",
             None,
             0.0,
             1e6,
-            source=_SRC,
         ),
-        Var(
+        _param(
             "initial_current",
-            "Real",
-            "parameter",
             "Current at the start time",
             0.0,
             "A",
             None,
             -1e4,
             1e4,
-            source="assumed: at rest",
+            "assumed: at rest",
         ),
-        Var(
+        _param(
             "initial_speed",
-            "Real",
-            "parameter",
             "Speed at the start time",
             0.0,
             "rad/s",
             "rpm",
             -1e5,
             1e5,
-            source="assumed: at rest",
+            "assumed: at rest",
         ),
-        Var(
+        _param(
             "initial_angle",
-            "Real",
-            "parameter",
             "Angle at the start time",
             0.0,
             "rad",
             "deg",
             -1e9,
             1e9,
-            source="assumed: at rest",
+            "assumed: at rest",
         ),
-        Var(
+        _param(
             "max_substep",
-            "Real",
-            "parameter",
             "Longest sub-step for the implicit Coulomb friction",
             1.0e-4,
             "s",
             "ms",
             1e-7,
             1.0,
-            source="assumed: 0.1 ms",
+            "assumed: 0.1 ms",
         ),
     )
 

@@ -3,11 +3,21 @@
 
 from __future__ import annotations
 
-from servofmu.fmus.slave import ServoSlave, Var
+from servofmu.fmus.slave import Item, ServoSlave, Var, output, real_input, real_parameter
 from servofmu.physics.control import MODES, PIDParameters, PIDState, pid_sample
 
 _P = PIDParameters()
 _SRC = "assumed: a speed loop for the gimbal motor of the DCMotor defaults"
+_MODES = {
+    "position": "position loop: reference and measurement in rad",
+    "speed": "speed loop: reference and measurement in rad/s",
+}
+
+
+def _param(name, description, start, unit, display, lo, hi, variability="tunable"):
+    return real_parameter(
+        name, description, start, unit, display, lo, hi, variability=variability, source=_SRC
+    )
 
 
 class ServoController(ServoSlave):
@@ -17,10 +27,8 @@ class ServoController(ServoSlave):
     DEFAULT_EXPERIMENT = (0.0, 1.0, 1.0e-3)
     PHYSICS = ("servofmu.physics.control",)
     VARIABLES = (
-        Var(
+        real_input(
             "reference",
-            "Real",
-            "input",
             "Set point: angle [rad] in position mode, speed [rad/s] in speed mode",
             0.0,
             None,
@@ -28,117 +36,42 @@ class ServoController(ServoSlave):
             -1.0e9,
             1.0e9,
         ),
-        Var(
-            "measurement",
-            "Real",
-            "input",
-            "Measured angle [rad] or speed [rad/s]",
-            0.0,
-            None,
-            None,
-            -1.0e9,
-            1.0e9,
+        real_input(
+            "measurement", "Measured angle [rad] or speed [rad/s]", 0.0, None, None, -1.0e9, 1.0e9
         ),
-        Var("command", "Real", "output", "Controller output: motor voltage", unit="V"),
+        # sampled: no direct feedthrough while stepping; right after initialization the first
+        # sample's command (no integral or derivative yet: clip(kp·(r − y)))
+        output(
+            "command",
+            "Controller output: motor voltage",
+            "V",
+            initial_depends=("reference", "measurement", "kp", "output_min", "output_max"),
+        ),
         Var(
-            "mode",
-            "String",
-            "parameter",
-            "position or speed loop",
-            _P.mode,
-            choices=MODES,
+            name="mode",
+            type="Enumeration",
+            causality="parameter",
+            description="Position or speed loop (the units of reference and measurement)",
+            start=MODES.index(_P.mode) + 1,
+            items=tuple(Item(m, _MODES[m]) for m in MODES),
+            declared_type="ControllerMode",
             source=_SRC,
         ),
-        Var(
-            "kp",
-            "Real",
-            "parameter",
-            "Proportional gain [V per rad or rad/s]",
-            _P.kp,
-            None,
-            None,
-            0.0,
-            1e9,
-            "tunable",
-            source=_SRC,
-        ),
-        Var(
-            "ki",
-            "Real",
-            "parameter",
-            "Integral gain [V/s per rad or rad/s]",
-            _P.ki,
-            None,
-            None,
-            0.0,
-            1e12,
-            "tunable",
-            source=_SRC,
-        ),
-        Var(
-            "kd",
-            "Real",
-            "parameter",
-            "Derivative gain [V·s per rad or rad/s]",
-            _P.kd,
-            None,
-            None,
-            0.0,
-            1e9,
-            "tunable",
-            source=_SRC,
-        ),
-        Var(
+        _param("kp", "Proportional gain [V per rad or rad/s]", _P.kp, None, None, 0.0, 1e9),
+        _param("ki", "Integral gain [V/s per rad or rad/s]", _P.ki, None, None, 0.0, 1e12),
+        _param("kd", "Derivative gain [V·s per rad or rad/s]", _P.kd, None, None, 0.0, 1e9),
+        _param(
             "derivative_filter",
-            "Real",
-            "parameter",
             "Time constant of the derivative filter",
             _P.derivative_filter,
             "s",
             "ms",
             1e-9,
             1e3,
-            "tunable",
-            source=_SRC,
         ),
-        Var(
-            "output_min",
-            "Real",
-            "parameter",
-            "Lower output limit",
-            _P.output_min,
-            "V",
-            None,
-            -1e4,
-            1e4,
-            "tunable",
-            source=_SRC,
-        ),
-        Var(
-            "output_max",
-            "Real",
-            "parameter",
-            "Upper output limit",
-            _P.output_max,
-            "V",
-            None,
-            -1e4,
-            1e4,
-            "tunable",
-            source=_SRC,
-        ),
-        Var(
-            "sample_period",
-            "Real",
-            "parameter",
-            "Sample period",
-            _P.sample_period,
-            "s",
-            "ms",
-            1e-7,
-            1e3,
-            source=_SRC,
-        ),
+        _param("output_min", "Lower output limit", _P.output_min, "V", None, -1e4, 1e4),
+        _param("output_max", "Upper output limit", _P.output_max, "V", None, -1e4, 1e4),
+        _param("sample_period", "Sample period", _P.sample_period, "s", "ms", 1e-7, 1e3, "fixed"),
     )
 
     def __init__(self, **kwargs):
@@ -152,7 +85,7 @@ class ServoController(ServoSlave):
 
     def configure(self):
         self.params = PIDParameters(
-            mode=self.mode,
+            mode=self.item("mode"),
             kp=self.kp,
             ki=self.ki,
             kd=self.kd,

@@ -52,6 +52,16 @@ def keys(table: str) -> list[str]:
     return sorted(_table(table))
 
 
+def titles(table: str) -> dict[str, str]:
+    """``{key: name}`` of one data table in the order of its file (entries added at the end
+    keep the positions of the others: FMU enumeration values are numbered in this order).
+
+    >>> list(titles("lubricants"))[:2]
+    ['krytox_143aa', 'iso_vg32']
+    """
+    return {key: entry.get("name", key) for key, entry in _table(table).items()}
+
+
 @functools.cache
 def material(key: str) -> Material:
     """The :class:`Material` ``key`` from ``data/materials.toml``."""

@@ -1,4 +1,4 @@
-"""Safe unpacking of .ssp and .fmu archives (zip).
+"""Safe unpacking of .ssp and .fmu archives (zip), for the build's validation and the harness.
 
 Refused: entries with absolute paths, drive letters, backslashes or ``..`` components, links
 (symbolic links stored in the zip), more than ``max_entries`` entries, or more than
@@ -12,14 +12,12 @@ import stat
 import zipfile
 from pathlib import Path, PurePosixPath
 
-from .errors import HarnessError
-
 MAX_ENTRIES = 10_000
 MAX_BYTES = 2 * 1024**3  # 2 GiB unpacked
 _CHUNK = 1 << 20
 
 
-class ArchiveError(HarnessError):
+class ArchiveError(ValueError):
     """An archive was refused (the message says which entry and why)."""
 
 

@@ -1,5 +1,6 @@
 """XML parsing without entity expansion, DTDs or network access, and validation against the
-SSP 1.0 schemas (the XSDs shipped with fmpy), both with lxml."""
+SSP 1.0 schemas (the XSDs shipped with fmpy), both with lxml: for the build (SSD sources, a
+built FMU's modelDescription) and the harness."""
 
 from __future__ import annotations
 
@@ -7,8 +8,6 @@ import functools
 from pathlib import Path
 
 from lxml import etree
-
-from .errors import SystemError_
 
 _PARSER = etree.XMLParser(
     resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False, huge_tree=False
@@ -19,11 +18,8 @@ SCHEMAS = {
 }
 
 
-class XMLError(SystemError_):
+class XMLError(ValueError):
     """An XML document was refused (malformed, a DTD, or not schema-valid)."""
-
-    def __init__(self, message: str):
-        super().__init__([message])
 
 
 def parse(data: bytes, what: str) -> etree._Element:

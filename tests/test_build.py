@@ -1,0 +1,80 @@
+"""The build: what an FMU ships and hashes (only the parts of the package it runs), when a
+build is stale, and the one-way dependency of the build and the harness."""
+
+from __future__ import annotations
+
+import ast
+import shutil
+import zipfile
+from pathlib import Path
+
+from servofmu.build import fmu as fmu_module
+from servofmu.build.fmu import PACKAGE_DIR, is_current
+from servofmu.fmus.slave import SHIPPED, package_hash
+
+BUILD_DIR = Path(fmu_module.__file__).parent
+
+
+def _copy_package(tmp_path) -> Path:
+    copy = tmp_path / "servofmu"
+    shutil.copytree(PACKAGE_DIR, copy, ignore=shutil.ignore_patterns("__pycache__"))
+    return copy
+
+
+def test_fmu_ships_only_what_it_runs(fmus):
+    with zipfile.ZipFile(fmus["BearingFriction"]) as zf:
+        shipped = {
+            n.removeprefix("resources/servofmu/")
+            for n in zf.namelist()
+            if n.startswith("resources/servofmu/") and not n.endswith("/")
+        }
+    tops = {name.split("/")[0] for name in shipped}
+    assert tops == set(SHIPPED)  # __init__.py, physics/, fmus/: no papers, calibration, cli
+    assert "physics/data/bearings.toml" in shipped and "fmus/slave.py" in shipped
+    assert not [n for n in shipped if "__pycache__" in n or n.endswith(".pyc")]
+    expected = {
+        f.relative_to(PACKAGE_DIR).as_posix()
+        for part in SHIPPED
+        for f in (
+            [PACKAGE_DIR / part]
+            if (PACKAGE_DIR / part).is_file()
+            else (PACKAGE_DIR / part).rglob("*")
+        )
+        if f.is_file() and f.suffix in (".py", ".toml") and "__pycache__" not in f.parts
+    }
+    assert shipped == expected
+
+
+def test_hash_covers_the_shipped_parts_only(tmp_path):
+    copy = _copy_package(tmp_path)
+    assert package_hash(copy) == package_hash(PACKAGE_DIR)
+    label = copy / "papers" / "common.py"
+    label.write_text(label.read_text() + "\n# a new plot label\n")
+    (copy / "cli.py").write_text((copy / "cli.py").read_text() + "\n")
+    assert package_hash(copy) == package_hash(PACKAGE_DIR)  # not run by an FMU: not stale
+    data = copy / "physics" / "data" / "bearings.toml"
+    data.write_text(data.read_text() + "\n# edited\n")
+    assert package_hash(copy) != package_hash(PACKAGE_DIR)
+
+
+def test_is_current_ignores_edits_outside_the_shipped_parts(fmus, tmp_path, monkeypatch):
+    out = fmus["BearingFriction"].parent
+    assert is_current(out)
+    copy = _copy_package(tmp_path)
+    (copy / "papers" / "yu2017.py").write_text("# edited\n")
+    monkeypatch.setattr(fmu_module, "PACKAGE_DIR", copy)
+    assert is_current(out)
+    (copy / "fmus" / "slave.py").write_text((copy / "fmus" / "slave.py").read_text() + "\n")
+    assert not is_current(out)
+
+
+def test_build_never_imports_the_harness():
+    for source in BUILD_DIR.glob("*.py"):
+        tree = ast.parse(source.read_text())
+        for node in ast.walk(tree):
+            names = []
+            if isinstance(node, ast.Import):
+                names = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom) and node.module:
+                names = [node.module]
+            assert not [n for n in names if "harness" in n], f"{source.name} imports {names}"

@@ -1,0 +1,224 @@
+"""Choices (catalogue keys, lubrication, controller mode): enumeration items in the
+modelDescription, range-checked integers in the FMUs, saved in the state, bound from .ssv files
+and set by item name in the harness; the FMI encoding alternative; the variable-table checks."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import numpy as np
+import pytest
+from fmpy.validation import validate_fmu
+from fmu_helpers import Fmu
+
+from servofmu.build.archive import read_member
+from servofmu.build.choices import choice_items, problems
+from servofmu.build.ssp import SSP_DIR, systems
+from servofmu.build.xmlsafe import parse, validate
+from servofmu.fmus import slave
+from servofmu.fmus.BearingFriction import BearingFriction
+from servofmu.harness import HarnessError, SystemError_, load_system, run
+from servofmu.physics import bearing_parameters
+from servofmu.physics.bearing_parameters import PARAMETERS, parameter
+
+SSV = (
+    '<?xml version="1.0" encoding="UTF-8"?>\n<ssv:ParameterSet xmlns:ssv="http://ssp-standard.org/'
+    'SSP1/SystemStructureParameterValues" version="1.0" name="{name}"><ssv:Parameters>'
+    "{parameters}</ssv:Parameters></ssv:ParameterSet>"
+)
+
+
+def _items(fmu_path) -> dict[str, dict[str, int]]:
+    return choice_items(parse(read_member(fmu_path, "modelDescription.xml"), "md"))
+
+
+def test_every_choice_has_its_catalogue_items_in_file_order(fmus):
+    items = _items(fmus["BearingFriction"])
+    choices = {p.name for p in PARAMETERS if p.choices}
+    assert set(items) == choices == {
+        "mounting", "bearing", "lubrication", "lubricant", "frame_material", "shaft_material"
+    }  # fmt: skip
+    assert list(items["lubrication"]) == ["grease", "solid"]
+    assert list(items["bearing"])[:2] == ["from_mounting", "71803"]  # "" = the mounting's own
+    assert items["mounting"]["ning_space_shaft"] == parameter("mounting").item("ning_space_shaft")
+    assert _items(fmus["ServoController"]) == {"mode": {"position": 1, "speed": 2}}
+    actuator = _items(fmus["ActuatorStiffness"])
+    assert next(iter(actuator["support_mounting"])) == "none"
+    for path in fmus.values():  # no String variable is left
+        if path.suffix == ".fmu":
+            xml = read_member(path, "modelDescription.xml")
+            assert b"<String" not in xml and problems(parse(xml, "md")) == []
+
+
+def test_choice_values_survive_a_serialised_state(fmus):
+    path = fmus["BearingFriction"]
+    setting = dict(mounting="ning_space_shaft", lubrication="solid", lubricant="mos2_film")
+    fmu = Fmu(path, "a").init(temperature=300.0, speed=0.3, **setting)
+    blob = fmu.slave.serializeFMUstate(fmu.slave.getFMUstate())
+    expected = fmu.real_outputs()
+    fmu.close()
+    fresh = Fmu(path, "b").init()  # the defaults: Yu's gimbal with grease
+    assert fresh.get("kinematic_viscosity") > 0
+    fresh.slave.setFMUstate(fresh.slave.deSerializeFMUstate(blob))
+    refs = [fresh.vr[n] for n in setting]
+    assert fresh.slave.getInteger(refs) == [fresh.items[n][v] for n, v in setting.items()]
+    fresh.slave.doStep(0.0, 1e-3)
+    assert fresh.real_outputs() == expected and fresh.get("kinematic_viscosity") == 0.0
+    fresh.close()
+
+
+def test_ssv_choices_carry_the_value_of_their_item_name(fmus):
+    """Each .ssv binds a choice as ssv:Integer with the item name as description (every engine
+    applies an Integer): the two must agree, so a reordered catalogue cannot shift a value
+    silently."""
+    checked = 0
+    for folder in systems():
+        system = load_system(folder, fmu_dir=fmus["BearingFriction"].parent)
+        try:
+            for ssv in folder.rglob("*.ssv"):  # <component>.ssv, or variants/ (comp.var)
+                root = parse(ssv.read_bytes(), str(ssv))
+                for p in root.iter("{*}Parameter"):
+                    target = p.get("name")
+                    if ssv.parent == folder:
+                        target = f"{ssv.stem}.{target}"
+                    _, var = system.variable(target)
+                    if var.items is None:
+                        continue
+                    value = int(p.find("{*}Integer").get("value"))
+                    assert var.items[p.get("description")] == value, (ssv, target)
+                    checked += 1
+        finally:
+            system.close()
+    assert checked >= 9  # mounting, lubrication, lubricant ×3 systems, modes, support
+
+
+def test_harness_takes_item_names_and_refuses_others(fmus):
+    system = load_system(fmus["BearingFriction"].parent / "space_bearing.ssp")
+    try:
+        assert system.components["bearing"].parameters["lubrication"] == ("Integer", 2)
+        res = run(system, stop=0.02, record=["bearing.kinematic_viscosity"], progress=False)
+        assert np.all(res["bearing.kinematic_viscosity"] == 0.0)  # solid, from the .ssv
+        greased = {"bearing.lubrication": "grease", "bearing.lubricant": "krytox_143aa"}
+        res = run(system, parameters=greased, stop=0.02, record=["bearing.kinematic_viscosity"])
+        assert np.all(res["bearing.kinematic_viscosity"] > 0)
+        res = run(system, parameters={"bearing.lubrication": "2"}, stop=0.02, progress=False)
+        with pytest.raises(HarnessError, match=r"lubrication = 'oil' is not one of the items "):
+            run(system, parameters={"bearing.lubrication": "oil"}, stop=0.02)
+        with pytest.raises(HarnessError, match=r"grease \(1\), solid \(2\)"):
+            run(system, parameters={"bearing.lubrication": 3}, stop=0.02)
+    finally:
+        system.close()
+
+
+@pytest.mark.parametrize(
+    "binding, message",
+    [
+        ('<ssv:String value="solid"/>', r"lubrication = 'solid' \(String\) is not one of"),
+        ('<ssv:Integer value="7"/>', r"lubrication = 7 \(Integer\) is not one of the items"),
+        ('<ssv:Enumeration value="oil"/>', r"'oil' \(Enumeration\) is not one of"),
+        ('<ssv:Enumeration value="solid"/>', None),  # an item name: schema-valid and applied
+    ],
+)
+def test_ssv_bindings_of_a_choice(fmus, tmp_path, binding, message):
+    folder = tmp_path / "space_bearing"
+    source = SSP_DIR / "space_bearing"
+    for f in source.rglob("*"):
+        if f.is_file():
+            (folder / f.relative_to(source)).parent.mkdir(parents=True, exist_ok=True)
+            (folder / f.relative_to(source)).write_bytes(f.read_bytes())
+    ssv = folder / "bearing.ssv"
+    text = ssv.read_text()
+    old = '<ssv:Parameter name="lubrication" description="solid"><ssv:Integer value="2"/>'
+    assert old in text
+    ssv.write_text(text.replace(old, f'<ssv:Parameter name="lubrication">{binding}'))
+    validate(parse(ssv.read_bytes(), str(ssv)), "ssv", str(ssv))  # fmpy's SSP 1.0 schema
+    if message is None:
+        system = load_system(folder, fmu_dir=fmus["BearingFriction"].parent)
+        assert system.components["bearing"].parameters["lubrication"] == ("Integer", 2)
+        system.close()
+        return
+    with pytest.raises(SystemError_, match=message):
+        load_system(folder, fmu_dir=fmus["BearingFriction"].parent)
+
+
+def test_choices_written_as_fmi_enumerations_validate_and_run(tmp_path, monkeypatch):
+    """The other encoding (slave.CHOICES_AS = "Enumeration"): 0 problems in fmpy and servofmu
+    validate, and the harness binds the same .ssv files (ssv:Integer sets an Enumeration)."""
+    from servofmu.build.fmu import build_all
+    from servofmu.build.validate import validate as validate_fmu_servofmu
+
+    monkeypatch.setattr(slave, "CHOICES_AS", "Enumeration")
+    out = build_all(tmp_path)
+    for path in out:
+        if path.suffix == ".fmu":
+            xml = read_member(path, "modelDescription.xml").decode()
+            assert ("<Enumeration declaredType=" in xml) == (path.stem != "DCMotor")
+            assert validate_fmu(str(path)) == [] and validate_fmu_servofmu(path) == []
+    system = load_system(tmp_path / "space_bearing.ssp")
+    try:
+        assert system.components["bearing"].variables["lubrication"].type == "Enumeration"
+        res = run(system, stop=0.02, record=["bearing.kinematic_viscosity"], progress=False)
+        assert np.all(res["bearing.kinematic_viscosity"] == 0.0)
+    finally:
+        system.close()
+
+
+def test_variable_table_checks_name_what_is_wrong():
+    out = slave.output("y", "an output", initial_depends=("u", "nowhere"), depends=("k",))
+    u = slave.real_input("u", "an input", 0.0, None, None, -1.0, 1.0)
+    choice = slave.Var(name="c", type="Enumeration", causality="parameter", description="c")
+    found = slave.check_variables((u, out, u, choice, slave.output("z", "no initial")))
+    assert any("duplicate variable names" in p for p in found)
+    assert any("output y: dependencies ['k', 'nowhere', 'k']" in p for p in found)
+    assert any("c: an Enumeration needs items" in p for p in found)
+    assert any("output z: initial_depends not declared" in p for p in found)
+    assert slave.check_variables(BearingFriction.VARIABLES) == []
+    with pytest.raises(TypeError, match="initial_depends not declared"):
+        type("Broken", (slave.ServoSlave,), {"VARIABLES": (slave.output("z", "z"),)})
+
+
+def test_speed_path_refreshes_exactly_the_outputs_that_depend_on_speed():
+    speed = {v.name for v in BearingFriction.VARIABLES if "speed" in v.depends}
+    assert set(BearingFriction._SPEED_OUTPUTS) == speed
+
+
+def test_physics_does_not_import_the_fmu_layer():
+    folder = Path(bearing_parameters.__file__).parent
+    for source in folder.glob("*.py"):
+        for node in ast.walk(ast.parse(source.read_text())):
+            if isinstance(node, ast.ImportFrom):
+                assert "fmus" not in (node.module or ""), source.name
+            if isinstance(node, ast.Import):
+                assert not [a for a in node.names if "fmus" in a.name], source.name
+
+
+def test_a_catalogue_key_that_reads_as_a_number_stays_a_key(fmus):
+    """The command line parses --grid/--parameters values as floats when they read as one:
+    the bearing "71803" must still name the bearing (harness and the sweep's model task)."""
+    from servofmu.harness.sweep import ModelTask
+    from servofmu.physics.bearing_parameters import default_parameters
+
+    base = default_parameters("yu2017_gimbal")
+    rows = ModelTask(base, ("preload",))([{"bearing": 71803.0}, {"bearing": "71803"}])
+    assert "error" not in rows[0] and rows[0]["preload"] == rows[1]["preload"]
+    system = load_system(fmus["BearingFriction"].parent / "seeker_gimbal.ssp")
+    try:
+        for value in (71803.0, "71803", 2, "2"):  # the name, or the item value 2
+            run(system, parameters={"bearing.bearing": value}, stop=0.002, progress=False)
+        with pytest.raises(HarnessError, match=r"bearing = 71804 is not one of the items"):
+            run(system, parameters={"bearing.bearing": 71804.0}, stop=0.002)
+    finally:
+        system.close()
+
+
+def test_command_line_refuses_a_bad_item_with_exit_2(fmus, tmp_path, capsys):
+    from servofmu.cli import main
+
+    ssp = str(fmus["BearingFriction"].parent / "space_bearing.ssp")
+    args = ["run", ssp, "--stop", "0.02", "--out", str(tmp_path)]
+    assert main([*args, "--parameters", "bearing.mounting=nowhere"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "bearing.mounting = 'nowhere'" in err
+    assert "ning_space_shaft (3)" in err and not (tmp_path / "results.csv").exists()
+    assert main([*args, "--parameters", "bearing.mounting=ning_space_shaft"]) == 0

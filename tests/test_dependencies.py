@@ -1,0 +1,126 @@
+"""The dependencies the built FMUs declare in ModelStructure are true (issue 15: an
+InitialUnknown without them reads "depends on everything", and OMSimulator then finds loops
+that are not there).
+
+Through fmpy, for each FMU: the outputs right after initialization at a base point, then again
+with each input and each parameter changed alone (a few values each; a choice: every other
+item). An output may move only with the inputs and parameters its InitialUnknowns entry
+declares, and it must move with at least one of them (unless it declares none). A change the
+FMU refuses (its log says error) tells nothing about dependencies and is skipped, but every
+variable must have at least one accepted change. The stepped FMUs' outputs must not move when
+an input changes without a step (no direct feedthrough: their Outputs list none).
+"""
+
+from __future__ import annotations
+
+import pytest
+from fmpy import extract, read_model_description
+from fmu_helpers import Fmu
+
+BASE = {
+    "BearingFriction": dict(temperature=253.15, speed=0.2, axial_load=5.0, radial_load=3.0),
+    "ActuatorStiffness": dict(temperature=253.15, speed=0.1, load_torque=150.0, angle=0.17),
+    "DCMotor": dict(
+        voltage=2.0,
+        load_torque=1e-3,
+        friction_running_torque=1e-3,
+        friction_breakaway_torque=2e-3,
+        initial_current=0.3,
+        initial_speed=1.0,
+        initial_angle=0.5,
+    ),
+    "ServoController": dict(reference=1.0, measurement=0.4, kp=2.0, ki=10.0, kd=0.1),
+}
+# a change where the base value is 0, by unit
+STEP = {"m": 2e-6, "N": 20.0, "N/m": 1e8, "rad/s": 0.3, "A": 0.5, "rad": 0.1, "V": 2.0}
+
+
+def _candidates(v, base):
+    """Values to try for variable ``v`` (fmpy ModelVariable) whose base value is ``base``."""
+    if v.name in _items:
+        return [i for i in _items[v.name].values() if i != base]
+    if v.type != "Real":
+        return []
+    lo = -float("inf") if v.min is None else float(v.min)
+    hi = float("inf") if v.max is None else float(v.max)
+    if v.unit == "K":
+        values = [base + 10.0, base + 100.0, base - 80.0]
+    elif base == 0.0:
+        step = STEP.get(v.unit, 0.5)
+        values = [step, -step, 10 * step]
+    else:
+        values = [base * 1.1, base * 0.5, base * 0.1, base * 2.0]
+    return [x for x in values if lo <= x <= hi]
+
+
+_items: dict = {}
+
+
+class _Probe:
+    """Instantiates one FMU again and again and reads its outputs after initialization."""
+
+    def __init__(self, path):
+        self.path = path
+        self.md = read_model_description(str(path))
+        self.dir = extract(str(path))
+        self.outputs = [v.name for v in self.md.modelVariables if v.causality == "output"]
+
+    def initial(self, values):
+        log = []
+        fmu = Fmu(self.path, "dep", unzip_dir=self.dir, log=log, md=self.md)
+        try:
+            fmu.init(**values)
+            if any(status >= 3 for status, _ in log):
+                return None, fmu.items
+            return {n: fmu.get(n) for n in self.outputs}, fmu.items
+        finally:
+            fmu.close()
+
+
+@pytest.mark.parametrize("name", list(BASE))
+def test_initial_unknowns_declare_their_true_dependencies(fmus, name):
+    probe = _Probe(fmus[name])
+    base, items = probe.initial(BASE[name])
+    assert base is not None, f"{name}: the base point is refused"
+    _items.clear()
+    _items.update(items)
+    declared = {u.variable.name: {d.name for d in u.dependencies} for u in probe.md.initialUnknowns}
+    knowns = [v for v in probe.md.modelVariables if v.causality in ("input", "parameter")]
+    moved = {o: set() for o in probe.outputs}
+    untested = []
+    for v in knowns:
+        start = BASE[name].get(v.name, v.start)
+        start = float(start) if v.type == "Real" else int(start)
+        accepted = 0
+        for value in _candidates(v, start):
+            out, _ = probe.initial({**BASE[name], v.name: value})
+            if out is None:
+                continue
+            accepted += 1
+            for o in probe.outputs:
+                if out[o] != base[o]:
+                    moved[o].add(v.name)
+        if not accepted:
+            untested.append(v.name)
+    assert not untested, f"{name}: no accepted change of {untested}"
+    for o in probe.outputs:
+        undeclared = moved[o] - declared[o]
+        assert not undeclared, f"{name}.{o} moves with {sorted(undeclared)}, not declared"
+        if declared[o]:
+            assert moved[o], f"{name}.{o} moves with none of its dependencies {declared[o]}"
+
+
+@pytest.mark.parametrize("name", ["DCMotor", "ServoController"])
+def test_stepped_outputs_do_not_feed_through(fmus, name):
+    probe = _Probe(fmus[name])
+    md = probe.md
+    assert all(u.dependencies == [] for u in md.outputs)
+    fmu = Fmu(fmus[name], "ft", unzip_dir=probe.dir, md=md).init(**BASE[name])
+    try:
+        before = {o: fmu.get(o) for o in probe.outputs}
+        for v in md.modelVariables:
+            if v.causality == "input":
+                fmu.set(**{v.name: 2.0 * float(BASE[name].get(v.name, 1.0)) + 1.0})
+        assert {o: fmu.get(o) for o in probe.outputs} == before
+    finally:
+        fmu.close()
