@@ -44,6 +44,7 @@ from .report import (
     Parameter,
     Report,
     Row,
+    assemble,
     calibrated,
     check,
     consequence,
@@ -151,12 +152,7 @@ class _Reproduction:
 def reproduce(out_dir) -> Report:
     """Compute every row, write CSV/PNG to ``out_dir``, return the :class:`Report`."""
     r = _Reproduction(out_dir)
-    rep = Report(paper="liu2014", title=TITLE)
-    for section in SECTIONS:
-        rep.rows += section(r)
-    rep.parameters = parameters(r.act, r.fit)
-    rep.files = sorted(str(p) for p in r.out.glob("*") if p.suffix in (".csv", ".png"))
-    return rep
+    return assemble("liu2014", TITLE, SECTIONS, r, parameters(r.act, r.fit))
 
 
 def table1_series(r: _Reproduction) -> list[Row]:

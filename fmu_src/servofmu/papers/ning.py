@@ -36,6 +36,7 @@ from .report import (
     Parameter,
     Report,
     Row,
+    assemble,
     calibrated,
     in_range,
     plot,
@@ -229,12 +230,7 @@ class _Reproduction:
 def reproduce(out_dir) -> Report:
     """Compute every row, write CSV/PNG to ``out_dir``, return the :class:`Report`."""
     r = _Reproduction(out_dir)
-    rep = Report(paper="ning", title=TITLE)
-    for section in SECTIONS:
-        rep.rows += section(r)
-    rep.parameters = parameters(r.pair, r.spacer)
-    rep.files = sorted(str(p) for p in r.out.glob("*") if p.suffix in (".csv", ".png"))
-    return rep
+    return assemble("ning", TITLE, SECTIONS, r, parameters(r.pair, r.spacer))
 
 
 def fig9a_interference(r: _Reproduction) -> list[Row]:

@@ -210,6 +210,31 @@ class Report:
         return "\n".join(lines)
 
 
+def assemble(
+    paper: str,
+    title: str,
+    sections: Sequence[Callable],
+    shared,
+    parameters: list[Parameter],
+) -> Report:
+    """The report of ``paper``: the rows of each section in order (a section is a function
+    of the ``shared`` reproduction state that writes its CSV/PNG into ``shared.out`` and
+    returns its rows), the ``parameters`` and the CSV/PNG files found in ``shared.out``.
+
+    >>> import types, tempfile
+    >>> shared = types.SimpleNamespace(out=Path(tempfile.mkdtemp()))
+    >>> rep = assemble("p", "t", [lambda s: [check("x", "q", 1.0, 1.0, "N")]], shared, [])
+    >>> [r.status for r in rep.rows]
+    ['reproduced']
+    """
+    rep = Report(paper=paper, title=title, parameters=parameters)
+    for section in sections:
+        rep.rows += section(shared)
+    out = Path(shared.out)
+    rep.files = sorted(str(f) for f in out.glob("*") if f.suffix in (".csv", ".png"))
+    return rep
+
+
 def summary_line(summary: dict[str, dict[str, int]]) -> str:
     """One line: the rows counted per kind (predictions first) and status.
 
@@ -289,38 +314,17 @@ def _numeric(
 
 
 def prediction(
-    id: str,
-    quantity: str,
-    published: float,
-    computed: float,
-    unit: str,
-    rule: Rule,
-    *,
-    printed: str | None = None,
-    reference: float | None = None,
-    note: str = "",
-    miss_note: str = "",
+    id: str, quantity: str, published: float, computed: float, unit: str, rule: Rule, **options
 ) -> Row:
     """A predicted number: ``reproduced`` when |computed − published| is within the
-    tolerance of ``rule`` (from ``published``, its ``printed`` text or the published
-    ``reference`` of a change), else ``not-reproduced`` with ``miss_note``.
+    tolerance of ``rule``, else ``not-reproduced``. ``options``: ``printed`` (the paper's text
+    of the number) and ``reference`` (the published reference of a change) as the rule needs
+    them, ``note``, and ``miss_note`` (added when missed).
 
     >>> prediction("x", "q", 2.0, 2.1, "N", PAPER_MODEL, printed="2.0").status
     'reproduced'
     """
-    return _numeric(
-        "prediction",
-        id,
-        quantity,
-        published,
-        computed,
-        unit,
-        rule,
-        printed=printed,
-        reference=reference,
-        note=note,
-        miss_note=miss_note,
-    )
+    return _numeric("prediction", id, quantity, published, computed, unit, rule, **options)
 
 
 def check(
@@ -353,27 +357,19 @@ def consequence(
     of: str,
     *,
     rule: Rule = ARITHMETIC,
-    printed: str | None = None,
     note: str = "",
-    miss_note: str = "",
+    **options,
 ) -> Row:
     """A number that follows arithmetically from the calibrated row(s) ``of`` (how, in
-    ``note``): ``consequence`` within the tolerance of ``rule``, else ``not-reproduced``.
+    ``note``): ``consequence`` within the tolerance of ``rule``, else ``not-reproduced``;
+    ``options`` as for :func:`prediction`.
 
     >>> consequence("x", "q", 2.0, 2.0, "N", "x.1", note="2 × x.1").status
     'consequence'
     """
+    note = _join(f"follows from {of}:", note)
     return _numeric(
-        "consequence",
-        id,
-        quantity,
-        published,
-        computed,
-        unit,
-        rule,
-        printed=printed,
-        note=_join(f"follows from {of}:", note),
-        miss_note=miss_note,
+        "consequence", id, quantity, published, computed, unit, rule, note=note, **options
     )
 
 

@@ -39,6 +39,7 @@ from .report import (
     Parameter,
     Report,
     Row,
+    assemble,
     calibrated,
     consequence,
     plot,
@@ -208,12 +209,7 @@ class _Reproduction:
 def reproduce(out_dir) -> Report:
     """Compute every row, write CSV/PNG to ``out_dir``, return the :class:`Report`."""
     r = _Reproduction(out_dir)
-    rep = Report(paper="yu2017", title=TITLE)
-    for section in SECTIONS:
-        rep.rows += section(r)
-    rep.parameters = parameters(r.pairs, r.coeff)
-    rep.files = sorted(str(p) for p in r.out.glob("*") if p.suffix in (".csv", ".png"))
-    return rep
+    return assemble("yu2017", TITLE, SECTIONS, r, parameters(r.pairs, r.coeff))
 
 
 def fig3_clearance(r: _Reproduction) -> list[Row]:
