@@ -203,6 +203,69 @@ def test_bad_input_is_discarded_with_a_message_and_the_instance_recovers(
     fmu.close()
 
 
+#: BearingFriction's declared ranges (the model's −100…+200 °C, README) and, for each, a value
+#: just outside that the physics itself accepts: only the FMU's own check can refuse it.
+BEARING_INPUT_RANGES = [
+    ("temperature", 173.15, 473.15, 480.0),
+    ("temperature", 173.15, 473.15, 170.0),
+    ("speed", -1.0e4, 1.0e4, 2.0e4),
+    ("axial_load", -1.0e5, 1.0e5, 1.5e5),
+    ("radial_load", -1.0e5, 1.0e5, 1.5e5),
+]
+BEARING_PARAMETER_RANGES = [
+    ("assembly_temperature", 173.15, 473.15, 480.0),
+    ("outer_interference", -1.0e-3, 1.0e-3, 1.5e-3),
+    ("shim", -1.0e-3, 1.0e-3, 1.5e-3),
+    ("assembly_preload", 0.0, 1.0e5, 1.5e5),
+    ("loop_stiffness", 0.0, 1.0e13, 2.0e13),
+    ("palmgren_s0", 0.0, 100.0, 150.0),
+    ("regularisation_speed", 1.0e-9, 1.0e3, 2.0e3),
+    ("stribeck_speed", 1.0e-9, 1.0e3, 2.0e3),
+    ("pressure_limit", 1.0e8, 1.0e11, 2.0e11),
+]
+
+
+def _library_accepts(parameters=None, **inputs):
+    """The bearing physics evaluated at the default parameter set (changed by
+    ``parameters``) and inputs: finite outputs, no exception."""
+    from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
+
+    p = default_parameters("yu2017_gimbal") | (parameters or {})
+    point = dict(temperature=293.15, speed=0.0, axial_load=0.0, radial_load=0.0) | inputs
+    out = BearingModel(pair_from_parameters(p)).evaluate(**point)
+    return math.isfinite(out.running_torque) and math.isfinite(out.preload)
+
+
+def _declared(fmu, name):
+    (v,) = [v for v in fmu.md.modelVariables if v.name == name]
+    return float(v.min), float(v.max)
+
+
+@pytest.mark.parametrize("name, lo, hi, value", BEARING_INPUT_RANGES)
+def test_bearing_input_range_is_the_fmus_own_check(fmus, name, lo, hi, value):
+    assert _library_accepts(**{name: value})
+    fmu = Fmu(fmus["BearingFriction"], "range").init()
+    assert _declared(fmu, name) == (lo, hi)
+    fmu.set(**{name: value})
+    with pytest.raises(FMICallException, match="status 2"):
+        fmu.slave.doStep(0.0, 1e-3)
+    text = f"{name} = {value!r} is outside the valid range [{lo:g}, {hi:g}]"
+    assert any(text in m for _, m in fmu.log), fmu.log
+    fmu.close()
+
+
+@pytest.mark.parametrize("name, lo, hi, value", BEARING_PARAMETER_RANGES)
+def test_bearing_parameter_range_is_the_fmus_own_check(fmus, name, lo, hi, value):
+    assert _library_accepts({name: value})
+    fmu = Fmu(fmus["BearingFriction"], "prange").init(**{name: value})
+    assert _declared(fmu, name) == (lo, hi)
+    text = f"{name} = {value!r} is outside the valid range [{lo:g}, {hi:g}]"
+    assert any(text in m for _, m in fmu.log), fmu.log
+    with pytest.raises(FMICallException, match="status 2"):
+        fmu.slave.doStep(0.0, 1e-3)
+    fmu.close()
+
+
 def test_bad_tunable_parameter_then_fixed(fmus):
     fmu = Fmu(fmus["BearingFriction"], "p").init(sliding_friction=-1.0)
     assert any("sliding_friction = -1.0" in m for _, m in fmu.log)

@@ -109,3 +109,32 @@ def test_coefficient_ranges():
         fr.FrictionCoefficients(static_friction_ratio=0.5)
     with pytest.raises(ValueError, match=re.escape("sliding_friction = -0.1")):
         fr.FrictionCoefficients(sliding_friction=-0.1)
+
+
+def test_spin_sits_at_the_controlling_race():
+    # Three balls, each Q = 10 N at α = 15°, μ = 0.1, no hysteresis, no sliding. Circular
+    # contacts (F(ρ) = 0, E = π/2) with Σρ = 4000 1/m at the inner and 1000 1/m at the outer
+    # race, steel on steel (η = 2·(1 − 0.3²)/206.9 GPa = 8.7965e-12 1/Pa). By hand (Hertz
+    # sphere, a = (3·Q·η/(2·Σρ))^(1/3); spin M = (3/8)·μ·Q·a·E·sin α per ball, Yu eq 6–7):
+    #   inner: a = 3.2071e-5 m, M = 4.8895e-6 N·m, three balls 1.4668e-5 N·m
+    #   outer: a = 5.0910e-5 m, M = 7.7615e-6 N·m, three balls 2.3285e-5 N·m
+    # Solid lubrication (Ning; outer-race control, Jones 1960): the balls roll on the outer
+    # race and spin on the inner one. Grease (Yu eq 7): the larger spin moment, here the outer.
+    eta = 2 * (1 - 0.3**2) / 206.9e9
+    inner, outer = contact_constants(4000.0, 0.0, eta), contact_constants(1000.0, 0.0, eta)
+    load = np.full(3, 10.0)
+    alpha = np.full(3, math.radians(15.0))
+    coeff = fr.FrictionCoefficients(hysteresis_loss=0.0, sliding_friction=0.1)
+
+    def torques(lubrication):
+        return fr.ball_set_torques(
+            load, alpha, inner, outer, 20e-3, 3e-3, 1.6e-3, 1.6e-3, coeff, lubrication, False
+        )
+
+    solid, grease = torques("solid"), torques("grease")
+    assert float(solid.spin) == pytest.approx(1.4668e-5, rel=1e-4)
+    assert float(solid.inner_ring) == pytest.approx(1.4668e-5, rel=1e-4)
+    assert float(solid.outer_ring) == 0.0
+    assert float(grease.spin) == pytest.approx(2.3285e-5, rel=1e-4)
+    assert float(grease.outer_ring) == pytest.approx(2.3285e-5, rel=1e-4)
+    assert float(grease.inner_ring) == 0.0

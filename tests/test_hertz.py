@@ -91,3 +91,64 @@ def test_vectorised_and_scalar_agree():
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=re.escape(match)):
         call()
+
+
+def _johnson_ellipse(curvature_sum, curvature_difference, compliance, load):
+    """Semi-axes a ≥ b [m] and approach δ [m] of a Hertz contact from Johnson's relations
+    (Contact Mechanics, 1985, §3.5), solved numerically, without the closed forms under test:
+    with the gap h = A·x² + B·y², p0 = 3Q/(2πab), e² = 1 − b²/a², 1/E* = η:
+      A = (p0/E*)·(b/a²)·(K(e) − E(e))/e²,  B = (p0/E*)·(b/a²)·((a/b)²·E(e) − K(e))/e²,
+      δ = (p0·b/E*)·K(e),
+    and A + B = Σρ/2, B − A = F(ρ)·(A + B)."""
+    from scipy.optimize import root
+    from scipy.special import ellipe, ellipk
+
+    big_a = 0.25 * curvature_sum * (1 - curvature_difference)
+    big_b = 0.25 * curvature_sum * (1 + curvature_difference)
+
+    def gaps(x):
+        a, b = np.exp(x)
+        m = 1 - (b / a) ** 2
+        p0 = 3 * load / (2 * math.pi * a * b)
+        c = p0 * compliance * b / a**2 / m
+        return [
+            c * (ellipk(m) - ellipe(m)) / big_a - 1,
+            c * ((a / b) ** 2 * ellipe(m) - ellipk(m)) / big_b - 1,
+        ]
+
+    r0 = (3 * load * compliance / (2 * curvature_sum)) ** (1 / 3)  # circular contact
+    sol = root(gaps, [math.log(2 * r0), math.log(0.5 * r0)], tol=1e-13)
+    assert np.max(np.abs(gaps(sol.x))) < 1e-10, sol.message
+    a, b = np.exp(sol.x)
+    p0 = 3 * load / (2 * math.pi * a * b)
+    return a, b, p0 * b * compliance * ellipk(1 - (b / a) ** 2)
+
+
+@pytest.mark.parametrize("f_rho", [0.3, 0.7, 0.9, 0.95])
+def test_semi_axes_and_approach_solve_johnsons_relations(f_rho):
+    # an elongated ellipse (k from 1.6 to 11), where b = a/k: the semi-minor axis is checked
+    # for k ≠ 1 against the Hertz relations themselves
+    rho, q = 400.0, 80.0
+    c = hertz.contact_constants(rho, f_rho, STEEL_ETA)
+    a_ref, b_ref, delta_ref = _johnson_ellipse(rho, f_rho, STEEL_ETA, q)
+    a, b = c.semi_axes(q)
+    assert a == pytest.approx(a_ref, rel=1e-7)
+    assert b == pytest.approx(b_ref, rel=1e-7)
+    assert c.deflection(q) == pytest.approx(delta_ref, rel=1e-7)
+    assert c.max_pressure(q) == pytest.approx(3 * q / (2 * math.pi * a_ref * b_ref), rel=1e-6)
+
+
+@pytest.mark.parametrize("ratio", [2.0, 5.0, 10.0, 20.0])
+def test_semi_minor_axis_matches_hamrock_brewe(ratio):
+    # Hamrock & Brewe (1983), J. Lubr. Technol. 105:171–177: with α = Ry/Rx, 1/R = Σρ,
+    # E' = 2/η: b = (6·Ē·Q·R/(π·k̄·E'))^(1/3), k̄ = 1.0339·α^0.636, Ē = 1.0003 + 0.5968/α
+    # (their fits are within 3 % in k and 1 % in E for these ratios: 2 % in b, 1.5 % in a)
+    f_rho = (ratio - 1) / (ratio + 1)
+    rho, q = 1e3, 50.0
+    k_hb, e_hb = 1.0339 * ratio**0.636, 1.0003 + 0.5968 / ratio
+    e_prime = 2 / STEEL_ETA
+    b_hb = (6 * e_hb * q / (rho * math.pi * k_hb * e_prime)) ** (1 / 3)
+    a_hb = (6 * k_hb**2 * e_hb * q / (rho * math.pi * e_prime)) ** (1 / 3)
+    a, b = hertz.contact_constants(rho, f_rho, STEEL_ETA).semi_axes(q)
+    assert b == pytest.approx(b_hb, rel=0.02)
+    assert a == pytest.approx(a_hb, rel=0.025)

@@ -9,12 +9,17 @@ Heathcote sliding + inner-race spin with outer-race control).
 Rows: the interference rates −0.05 / +0.07 µm/°C (predictions from the materials), the preload
 change of about ±40 N over −60…80 °C (+40 N at 80 °C calibrates the one unknown length of the
 loop, the spacer; −60 °C is a prediction), the trends of Fig 10a–c and Fig 11, and the
-cycle-to-cycle drift of 1.7 / 0.9 N·mm, which a reversible thermoelastic model cannot show.
+cycle-to-cycle drift of 1.7 / 0.9 N·mm, computed by running the model over two cycles
+(:func:`cycle_history`, :func:`part_temperatures`, :func:`torque_history`): quasi-static in
+temperature today, every part at the chamber temperature, so a reversible thermoelastic model
+repeats its first cycle; the part temperatures of a thermal network go in at
+:func:`part_temperatures`.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import functools
 from pathlib import Path
 
 import numpy as np
@@ -25,19 +30,46 @@ from ..physics.bearing import BearingModel, BearingPair, with_mounting
 from ..physics.fits import mounted_geometry
 from ..physics.units import MM, NMM, RPM, UM, celsius_to_kelvin
 from .common import bearing_parameters, material_parameters, mounting_parameters
-from .report import Parameter, Report, calibrated, compare, plot, trend, write_csv
+from .report import (
+    MEASURED_CHANGE,
+    PAPER_MODEL,
+    Parameter,
+    Report,
+    Row,
+    assemble,
+    calibrated,
+    in_range,
+    plot,
+    prediction,
+    trend,
+    write_csv,
+)
 
 TITLE = (
     "Ning, Fan, Chen, An, Zhao: Effect of alternating temperature on friction torque of "
     "aerospace bearings (Trans. CSAE)"
 )
-CYCLE_C = np.arange(-60.0, 80.01, 1.0)
+LOW_C, HIGH_C = -60.0, 80.0  # the alternating temperature range [°C]
+CYCLE_C = np.arange(LOW_C, HIGH_C + 0.01, 1.0)
 FIG10C_C = np.arange(0.0, 80.01, 10.0)  # Fig 10c: 0…80 °C in 10 °C steps
 PRELOADS = np.arange(50.0, 350.01, 50.0)  # Fig 10b: 0…350 N in 50 N steps (0 N carries no torque)
 INNER_FITS = np.arange(0.0, 10.01, 2.0) * UM  # Fig 10a axis values are lost: assumed 0…10 µm
 TEST_SPEED = 10.0 * RPM  # rad/s, assumed (no viscous term: the torque does not depend on it)
 REFERENCE_C = 20.0
-PUBLISHED = {"inner_rate": -0.05, "outer_rate": 0.07, "hot": 40.0, "cold": -40.0}
+I_REF = int(np.flatnonzero(CYCLE_C == REFERENCE_C)[0])
+CYCLES = 2  # Fig 11: the first cycle and a later one
+POINTS_PER_CYCLE = 2 * int(HIGH_C - LOW_C)  # 1 K steps up and down
+#: Ning's numbers as printed in the text (§2–3): rates [µm/°C], preload changes [N] ("about"),
+#: the cycle-to-cycle changes [N·mm] (measured) and the ratio of Fig 10a ("about 1.2–1.5")
+PUBLISHED = {
+    "inner_rate": "-0.05",
+    "outer_rate": "0.07",
+    "hot": "40",
+    "cold": "-40",
+    "cycle_max": "1.7",
+    "cycle_min": "0.9",
+    "inner_outer": ("1.2", "1.5"),
+}
 COEFFICIENTS = catalog.coefficients("ning_space_shaft")
 
 
@@ -76,27 +108,137 @@ def calibrate_spacer() -> float:
     """Spacer length [m] that gives +40 N of preload at 80 °C (Fig 9b); the preload change at
     80 °C increases with the spacer length (more bearing steel in the closing path)."""
     return brentq(
-        lambda length: preload_change(pair_for(length), 80.0) - PUBLISHED["hot"],
+        lambda length: preload_change(pair_for(length), HIGH_C) - float(PUBLISHED["hot"]),
         1e-3,
         0.5,
         xtol=1e-9,
     )
 
 
+def cycle_history(cycles: int = CYCLES, per_cycle: int = POINTS_PER_CYCLE):
+    """The alternating temperature of Fig 11 as a history: a triangle from LOW_C up to HIGH_C
+    and back per cycle, starting at LOW_C. Returns (phase [cycles], chamber temperature [°C]).
+    The time scale does not enter (the model is quasi-static in temperature).
+
+    >>> phase, temp_c = cycle_history(2, 4)
+    >>> temp_c.tolist()
+    [-60.0, 10.0, 80.0, 10.0, -60.0, 10.0, 80.0, 10.0, -60.0]
+    """
+    k = np.arange(cycles * per_cycle + 1)
+    up = 1.0 - np.abs(2.0 * (k % per_cycle) / per_cycle - 1.0)  # 0 → 1 → 0 in each cycle
+    return k / per_cycle, LOW_C + (HIGH_C - LOW_C) * up
+
+
+def part_temperatures(chamber_k) -> dict[str, np.ndarray]:
+    """Temperatures [K] of the shaft system's parts along a history of chamber temperatures
+    ``chamber_k`` [K]. What exists today is quasi-static: every part at the chamber
+    temperature (Ning's uniform-temperature assumption; no thermal network yet), under the key
+    ``"uniform"``. A thermal network (housing, shaft and rings, each with its lag) will return
+    its part temperatures here, and :func:`torque_history` takes them.
+
+    >>> part_temperatures([213.15, 353.15])["uniform"].tolist()
+    [213.15, 353.15]
+    """
+    return {"uniform": np.asarray(chamber_k, dtype=float)}
+
+
+def torque_history(pair: BearingPair, parts: dict[str, np.ndarray]) -> np.ndarray:
+    """Running torque [N·m] of the pair at every point of a history of part temperatures
+    ``parts`` [K] (see :func:`part_temperatures`), at the test speed. The bearing model takes
+    one uniform temperature today; other keys are refused until it takes part temperatures.
+
+    >>> t = torque_history(pair_for(), part_temperatures([293.15, 293.15]))
+    >>> bool(t[0] == t[1] > 0)
+    True
+    """
+    if set(parts) != {"uniform"}:
+        raise ValueError(
+            f"part temperatures {sorted(parts)}: the bearing model takes one uniform "
+            "temperature ('uniform') until it takes part temperatures"
+        )
+    return np.asarray(BearingModel(pair).curves(parts["uniform"], TEST_SPEED).running_torque)
+
+
+def cycle_changes(phase, torque) -> tuple[float, float]:
+    """(drop of the maximum, rise of the minimum) of ``torque`` from the first to the last
+    cycle of a history with ``phase`` [cycles] (the point at the very end belongs to the
+    last cycle); in the unit of ``torque``.
+
+    >>> cycle_changes([0.0, 0.5, 1.0, 1.5, 2.0], [1.0, 5.0, 2.0, 4.0, 2.0])
+    (1.0, 1.0)
+    """
+    phase, torque = np.asarray(phase, float), np.asarray(torque, float)
+    cycle = np.minimum(np.floor(phase), np.ceil(phase[-1]) - 1)
+    first, last = torque[cycle == cycle[0]], torque[cycle == cycle[-1]]
+    return float(first.max() - last.max()), float(last.min() - first.min())
+
+
+class _Reproduction:
+    """What the figure functions share: the calibrated pair, its curve over the alternating
+    range and its mounted geometry, and the output folder."""
+
+    def __init__(self, out_dir):
+        self.out = Path(out_dir)
+        self.spacer = calibrate_spacer()
+        self.pair = pair_for(self.spacer)
+        self.cycle = _curves(self.pair, CYCLE_C)
+        m = self.pair.mounting
+        self.mounted = mounted_geometry(
+            self.pair.bearing, m.fit, celsius_to_kelvin(CYCLE_C), m.assembly_temperature
+        )
+
+    @functools.cached_property
+    def preload(self) -> np.ndarray:
+        """Preload [N] over :data:`CYCLE_C`."""
+        return np.asarray(self.cycle.preload)
+
+    @functools.cached_property
+    def why_flat(self) -> str:
+        return _why_flat(self.pair, CYCLE_C, self.mounted)
+
+    @functools.cached_property
+    def fig10a(self) -> tuple[np.ndarray, np.ndarray]:
+        """Inner- and outer-ring torque [N·mm] at 20 °C over :data:`INNER_FITS`."""
+        ti, to = [], []
+        for fit in INNER_FITS:
+            oa = _curves(pair_for(self.spacer, inner_interference=float(fit)), [REFERENCE_C])
+            ti.append(float(oa.inner_ring_torque[0]) / NMM)
+            to.append(float(oa.outer_ring_torque[0]) / NMM)
+        return np.array(ti), np.array(to)
+
+    @functools.cached_property
+    def fig10b(self) -> np.ndarray:
+        """Torque [N·mm] at 20 °C over :data:`PRELOADS` (assembly preload)."""
+        return np.array(
+            [
+                float(
+                    _curves(
+                        pair_for(self.spacer, assembly_preload=float(f)), [REFERENCE_C]
+                    ).running_torque[0]
+                )
+                / NMM
+                for f in PRELOADS
+            ]
+        )
+
+    @functools.cached_property
+    def fig10c(self) -> np.ndarray:
+        """Torque [N·mm] over :data:`FIG10C_C` at the 100 N assembly preload."""
+        return np.asarray(_curves(self.pair, FIG10C_C).running_torque) / NMM
+
+
 def reproduce(out_dir) -> Report:
     """Compute every row, write CSV/PNG to ``out_dir``, return the :class:`Report`."""
-    out = Path(out_dir)
-    rep = Report(paper="ning", title=TITLE)
-    spacer = calibrate_spacer()
-    pair = pair_for(spacer)
-    t_k = celsius_to_kelvin(CYCLE_C)
+    r = _Reproduction(out_dir)
+    return assemble("ning", TITLE, SECTIONS, r, parameters(r.pair, r.spacer))
 
-    # --- Fig 9a: interferences versus temperature -------------------------------------
-    m = pair.mounting
-    g = mounted_geometry(pair.bearing, m.fit, t_k, m.assembly_temperature)
+
+def fig9a_interference(r: _Reproduction) -> list[Row]:
+    """Fig 9a: the two fits versus temperature and their rates (predictions from handbook α)."""
+    g = r.mounted
     inner, outer = np.asarray(g.inner_interference) / UM, np.asarray(g.outer_interference) / UM
     write_csv(
-        out / "fig9a_interference.csv",
+        r.out / "fig9a_interference.csv",
         {
             "temperature [degC]": CYCLE_C,
             "inner_interference [um]": inner,
@@ -107,108 +249,112 @@ def reproduce(out_dir) -> Report:
         },
     )
     plot(
-        out / "fig9a_interference.png",
+        r.out / "fig9a_interference.png",
         CYCLE_C,
         {"inner ring on TC4 shaft": inner, "outer ring in TC4 housing": outer},
         "temperature [°C]",
         "diametral interference [µm]",
         "Ning Fig 9a: fits of the 71807C versus temperature",
     )
-    for key, y, label in (("inner_rate", inner, "inner"), ("outer_rate", outer, "outer")):
-        rate = float(np.polyfit(CYCLE_C, y, 1)[0])
-        rep.rows.append(
-            compare(
-                f"fig9a.{key}",
-                f"{label}-ring interference change with temperature",
-                PUBLISHED[key],
-                rate,
-                "µm/°C",
-                abs_tol=0.005,
-                note="(α_shaft or housing − α_ring)·d with handbook α of TC4 and 9Cr18",
-            )
+    return [
+        prediction(
+            f"fig9a.{key}",
+            f"{label}-ring interference change with temperature",
+            float(PUBLISHED[key]),
+            float(np.polyfit(CYCLE_C, y, 1)[0]),
+            "µm/°C",
+            PAPER_MODEL,
+            printed=PUBLISHED[key],
+            note="(α_shaft or housing − α_ring)·d with handbook α of TC4 and 9Cr18",
         )
+        for key, y, label in (("inner_rate", inner, "inner"), ("outer_rate", outer, "outer"))
+    ]
 
-    # --- Fig 9b / 11: preload and torque over the alternating range -------------------
-    o = _curves(pair, CYCLE_C)
-    i_ref = int(np.flatnonzero(CYCLE_C == REFERENCE_C)[0])
-    preload = np.asarray(o.preload)
-    d_preload = preload - preload[i_ref]
-    torque = np.asarray(o.running_torque) / NMM
+
+def fig9b_preload(r: _Reproduction) -> list[Row]:
+    """Fig 9b: the preload change over the alternating range (+40 N at 80 °C calibrates the
+    spacer; −60 °C is a prediction)."""
+    preload = r.preload
+    d_preload = preload - preload[I_REF]
     write_csv(
-        out / "fig9b_preload.csv",
+        r.out / "fig9b_preload.csv",
         {"temperature [degC]": CYCLE_C, "preload [N]": preload, "preload_change [N]": d_preload},
     )
     plot(
-        out / "fig9b_preload.png",
+        r.out / "fig9b_preload.png",
         CYCLE_C,
         {"preload change from 20 °C": d_preload},
         "temperature [°C]",
         "preload change [N]",
         "Ning Fig 9b: axial preload of the back-to-back pair",
     )
-    write_csv(
-        out / "fig11_torque.csv",
-        {
-            "temperature [degC]": CYCLE_C,
-            "total [N.mm]": torque,
-            "hysteresis [N.mm]": np.asarray(o.hysteresis_torque) / NMM,
-            "sliding [N.mm]": np.asarray(o.sliding_torque) / NMM,
-            "spin [N.mm]": np.asarray(o.spin_torque) / NMM,
-            "inner_ring [N.mm]": np.asarray(o.inner_ring_torque) / NMM,
-            "outer_ring [N.mm]": np.asarray(o.outer_ring_torque) / NMM,
-            "preload [N]": preload,
-        },
-    )
-    plot(
-        out / "fig11_torque.png",
-        CYCLE_C,
-        {
-            "total": torque,
-            "hysteresis": np.asarray(o.hysteresis_torque) / NMM,
-            "differential sliding": np.asarray(o.sliding_torque) / NMM,
-            "spin (inner race)": np.asarray(o.spin_torque) / NMM,
-        },
-        "temperature [°C]",
-        "friction torque [N·mm]",
-        "Ning Fig 11: friction torque of the pair over −60…80 °C (reversible model)",
-    )
-    rep.rows.append(
+    return [
         calibrated(
             "fig9b.hot",
             "preload change from 20 °C to 80 °C",
-            PUBLISHED["hot"],
+            float(PUBLISHED["hot"]),
             float(d_preload[-1]),
             "N",
-            f"spacer length {spacer / MM:.1f} mm of 9Cr18 (Ning's Table 2 is missing)",
-            rel=1e-3,
+            f"spacer length {r.spacer / MM:.1f} mm of 9Cr18 (Ning's Table 2 is missing)",
             note="the loop closes as the 9Cr18 rings and spacer outgrow the TC4 shaft",
-        )
-    )
-    why = _why_flat(pair, CYCLE_C, g)
-    rep.rows.append(
-        compare(
+        ),
+        prediction(
             "fig9b.cold",
             "preload change from 20 °C to −60 °C",
-            PUBLISHED["cold"],
+            float(PUBLISHED["cold"]),
             float(d_preload[0]),
             "N",
-            abs_tol=10.0,
-            note="'about −40…40 N'; tolerance ±10 N.",
-            miss_note=why,
-        )
-    )
-    rep.rows.append(
+            PAPER_MODEL,
+            printed=PUBLISHED["cold"],
+            note="published as 'about −40…40 N'.",
+            miss_note=r.why_flat,
+        ),
         trend(
             "fig9b.rise",
             "preload versus temperature",
             "increases as temperature rises",
             bool(np.all(np.diff(preload) >= 0)),
-            f"{preload[0]:.1f} N at −60 °C, {preload[i_ref]:.1f} N at 20 °C, "
+            f"{preload[0]:.1f} N at −60 °C, {preload[I_REF]:.1f} N at 20 °C, "
             f"{preload[-1]:.1f} N at 80 °C",
-            miss_note=why,
-        )
+            miss_note=r.why_flat,
+        ),
+    ]
+
+
+def fig11_torque(r: _Reproduction) -> list[Row]:
+    """Fig 11: the torque and its components over −60…80 °C, and its trend."""
+    o = r.cycle
+    torque = np.asarray(o.running_torque) / NMM
+    parts = {
+        "hysteresis": np.asarray(o.hysteresis_torque) / NMM,
+        "sliding": np.asarray(o.sliding_torque) / NMM,
+        "spin": np.asarray(o.spin_torque) / NMM,
+    }
+    write_csv(
+        r.out / "fig11_torque.csv",
+        {
+            "temperature [degC]": CYCLE_C,
+            "total [N.mm]": torque,
+            **{f"{k} [N.mm]": v for k, v in parts.items()},
+            "inner_ring [N.mm]": np.asarray(o.inner_ring_torque) / NMM,
+            "outer_ring [N.mm]": np.asarray(o.outer_ring_torque) / NMM,
+            "preload [N]": r.preload,
+        },
     )
-    rep.rows.append(
+    plot(
+        r.out / "fig11_torque.png",
+        CYCLE_C,
+        {
+            "total": torque,
+            "hysteresis": parts["hysteresis"],
+            "differential sliding": parts["sliding"],
+            "spin (inner race)": parts["spin"],
+        },
+        "temperature [°C]",
+        "friction torque [N·mm]",
+        "Ning Fig 11: friction torque of the pair over −60…80 °C (reversible model)",
+    )
+    return [
         trend(
             "fig11.rise",
             "friction torque over −60…80 °C",
@@ -217,50 +363,85 @@ def reproduce(out_dir) -> Report:
             f"{torque[0]:.3g} N·mm at −60 °C, {torque[-1]:.3g} N·mm at 80 °C",
             miss_note="the preload follows the path of fig9b.rise",
         )
+    ]
+
+
+def fig11_cycles(r: _Reproduction) -> list[Row]:
+    """Fig 11: the model run over two alternating-temperature cycles; the change of the
+    torque's maximum and minimum from the first to the second cycle (Ning's measured 1.7 and
+    0.9 N·mm)."""
+    phase, temp_c = cycle_history()
+    torque = torque_history(r.pair, part_temperatures(celsius_to_kelvin(temp_c))) / NMM
+    _write_cycles(r.out, phase, temp_c, torque)
+    drop, rise = cycle_changes(phase, torque)
+    how = (
+        f"computed over {CYCLES} cycles with every part at the chamber temperature (no thermal "
+        "network yet)."
     )
-    rep.rows.append(
-        compare(
+    why = (
+        "the model is reversible (thermoelastic, no wear or film run-in): a cycle can differ "
+        "from the first only through the part temperatures"
+    )
+    return [
+        prediction(
             "fig11.cycle_max",
             "drop of the maximum torque from the first to a later cycle",
-            1.7,
-            0.0,
+            float(PUBLISHED["cycle_max"]),
+            drop,
             "N·mm",
-            abs_tol=0.2,
-            miss_note=(
-                "the model is reversible (thermoelastic, no wear or film run-in), so every "
-                "cycle repeats the first; Ning attributes the drop to a smaller bearing load, "
-                + _equivalent_relaxation(pair, 80.0, 1.7)
-            ),
-        )
-    )
-    rep.rows.append(
-        compare(
+            MEASURED_CHANGE,
+            reference=0.0,
+            note=how,
+            miss_note=f"{why}; Ning attributes the drop to a smaller bearing load, "
+            + _equivalent_relaxation(r.pair, HIGH_C, float(PUBLISHED["cycle_max"])),
+        ),
+        prediction(
             "fig11.cycle_min",
             "rise of the minimum torque from the first to a later cycle",
-            0.9,
-            0.0,
+            float(PUBLISHED["cycle_min"]),
+            rise,
             "N·mm",
-            abs_tol=0.2,
-            miss_note="the model is reversible; see fig11.cycle_max",
-        )
+            MEASURED_CHANGE,
+            reference=0.0,
+            note=how,
+            miss_note=f"{why}; see fig11.cycle_max",
+        ),
+    ]
+
+
+def _write_cycles(out: Path, phase, temp_c, torque) -> None:
+    write_csv(
+        out / "fig11_cycles.csv",
+        {"phase [cycles]": phase, "temperature [degC]": temp_c, "torque [N.mm]": torque},
+    )
+    n = POINTS_PER_CYCLE  # the cycles share their temperature points
+    plot(
+        out / "fig11_cycles.png",
+        temp_c[:n],
+        {"first cycle": torque[:n], f"cycle {CYCLES}": torque[(CYCLES - 1) * n : CYCLES * n]},
+        "temperature [°C]",
+        "friction torque [N·mm]",
+        f"Ning Fig 11: {CYCLES} cycles −60…80 °C (every part at the chamber temperature)",
     )
 
-    # --- Fig 10c: torque versus temperature at 100 N ----------------------------------
-    o10c = _curves(pair, FIG10C_C)
-    t10c = np.asarray(o10c.running_torque) / NMM
+
+def fig10c_temperature(r: _Reproduction) -> list[Row]:
+    """Fig 10c: torque versus temperature 0…80 °C at the 100 N assembly preload."""
+    t10c = r.fig10c
     write_csv(
-        out / "fig10c_temperature.csv", {"temperature [degC]": FIG10C_C, "torque [N.mm]": t10c}
+        r.out / "fig10c_temperature.csv", {"temperature [degC]": FIG10C_C, "torque [N.mm]": t10c}
     )
     plot(
-        out / "fig10c_temperature.png",
+        r.out / "fig10c_temperature.png",
         FIG10C_C,
         {"total": t10c},
         "temperature [°C]",
         "friction torque [N·mm]",
         "Ning Fig 10c: torque versus temperature, preload 100 N at assembly",
     )
-    cool, hot = t10c[4] - t10c[0], t10c[-1] - t10c[4]
-    rep.rows.append(
+    i40 = int(np.flatnonzero(FIG10C_C == 40.0)[0])
+    cool, hot = t10c[i40] - t10c[0], t10c[-1] - t10c[i40]
+    return [
         trend(
             "fig10c.rise",
             "torque from 0 to 80 °C at 100 N",
@@ -269,17 +450,15 @@ def reproduce(out_dir) -> Report:
             f"{cool:+.3g} N·mm over 0…40 °C, {hot:+.3g} N·mm over 40…80 °C",
             miss_note="the preload follows the path of fig9b.rise",
         )
-    )
+    ]
 
-    # --- Fig 10b: torque versus preload -----------------------------------------------
-    t10b, ti, to = [], [], []
-    for f in PRELOADS:
-        ob = _curves(pair_for(spacer, assembly_preload=float(f)), [REFERENCE_C])
-        t10b.append(float(ob.running_torque[0]) / NMM)
-    t10b = np.array(t10b)
-    write_csv(out / "fig10b_preload.csv", {"preload [N]": PRELOADS, "torque [N.mm]": t10b})
+
+def fig10b_preload(r: _Reproduction) -> list[Row]:
+    """Fig 10b: torque versus assembly preload 50…350 N at 20 °C."""
+    t10b = r.fig10b
+    write_csv(r.out / "fig10b_preload.csv", {"preload [N]": PRELOADS, "torque [N.mm]": t10b})
     plot(
-        out / "fig10b_preload.png",
+        r.out / "fig10b_preload.png",
         PRELOADS,
         {"total": t10b},
         "axial preload [N]",
@@ -287,7 +466,7 @@ def reproduce(out_dir) -> Report:
         "Ning Fig 10b: torque versus preload at 20 °C",
     )
     steps = np.diff(t10b)
-    rep.rows.append(
+    return [
         trend(
             "fig10b.concave",
             "torque versus preload 50…350 N",
@@ -299,16 +478,14 @@ def reproduce(out_dir) -> Report:
                 "contact angle only partly offsets it"
             ),
         )
-    )
+    ]
 
-    # --- Fig 10a: torque versus inner-ring interference at 100 N ----------------------
-    for fit in INNER_FITS:
-        oa = _curves(pair_for(spacer, inner_interference=float(fit)), [REFERENCE_C])
-        ti.append(float(oa.inner_ring_torque[0]) / NMM)
-        to.append(float(oa.outer_ring_torque[0]) / NMM)
-    ti, to = np.array(ti), np.array(to)
+
+def fig10a_interference(r: _Reproduction) -> list[Row]:
+    """Fig 10a: inner- and outer-ring torque versus inner-ring interference at 100 N."""
+    ti, to = r.fig10a
     write_csv(
-        out / "fig10a_interference.csv",
+        r.out / "fig10a_interference.csv",
         {
             "inner_interference [um]": INNER_FITS / UM,
             "inner_ring [N.mm]": ti,
@@ -316,14 +493,14 @@ def reproduce(out_dir) -> Report:
         },
     )
     plot(
-        out / "fig10a_interference.png",
+        r.out / "fig10a_interference.png",
         INNER_FITS / UM,
         {"inner ring": ti, "outer ring": to, "total": ti + to},
         "inner-ring interference [µm]",
         "friction torque [N·mm]",
         "Ning Fig 10a: torque versus interference (100 N preload at 20 °C)",
     )
-    rep.rows.append(
+    return [
         trend(
             "fig10a.rise",
             "torque versus inner-ring interference 0…10 µm",
@@ -332,24 +509,27 @@ def reproduce(out_dir) -> Report:
             f"{ti[0] + to[0]:.4g} → {ti[-1] + to[-1]:.4g} N·mm",
             note="same assembly preload; the interference closes the clearance, lowers the "
             "contact angle and raises the ball loads",
-        )
-    )
-    ratio = (ti[-1] - ti[0]) / (to[-1] - to[0])
-    rep.rows.append(
-        compare(
+        ),
+        in_range(
             "fig10a.inner_outer",
             "increase of the inner-ring torque over that of the outer ring",
-            1.35,
-            float(ratio),
+            *PUBLISHED["inner_outer"],
+            float((ti[-1] - ti[0]) / (to[-1] - to[0])),
             "",
-            abs_tol=0.15,
-            note="published as 1.2–1.5 (Fig 10a); the axis values are lost, 0…10 µm assumed",
+            note="published as 'about 1.2–1.5' (Fig 10a); the axis values are lost, "
+            "0…10 µm assumed",
             miss_note="the inner ring carries the spin (outer-race control), which scales "
             "with the ball load like the other terms",
-        )
-    )
-    d_pre, d_temp, d_fit = t10b[-1] - t10b[0], t10c[-1] - t10c[0], (ti + to)[-1] - (ti + to)[0]
-    rep.rows.append(
+        ),
+    ]
+
+
+def sec3_ranking(r: _Reproduction) -> list[Row]:
+    """§3: the ranking of the three influences over the test ranges of Fig 10a–c."""
+    total_a = r.fig10a[0] + r.fig10a[1]
+    d_pre, d_temp = r.fig10b[-1] - r.fig10b[0], r.fig10c[-1] - r.fig10c[0]
+    d_fit = total_a[-1] - total_a[0]
+    return [
         trend(
             "sec3.ranking",
             "influence on the torque over the test ranges",
@@ -359,10 +539,20 @@ def reproduce(out_dir) -> Report:
             f"interference 0→10 µm: +{d_fit:.3g} N·mm",
             note="the interference range is assumed",
         )
-    )
-    rep.parameters = parameters(pair, spacer)
-    rep.files = sorted(str(p) for p in out.glob("*") if p.suffix in (".csv", ".png"))
-    return rep
+    ]
+
+
+#: The report's sections in the order of its rows; each writes its CSV/PNG and returns rows.
+SECTIONS = (
+    fig9a_interference,
+    fig9b_preload,
+    fig11_torque,
+    fig11_cycles,
+    fig10c_temperature,
+    fig10b_preload,
+    fig10a_interference,
+    sec3_ranking,
+)
 
 
 def _why_flat(pair: BearingPair, temps_c, mounted) -> str:

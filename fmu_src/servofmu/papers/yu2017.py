@@ -21,6 +21,7 @@ viscous 2.30 N·mm at −40 °C, and the sliding friction coefficient μ on the 
 from __future__ import annotations
 
 import dataclasses
+import functools
 from pathlib import Path
 
 import numpy as np
@@ -33,7 +34,19 @@ from ..physics.friction import FrictionCoefficients
 from ..physics.preload import loop_interference
 from ..physics.units import DEG, MM, NMM, UM, celsius_to_kelvin
 from .common import bearing_parameters, material_parameters, mounting_parameters
-from .report import Parameter, Report, calibrated, compare, plot, trend, write_csv
+from .report import (
+    PAPER_MODEL,
+    Parameter,
+    Report,
+    Row,
+    assemble,
+    calibrated,
+    consequence,
+    plot,
+    prediction,
+    trend,
+    write_csv,
+)
 
 TITLE = (
     "Yu, Li, Shang, Cao (2017) Impact analysis and experimental research on friction torque of "
@@ -42,7 +55,11 @@ TITLE = (
 CHAMBER_C = np.arange(-40.0, 61.0, 20.0)  # Yu's chamber temperatures (§3)
 CURVE_C = np.arange(-40.0, 60.01, 1.0)
 I20 = int(np.flatnonzero(CURVE_C == 20.0)[0])  # index of the assembly temperature
+CHAMBER = np.isin(CURVE_C, CHAMBER_C)
 READINGS = {"stated": "yu2017_gimbal", "printed": "yu2017_gimbal_printed"}
+#: The reading of eq 14 in which s0 and μ are fitted (in the stated one the preload vanishes
+#: above 35 °C, so its geometric minimum is 0 and cannot be fitted).
+CALIBRATION_READING = "printed"
 #: Assumed constant test speed of the electrical method (Yu gives none; only s0·n^(2/3) is
 #: identifiable from eq 8, so this choice moves s0, not the fitted viscous curve at −40 °C).
 TEST_SPEED = 10.0 * DEG  # rad/s
@@ -51,12 +68,13 @@ TEST_SPEED = 10.0 * DEG  # rad/s
 HYSTERESIS_LOSS = catalog.coefficients("yu2017_gimbal").hysteresis_loss
 INTERFERENCES = (0.004e-3, 0.006e-3, 0.008e-3)  # Yu's Δ (radial) for Fig 4 [m]
 SHIMS = (0.0, 0.03e-3)  # Fig 6, 7 [m]
+#: Yu's numbers of Fig 8 as printed in §3 (computed by Yu's model)
 PUBLISHED = {
-    "viscous_m40": 2.30,  # N·mm, viscous torque at −40 °C (§3, Fig 8)
-    "total_m40": 3.17,  # N·mm, total at −40 °C
-    "share_m40": 72.0,  # %, viscous share at −40 °C
-    "geometric_min": 0.38,  # N·mm
-    "geometric_max": 0.87,  # N·mm
+    "viscous_m40": "2.30",  # N·mm, viscous torque at −40 °C (§3, Fig 8)
+    "total_m40": "3.17",  # N·mm, total at −40 °C
+    "share_m40": "72",  # %, viscous share at −40 °C
+    "geometric_min": "0.38",  # N·mm
+    "geometric_max": "0.87",  # N·mm
 }
 
 
@@ -86,16 +104,16 @@ def calibrate_s0(pair: BearingPair) -> float:
         pair, coefficients=dataclasses.replace(pair.coefficients, palmgren_s0=1.0)
     )
     v1 = float(_curves(unit, np.array([-40.0])).viscous_torque[0])
-    return PUBLISHED["viscous_m40"] * NMM / v1
+    return float(PUBLISHED["viscous_m40"]) * NMM / v1
 
 
 def calibrated_coefficients() -> tuple[float, float]:
     """(s0, μ) fitted by code as in the report: s0 on the viscous 2.30 N·mm at −40 °C, then μ
-    on the geometric minimum 0.38 N·mm, both in the printed reading."""
+    on the geometric minimum 0.38 N·mm, both in :data:`CALIBRATION_READING`."""
     base = FrictionCoefficients(hysteresis_loss=HYSTERESIS_LOSS)
-    s0 = calibrate_s0(pair_for("printed", coefficients=base))
+    s0 = calibrate_s0(pair_for(CALIBRATION_READING, coefficients=base))
     with_s0 = dataclasses.replace(base, palmgren_s0=s0)
-    return s0, calibrate_mu(pair_for("printed", coefficients=with_s0))
+    return s0, calibrate_mu(pair_for(CALIBRATION_READING, coefficients=with_s0))
 
 
 def calibrate_mu(pair: BearingPair) -> float:
@@ -106,7 +124,7 @@ def calibrate_mu(pair: BearingPair) -> float:
     c1 = dataclasses.replace(pair.coefficients, sliding_friction=1.0)
     out = _curves(dataclasses.replace(pair, coefficients=c1))
     hyst, spin1 = np.asarray(out.hysteresis_torque), np.asarray(out.spin_torque)
-    target = PUBLISHED["geometric_min"] * NMM
+    target = float(PUBLISHED["geometric_min"]) * NMM
 
     def gap(mu):
         return float(np.min(hyst + mu * spin1)) - target
@@ -114,8 +132,8 @@ def calibrate_mu(pair: BearingPair) -> float:
     if gap(0.0) > 0 or gap(2.0) < 0:
         raise ValueError(
             f"no sliding friction coefficient in [0, 2] gives a geometric minimum of "
-            f"{PUBLISHED['geometric_min']} N·mm (minimum at μ = 0: {gap(0.0) / NMM + 0.38:.3g}, "
-            f"at μ = 2: {gap(2.0) / NMM + 0.38:.3g} N·mm)"
+            f"{PUBLISHED['geometric_min']} N·mm (minimum at μ = 0: "
+            f"{(gap(0.0) + target) / NMM:.3g}, at μ = 2: {(gap(2.0) + target) / NMM:.3g} N·mm)"
         )
     return brentq(gap, 0.0, 2.0, xtol=1e-12)
 
@@ -144,107 +162,143 @@ def _interior_minimum(y) -> bool:
     return 0 < i < len(y) - 1 and y[0] > y[i] and y[-1] > y[i]
 
 
-def reproduce(out_dir) -> Report:
-    """Compute every row, write CSV/PNG to ``out_dir``, return the :class:`Report`."""
-    out = Path(out_dir)
-    rep = Report(paper="yu2017", title=TITLE)
-    t_k = celsius_to_kelvin(CURVE_C)
-
-    # --- calibration (Fig 8 numbers named by the issue) -------------------------------
+def calibrated_friction() -> FrictionCoefficients:
+    """The friction coefficients of the reproduction: s0 and μ fitted by code
+    (:func:`calibrated_coefficients`), α_r assumed, with their provenance."""
     s0, mu = calibrated_coefficients()
-    coeff = dataclasses.replace(
-        FrictionCoefficients(hysteresis_loss=HYSTERESIS_LOSS, palmgren_s0=s0),
+    reading = f"eq 14 {CALIBRATION_READING}"
+    return FrictionCoefficients(
+        hysteresis_loss=HYSTERESIS_LOSS,
+        palmgren_s0=s0,
         sliding_friction=mu,
         provenance=(
             ("hysteresis_loss", "assumed: bearing steel, below 1 % (Yu §1.1)"),
-            ("sliding_friction", "calibrated: geometric minimum 0.38 N·mm (Yu §3), eq 14 printed"),
+            ("sliding_friction", f"calibrated: geometric minimum 0.38 N·mm (Yu §3), {reading}"),
             ("palmgren_s0", "calibrated: viscous 2.30 N·mm at −40 °C (Yu §3) at the test speed"),
             ("static_friction_ratio", "assumed: breakaway only, not used by any row"),
         ),
     )
-    pairs = {r: pair_for(r, coefficients=coeff) for r in READINGS}
-    curves = {r: _curves(p) for r, p in pairs.items()}
 
-    # --- Fig 3: radial clearance with and without coupling -----------------------------
-    pair = pairs["stated"]
+
+class _Reproduction:
+    """What the figure functions share: the calibrated coefficients, the pair and its curves
+    in each reading of eq 14, and the output folder."""
+
+    def __init__(self, out_dir):
+        self.out = Path(out_dir)
+        self.coeff = calibrated_friction()
+        self.pairs = {r: pair_for(r, coefficients=self.coeff) for r in READINGS}
+        self.curves = {r: _curves(p) for r, p in self.pairs.items()}
+
+    @functools.cached_property
+    def washers(self) -> dict:
+        """Curves of each (reading, washer δp [m]) of Fig 6 and 7."""
+        return {
+            (reading, shim): _curves(pair_for(reading, shim=shim, coefficients=self.coeff))
+            for reading in READINGS
+            for shim in SHIMS
+        }
+
+    def geometric(self, reading: str, shim: float | None = None) -> np.ndarray:
+        """Geometric torque M_R + M_K [N·m] over :data:`CURVE_C` (the Fig 8 washer unless
+        ``shim`` [m] is given)."""
+        o = self.curves[reading] if shim is None else self.washers[(reading, shim)]
+        return np.asarray(o.hysteresis_torque + o.spin_torque)
+
+
+def reproduce(out_dir) -> Report:
+    """Compute every row, write CSV/PNG to ``out_dir``, return the :class:`Report`."""
+    r = _Reproduction(out_dir)
+    return assemble("yu2017", TITLE, SECTIONS, r, parameters(r.pairs, r.coeff))
+
+
+def fig3_clearance(r: _Reproduction) -> list[Row]:
+    """Fig 3: radial clearance with and without the frame coupling (eq 10–13)."""
+    pair = r.pairs["stated"]
     m = pair.mounting
     geo = {
-        c: mounted_geometry(pair.bearing, m.fit, t_k, m.assembly_temperature, coupled=c)
+        c: mounted_geometry(
+            pair.bearing, m.fit, celsius_to_kelvin(CURVE_C), m.assembly_temperature, coupled=c
+        )
         for c in (True, False)
     }
-    pd = {c: np.asarray(g.race.clearance) for c, g in geo.items()}
+    pd = {c: np.asarray(g.race.clearance) / UM for c, g in geo.items()}
+    fit_pressure = np.asarray(geo[True].outer_fit_pressure)
     write_csv(
-        out / "fig3_clearance.csv",
+        r.out / "fig3_clearance.csv",
         {
             "temperature [degC]": CURVE_C,
-            "clearance_coupled [um]": pd[True] / UM,
-            "clearance_uncoupled [um]": pd[False] / UM,
-            "outer_fit_pressure [MPa]": np.asarray(geo[True].outer_fit_pressure) / 1e6,
+            "clearance_coupled [um]": pd[True],
+            "clearance_uncoupled [um]": pd[False],
+            "outer_fit_pressure [MPa]": fit_pressure / 1e6,
         },
     )
     plot(
-        out / "fig3_clearance.png",
+        r.out / "fig3_clearance.png",
         CURVE_C,
-        {"with frame coupling": pd[True] / UM, "without coupling": pd[False] / UM},
+        {"with frame coupling": pd[True], "without coupling": pd[False]},
         "temperature [°C]",
         "radial clearance [µm]",
         "Yu Fig 3: radial clearance of the 71803 (Δ = 0.006 mm)",
     )
-    spread = float(np.ptp(pd[False])) / UM
-    rep.rows.append(
-        trend(
-            "fig3.uncoupled",
-            "clearance without frame coupling over −40…60 °C",
-            "basically constant",
-            spread < 0.1,
-            f"changes by {spread:.3f} µm (free {pd[False][0] / UM:.2f} µm)",
-            note="rings and balls grow alike; only the clearance itself scales by α·ΔT",
-        )
-    )
-    fitted = np.asarray(geo[True].outer_fit_pressure) > 0
-    slope, icpt = np.polyfit(CURVE_C[fitted], pd[True][fitted] / UM, 1)
-    resid = pd[True][fitted] / UM - (slope * CURVE_C[fitted] + icpt)
-    r2 = 1.0 - np.sum(resid**2) / np.sum(
-        (pd[True][fitted] / UM - np.mean(pd[True][fitted] / UM)) ** 2
-    )
-    rep.rows.append(
-        trend(
-            "fig3.coupled",
-            "clearance with frame coupling",
-            "falls linearly as temperature falls",
-            bool(slope > 0 and r2 > 0.999),
-            f"slope {slope:.4f} µm/°C, R² = {r2:.6f} while the fit holds "
-            f"({pd[True][0] / UM:.2f} µm at −40 °C, {pd[True][I20] / UM:.2f} µm at 20 °C)",
-            note="Lamé pressure of the cast-aluminium bore (assumed boss Ø36 mm) on the ring",
-        )
+    return [_fig3_uncoupled(pd[False]), _fig3_coupled(pd[True], fit_pressure > 0)]
+
+
+def _fig3_uncoupled(pd_um: np.ndarray) -> Row:
+    spread = float(np.ptp(pd_um))
+    return trend(
+        "fig3.uncoupled",
+        "clearance without frame coupling over −40…60 °C",
+        "basically constant",
+        spread < 0.1,
+        f"changes by {spread:.3f} µm (free {pd_um[0]:.2f} µm)",
+        note="rings and balls grow alike; only the clearance itself scales by α·ΔT",
     )
 
-    # --- Fig 4: free contact angle for several interferences --------------------------
-    cols = {"temperature [degC]": CURVE_C}
-    angles = {}
+
+def _fig3_coupled(pd_um: np.ndarray, fitted: np.ndarray) -> Row:
+    x, y = CURVE_C[fitted], pd_um[fitted]
+    slope, icpt = np.polyfit(x, y, 1)
+    r2 = 1.0 - np.sum((y - (slope * x + icpt)) ** 2) / np.sum((y - np.mean(y)) ** 2)
+    return trend(
+        "fig3.coupled",
+        "clearance with frame coupling",
+        "falls linearly as temperature falls",
+        bool(slope > 0 and r2 > 0.999),
+        f"slope {slope:.4f} µm/°C, R² = {r2:.6f} while the fit holds "
+        f"({pd_um[0]:.2f} µm at −40 °C, {pd_um[I20]:.2f} µm at 20 °C)",
+        note="Lamé pressure of the cast-aluminium bore (assumed boss Ø36 mm) on the ring",
+    )
+
+
+def fig4_contact_angle(r: _Reproduction) -> list[Row]:
+    """Fig 4: free contact angle for Yu's outer-ring interferences Δ."""
+    pair = r.pairs["stated"]
+    m = pair.mounting
+    cols, angles, clearance = {"temperature [degC]": CURVE_C}, {}, {}
     for delta in INTERFERENCES:
         g = mounted_geometry(
             pair.bearing,
             dataclasses.replace(m.fit, outer_interference=2.0 * delta),
-            t_k,
+            celsius_to_kelvin(CURVE_C),
             m.assembly_temperature,
         ).race
         angles[delta] = np.asarray(g.free_contact_angle) / DEG
+        clearance[delta] = np.asarray(g.clearance)
         cols[f"contact_angle_D{delta / MM:.3f}mm [deg]"] = angles[delta]
-        cols[f"clearance_D{delta / MM:.3f}mm [um]"] = np.asarray(g.clearance) / UM
-        if delta == 0.008e-3:
-            pd8 = np.asarray(g.clearance)
-    write_csv(out / "fig4_contact_angle.csv", cols)
+        cols[f"clearance_D{delta / MM:.3f}mm [um]"] = clearance[delta] / UM
+    write_csv(r.out / "fig4_contact_angle.csv", cols)
     plot(
-        out / "fig4_contact_angle.png",
+        r.out / "fig4_contact_angle.png",
         CURVE_C,
         {f"Δ = {d / MM:.3f} mm": a for d, a in angles.items()},
         "temperature [°C]",
         "free contact angle [°]",
         "Yu Fig 4: contact angle of the 71803 versus outer-ring interference",
     )
+    pd8 = clearance[max(INTERFERENCES)]
     neg = CURVE_C[pd8 < 0]
-    rep.rows.append(
+    return [
         trend(
             "fig4.locked",
             "Δ = 0.008 mm at low temperature",
@@ -258,26 +312,30 @@ def reproduce(out_dir) -> Report:
             ),
             note="depends on the assumed Ø36 mm aluminium boss (Yu gives no D_L)",
         )
-    )
+    ]
 
-    # --- Fig 6 and 7: preload and geometric torque for two washers --------------------
-    f6 = {"temperature [degC]": CURVE_C}
-    f7 = {"temperature [degC]": CURVE_C}
-    series6, series7 = {}, {}
-    shim_curves = {}
+
+def fig6_fig7_washers(r: _Reproduction) -> list[Row]:
+    """Fig 6 and 7: preload and geometric torque for the washers of 0.00 and 0.03 mm."""
+    _write_washer_figures(r)
+    rows = []
     for reading in READINGS:
-        for shim in SHIMS:
-            o = _curves(pair_for(reading, shim=shim, coefficients=coeff))
-            key = f"{reading}_shim{shim / MM:.2f}mm"
-            shim_curves[(reading, shim)] = o
-            f6[f"preload_{key} [N]"] = np.asarray(o.preload)
-            f7[f"geometric_{key} [N.mm]"] = np.asarray(o.hysteresis_torque + o.spin_torque) / NMM
-            series6[f"{reading}, δp = {shim / MM:.2f} mm"] = f6[f"preload_{key} [N]"]
-            series7[f"{reading}, δp = {shim / MM:.2f} mm"] = f7[f"geometric_{key} [N.mm]"]
-    write_csv(out / "fig6_preload.csv", f6)
-    write_csv(out / "fig7_geometric_torque.csv", f7)
+        rates = _cooling_rates(r.pairs[reading])
+        rows += _fig6_rows(r, reading, rates) + _fig7_rows(r, reading, rates)
+    return rows
+
+
+def _write_washer_figures(r: _Reproduction) -> None:
+    f6, f7 = {"temperature [degC]": CURVE_C}, {"temperature [degC]": CURVE_C}
+    series6, series7 = {}, {}
+    for (reading, shim), o in r.washers.items():
+        key, label = f"{reading}_shim{shim / MM:.2f}mm", f"{reading}, δp = {shim / MM:.2f} mm"
+        f6[f"preload_{key} [N]"] = series6[label] = np.asarray(o.preload)
+        f7[f"geometric_{key} [N.mm]"] = series7[label] = r.geometric(reading, shim) / NMM
+    write_csv(r.out / "fig6_preload.csv", f6)
+    write_csv(r.out / "fig7_geometric_torque.csv", f7)
     plot(
-        out / "fig6_preload.png",
+        r.out / "fig6_preload.png",
         CURVE_C,
         series6,
         "temperature [°C]",
@@ -286,7 +344,7 @@ def reproduce(out_dir) -> Report:
         decorate=lambda ax: ax.set_yscale("symlog", linthresh=10.0),
     )
     plot(
-        out / "fig7_geometric_torque.png",
+        r.out / "fig7_geometric_torque.png",
         CURVE_C,
         series7,
         "temperature [°C]",
@@ -294,209 +352,263 @@ def reproduce(out_dir) -> Report:
         "Yu Fig 7: geometric friction torque of the pair",
         decorate=lambda ax: ax.set_yscale("symlog", linthresh=0.1),
     )
-    chamber = np.isin(CURVE_C, CHAMBER_C)
-    for reading in READINGS:
-        rates = _cooling_rates(pairs[reading])
-        f0 = np.asarray(shim_curves[(reading, 0.0)].preload)[chamber]
-        f3 = np.asarray(shim_curves[(reading, 0.03e-3)].preload)[chamber]
-        fmt = ", ".join(f"{v:.0f}" for v in f0)
-        rep.rows.append(
-            trend(
-                f"fig6.shim0.{reading}",
-                f"preload, washer 0.00 mm, eq 14 {reading}",
-                "rises as temperature falls",
-                bool(np.all(np.diff(f0) <= 0) and f0[0] > f0[-1]),
-                f"{fmt} N at {', '.join(f'{t:.0f}' for t in CHAMBER_C)} °C",
-                miss_note=rates,
-            )
-        )
-        fmt = ", ".join(f"{v:.0f}" for v in f3)
-        rep.rows.append(
-            trend(
-                f"fig6.shim003.{reading}",
-                f"preload, washer 0.03 mm, eq 14 {reading}",
-                "first falls, then rises as temperature falls",
-                _interior_minimum(f3),
-                f"{fmt} N at {', '.join(f'{t:.0f}' for t in CHAMBER_C)} °C",
-                miss_note=rates,
-            )
-        )
-        g0 = np.asarray(
-            shim_curves[(reading, 0.0)].hysteresis_torque + shim_curves[(reading, 0.0)].spin_torque
-        )
-        g3 = np.asarray(
-            shim_curves[(reading, 0.03e-3)].hysteresis_torque
-            + shim_curves[(reading, 0.03e-3)].spin_torque
-        )
-        rep.rows.append(
-            trend(
-                f"fig7.shim_order.{reading}",
-                f"geometric torque versus washer, eq 14 {reading}",
-                "thicker washer, larger torque",
-                bool(np.all(g3 >= g0)),
-                f"0.03 mm ≥ 0.00 mm at every temperature: {bool(np.all(g3 >= g0))}",
-                miss_note=rates,
-            )
-        )
-        cold, warm = g3[0], g3[-1]
-        rep.rows.append(
-            trend(
-                f"fig7.cold_rise.{reading}",
-                f"geometric torque, washer 0.03 mm, eq 14 {reading}",
-                "rises sharply as temperature falls",
-                bool(np.all(np.diff(g3[chamber]) <= 0) and cold > 2.0 * warm),
-                f"{cold / NMM:.3g} N·mm at −40 °C, {warm / NMM:.3g} N·mm at 60 °C",
-                miss_note=rates,
-            )
-        )
 
-    # --- Fig 8: components at Δ = 0.006 mm, δp = 0.03 mm ------------------------------
-    for reading, o in curves.items():
-        write_csv(
-            out / f"fig8_components_{reading}.csv",
-            {
-                "temperature [degC]": CURVE_C,
-                "viscous [N.mm]": np.asarray(o.viscous_torque) / NMM,
-                "hysteresis [N.mm]": np.asarray(o.hysteresis_torque) / NMM,
-                "spin [N.mm]": np.asarray(o.spin_torque) / NMM,
-                "total [N.mm]": np.asarray(o.running_torque) / NMM,
-                "preload [N]": np.asarray(o.preload),
-                "contact_angle [deg]": np.asarray(o.contact_angle) / DEG,
-                "max_contact_pressure [MPa]": np.asarray(o.max_contact_pressure) / 1e6,
-                "kinematic_viscosity [cSt]": np.asarray(o.kinematic_viscosity) / 1e-6,
-            },
-        )
-        plot(
-            out / f"fig8_components_{reading}.png",
-            CURVE_C,
-            {
-                "total": np.asarray(o.running_torque) / NMM,
-                "viscous M_L": np.asarray(o.viscous_torque) / NMM,
-                "hysteresis M_R": np.asarray(o.hysteresis_torque) / NMM,
-                "spin M_K": np.asarray(o.spin_torque) / NMM,
-            },
-            "temperature [°C]",
-            "friction torque [N·mm]",
-            f"Yu Fig 8: total torque and components (eq 14 {reading})",
-            decorate=lambda ax: ax.set_yscale("symlog", linthresh=0.1),
-        )
 
-    o = curves["printed"]
-    rep.rows.append(
+def _fig6_rows(r: _Reproduction, reading: str, rates: str) -> list[Row]:
+    f0, f3 = (np.asarray(r.washers[(reading, s)].preload)[CHAMBER] for s in SHIMS)
+    at = f"at {', '.join(f'{t:.0f}' for t in CHAMBER_C)} °C"
+    return [
+        trend(
+            f"fig6.shim0.{reading}",
+            f"preload, washer 0.00 mm, eq 14 {reading}",
+            "rises as temperature falls",
+            bool(np.all(np.diff(f0) <= 0) and f0[0] > f0[-1]),
+            f"{', '.join(f'{v:.0f}' for v in f0)} N {at}",
+            miss_note=rates,
+        ),
+        trend(
+            f"fig6.shim003.{reading}",
+            f"preload, washer 0.03 mm, eq 14 {reading}",
+            "first falls, then rises as temperature falls",
+            _interior_minimum(f3),
+            f"{', '.join(f'{v:.0f}' for v in f3)} N {at}",
+            miss_note=rates,
+        ),
+    ]
+
+
+def _fig7_rows(r: _Reproduction, reading: str, rates: str) -> list[Row]:
+    g0, g3 = (r.geometric(reading, s) for s in SHIMS)
+    ordered = bool(np.all(g3 >= g0))
+    return [
+        trend(
+            f"fig7.shim_order.{reading}",
+            f"geometric torque versus washer, eq 14 {reading}",
+            "thicker washer, larger torque",
+            ordered,
+            f"0.03 mm ≥ 0.00 mm at every temperature: {ordered}",
+            miss_note=rates,
+        ),
+        trend(
+            f"fig7.cold_rise.{reading}",
+            f"geometric torque, washer 0.03 mm, eq 14 {reading}",
+            "rises sharply as temperature falls",
+            bool(np.all(np.diff(g3[CHAMBER]) <= 0) and g3[0] > 2.0 * g3[-1]),
+            f"{g3[0] / NMM:.3g} N·mm at −40 °C, {g3[-1] / NMM:.3g} N·mm at 60 °C",
+            miss_note=rates,
+        ),
+    ]
+
+
+def fig8_components(r: _Reproduction) -> list[Row]:
+    """Fig 8: total torque and components at Δ = 0.006 mm, δp = 0.03 mm per reading; the
+    viscous torque at −40 °C calibrates s0."""
+    for reading, o in r.curves.items():
+        _write_fig8(r.out, reading, o)
+    o = r.curves[CALIBRATION_READING]
+    return [
         calibrated(
             "fig8.viscous_m40",
             "viscous torque of the pair at −40 °C",
-            PUBLISHED["viscous_m40"],
+            float(PUBLISHED["viscous_m40"]),
             float(o.viscous_torque[0]) / NMM,
             "N·mm",
-            f"Palmgren s0 = {s0:.4g} at the assumed test speed {TEST_SPEED / DEG:g} °/s",
+            f"Palmgren s0 = {r.coeff.palmgren_s0:.4g} at the assumed test speed "
+            f"{TEST_SPEED / DEG:g} °/s",
             note="only s0·n^(2/3) is identifiable from eq 8",
         )
+    ]
+
+
+def _write_fig8(out: Path, reading: str, o) -> None:
+    parts = {
+        "viscous": np.asarray(o.viscous_torque) / NMM,
+        "hysteresis": np.asarray(o.hysteresis_torque) / NMM,
+        "spin": np.asarray(o.spin_torque) / NMM,
+        "total": np.asarray(o.running_torque) / NMM,
+    }
+    write_csv(
+        out / f"fig8_components_{reading}.csv",
+        {
+            "temperature [degC]": CURVE_C,
+            **{f"{k} [N.mm]": v for k, v in parts.items()},
+            "preload [N]": np.asarray(o.preload),
+            "contact_angle [deg]": np.asarray(o.contact_angle) / DEG,
+            "max_contact_pressure [MPa]": np.asarray(o.max_contact_pressure) / 1e6,
+            "kinematic_viscosity [cSt]": np.asarray(o.kinematic_viscosity) / 1e-6,
+        },
     )
-    for reading, o in curves.items():
-        geom_t = np.asarray(o.hysteresis_torque + o.spin_torque) / NMM
-        visc = np.asarray(o.viscous_torque) / NMM
-        total = np.asarray(o.running_torque) / NMM
-        p = np.asarray(o.preload)
-        k_pair = float(np.asarray(o.axial_stiffness)[I20])
-        # a closure change dC splits as 2·da + dN/k with dN = (k_pair/2)·da (one bearing each)
-        share = 100.0 / (1.0 + 0.25 * k_pair / loop_stiffness(pairs[reading]))
-        why = (
-            f"preload {p[0]:.0f} N at −40 °C, {p[I20]:.0f} N at 20 °C, {p[-1]:.0f} N at 60 °C; "
-            f"the E·A/L loop ({loop_stiffness(pairs[reading]):.2g} N/m) is "
-            f"{loop_stiffness(pairs[reading]) / k_pair:.0f}× stiffer than the pair at 20 °C "
-            f"({k_pair:.2g} N/m): {share:.0f} % of the thermal mismatch of frame and shaft "
-            "goes into the balls"
-        )
-        if np.asarray(o.overloaded)[0]:
-            p_max = float(o.max_contact_pressure[0]) / 1e6
-            why += (
-                f"; at −40 °C the contact pressure {p_max:.0f} MPa exceeds 4200 MPa "
-                "(overloaded: permanent deformation)"
-            )
-        if reading == "printed":
-            rep.rows.append(
-                calibrated(
-                    "fig8.geometric_min.printed",
-                    "minimum geometric torque M_R + M_K over −40…60 °C, eq 14 printed",
-                    PUBLISHED["geometric_min"],
-                    float(geom_t.min()),
-                    "N·mm",
-                    f"μ = {mu:.4g} (α_r = {HYSTERESIS_LOSS} assumed)",
-                    note=(
-                        "fitted in the printed reading: in the stated one the preload vanishes "
-                        "above 35 °C, so its minimum is 0 and cannot be fitted"
-                    ),
-                )
-            )
-        else:
-            rep.rows.append(
-                compare(
-                    "fig8.geometric_min.stated",
-                    "minimum geometric torque over −40…60 °C, eq 14 stated",
-                    PUBLISHED["geometric_min"],
-                    float(geom_t.min()),
-                    "N·mm",
-                    rel=0.10,
-                    miss_note="the Al frame outgrows the steel shaft by 1.2 µm/°C and the "
-                    "0.03 mm washer preload is lost above 35 °C; " + why,
-                )
-            )
-        rep.rows.append(
-            compare(
-                f"fig8.geometric_max.{reading}",
-                f"maximum geometric torque over −40…60 °C, eq 14 {reading}",
-                PUBLISHED["geometric_max"],
-                float(geom_t.max()),
-                "N·mm",
-                rel=0.10,
-                note=f"at {CURVE_C[np.argmax(geom_t)]:.0f} °C.",
-                miss_note=why,
-            )
-        )
-        rep.rows.append(
-            compare(
-                f"fig8.total_m40.{reading}",
-                f"total torque at −40 °C, eq 14 {reading}",
-                PUBLISHED["total_m40"],
-                float(total[0]),
-                "N·mm",
-                rel=0.10,
-                note=f"viscous {visc[0]:.3g} + geometric {geom_t[0]:.3g} N·mm",
-                miss_note=why,
-            )
-        )
-        rep.rows.append(
-            compare(
-                f"fig8.viscous_share_m40.{reading}",
-                f"viscous share of the total at −40 °C, eq 14 {reading}",
-                PUBLISHED["share_m40"],
-                100.0 * float(visc[0] / total[0]),
-                "%",
-                abs_tol=5.0,
-                miss_note=why,
-            )
-        )
-        d_visc = visc[0] - visc[I20]
-        d_geom = geom_t[0] - geom_t[I20]
-        rep.rows.append(
-            trend(
-                f"sec3.viscosity_dominates.{reading}",
-                f"cause of the rise from 20 °C to −40 °C, eq 14 {reading}",
-                "mainly the lubricant viscosity; frame deformation small",
-                bool(d_visc > abs(d_geom)),
-                f"viscous +{d_visc:.3g} N·mm, geometric {d_geom:+.3g} N·mm",
-                miss_note=why,
-            )
-        )
-
-    # --- parameters -------------------------------------------------------------------
-    rep.parameters = parameters(pairs, coeff, mu, s0)
-    rep.files = sorted(str(p) for p in out.glob("*") if p.suffix in (".csv", ".png"))
-    return rep
+    plot(
+        out / f"fig8_components_{reading}.png",
+        CURVE_C,
+        {
+            "total": parts["total"],
+            "viscous M_L": parts["viscous"],
+            "hysteresis M_R": parts["hysteresis"],
+            "spin M_K": parts["spin"],
+        },
+        "temperature [°C]",
+        "friction torque [N·mm]",
+        f"Yu Fig 8: total torque and components (eq 14 {reading})",
+        decorate=lambda ax: ax.set_yscale("symlog", linthresh=0.1),
+    )
 
 
-def parameters(pairs, coeff: FrictionCoefficients, mu: float, s0: float) -> list[Parameter]:
+def fig8_numbers(r: _Reproduction) -> list[Row]:
+    """§3's numbers of Fig 8 in each reading: geometric minimum (μ is fitted on it in the
+    calibration reading) and maximum, total and viscous share at −40 °C, and the cause of
+    the cold rise."""
+    rows = []
+    for reading in READINGS:
+        why = _why_missed(r, reading)
+        rows += [
+            _geometric_min_row(r, reading, why),
+            _geometric_max_row(r, reading, why),
+            _total_m40_row(r, reading, why),
+            _viscous_share_row(r, reading, why),
+            _viscosity_dominates_row(r, reading, why),
+        ]
+    return rows
+
+
+def _geometric_min_row(r: _Reproduction, reading: str, why: str) -> Row:
+    quantity = f"minimum geometric torque M_R + M_K over −40…60 °C, eq 14 {reading}"
+    computed = float(r.geometric(reading).min()) / NMM
+    if reading == CALIBRATION_READING:
+        others = [_preload_lost(r, x) for x in READINGS if x != reading]
+        return calibrated(
+            f"fig8.geometric_min.{reading}",
+            quantity,
+            float(PUBLISHED["geometric_min"]),
+            computed,
+            "N·mm",
+            f"μ = {r.coeff.sliding_friction:.4g} (α_r = {HYSTERESIS_LOSS} assumed)",
+            note=f"fitted in the {reading} reading, the one calibration reading of s0 and μ"
+            + "".join(f"; {o}" for o in others if o),
+        )
+    return prediction(
+        f"fig8.geometric_min.{reading}",
+        quantity,
+        float(PUBLISHED["geometric_min"]),
+        computed,
+        "N·mm",
+        PAPER_MODEL,
+        printed=PUBLISHED["geometric_min"],
+        miss_note="; ".join(x for x in (_preload_lost(r, reading), why) if x),
+    )
+
+
+def _preload_lost(r: _Reproduction, reading: str) -> str:
+    """Where the washer preload of the Fig 8 pair is lost in ``reading`` ("" if nowhere)."""
+    lost = CURVE_C[np.asarray(r.curves[reading].preload) <= 0.0]
+    if not lost.size:
+        return ""
+    return (
+        f"in the {reading} reading the washer preload is lost from {lost.min():.0f} °C up, "
+        "so the geometric minimum there is 0"
+    )
+
+
+def _geometric_max_row(r: _Reproduction, reading: str, why: str) -> Row:
+    geometric = r.geometric(reading) / NMM
+    return prediction(
+        f"fig8.geometric_max.{reading}",
+        f"maximum geometric torque over −40…60 °C, eq 14 {reading}",
+        float(PUBLISHED["geometric_max"]),
+        float(geometric.max()),
+        "N·mm",
+        PAPER_MODEL,
+        printed=PUBLISHED["geometric_max"],
+        note=f"at {CURVE_C[np.argmax(geometric)]:.0f} °C.",
+        miss_note=why,
+    )
+
+
+def _total_m40_row(r: _Reproduction, reading: str, why: str) -> Row:
+    o = r.curves[reading]
+    visc, geometric = float(o.viscous_torque[0]) / NMM, float(r.geometric(reading)[0]) / NMM
+    of, source = _cold_sources(r, reading)
+    return consequence(
+        f"fig8.total_m40.{reading}",
+        f"total torque at −40 °C, eq 14 {reading}",
+        float(PUBLISHED["total_m40"]),
+        float(o.running_torque[0]) / NMM,
+        "N·mm",
+        of,
+        rule=PAPER_MODEL,
+        printed=PUBLISHED["total_m40"],
+        note=f"viscous {visc:.3g} (calibrated) + geometric {geometric:.3g} N·mm ({source})",
+        miss_note=why,
+    )
+
+
+def _viscous_share_row(r: _Reproduction, reading: str, why: str) -> Row:
+    o = r.curves[reading]
+    of, source = _cold_sources(r, reading)
+    return consequence(
+        f"fig8.viscous_share_m40.{reading}",
+        f"viscous share of the total at −40 °C, eq 14 {reading}",
+        float(PUBLISHED["share_m40"]),
+        100.0 * float(o.viscous_torque[0] / o.running_torque[0]),
+        "%",
+        of,
+        rule=PAPER_MODEL,
+        printed=PUBLISHED["share_m40"],
+        note=f"the calibrated viscous torque over the total (geometric part {source})",
+        miss_note=why,
+    )
+
+
+def _cold_sources(r: _Reproduction, reading: str) -> tuple[str, str]:
+    """The calibrated rows the −40 °C total follows from, and what its geometric part is: the
+    fitted minimum itself when that lies at −40 °C in the calibration reading."""
+    if reading == CALIBRATION_READING and int(np.argmin(r.geometric(reading))) == 0:
+        of = f"fig8.viscous_m40 and fig8.geometric_min.{reading}"
+        return of, "calibrated: the minimum μ is fitted on lies at −40 °C"
+    return "fig8.viscous_m40", "predicted"
+
+
+def _viscosity_dominates_row(r: _Reproduction, reading: str, why: str) -> Row:
+    visc = np.asarray(r.curves[reading].viscous_torque) / NMM
+    geometric = r.geometric(reading) / NMM
+    d_visc, d_geom = visc[0] - visc[I20], geometric[0] - geometric[I20]
+    return trend(
+        f"sec3.viscosity_dominates.{reading}",
+        f"cause of the rise from 20 °C to −40 °C, eq 14 {reading}",
+        "mainly the lubricant viscosity; frame deformation small",
+        bool(d_visc > abs(d_geom)),
+        f"viscous +{d_visc:.3g} N·mm, geometric {d_geom:+.3g} N·mm",
+        miss_note=why,
+    )
+
+
+def _why_missed(r: _Reproduction, reading: str) -> str:
+    """The preload path and the loop's stiffness against the pair's, for the notes."""
+    o, k_loop = r.curves[reading], loop_stiffness(r.pairs[reading])
+    p = np.asarray(o.preload)
+    k_pair = float(np.asarray(o.axial_stiffness)[I20])
+    # a closure change dC splits as 2·da + dN/k with dN = (k_pair/2)·da (one bearing each)
+    share = 100.0 / (1.0 + 0.25 * k_pair / k_loop)
+    why = (
+        f"preload {p[0]:.0f} N at −40 °C, {p[I20]:.0f} N at 20 °C, {p[-1]:.0f} N at 60 °C; "
+        f"the E·A/L loop ({k_loop:.2g} N/m) is {k_loop / k_pair:.0f}× stiffer than the pair at "
+        f"20 °C ({k_pair:.2g} N/m): {share:.0f} % of the thermal mismatch of frame and shaft "
+        "goes into the balls"
+    )
+    if np.asarray(o.overloaded)[0]:
+        p_max = float(o.max_contact_pressure[0]) / 1e6
+        why += (
+            f"; at −40 °C the contact pressure {p_max:.0f} MPa exceeds 4200 MPa "
+            "(overloaded: permanent deformation)"
+        )
+    return why
+
+
+#: The report's sections in the order of its rows; each writes its CSV/PNG and returns rows.
+SECTIONS = (fig3_clearance, fig4_contact_angle, fig6_fig7_washers, fig8_components, fig8_numbers)
+
+
+def parameters(pairs, coeff: FrictionCoefficients) -> list[Parameter]:
     """Every parameter of the reproduction with its provenance."""
     ps = bearing_parameters(pairs["stated"]) + material_parameters(pairs["stated"])
     ps += mounting_parameters(pairs["stated"], "stated")
@@ -509,8 +621,10 @@ def parameters(pairs, coeff: FrictionCoefficients, mu: float, s0: float) -> list
         Parameter(
             "hysteresis_loss α_r", coeff.hysteresis_loss, "", coeff.source("hysteresis_loss")
         ),
-        Parameter("sliding_friction μ", mu, "", coeff.source("sliding_friction")),
-        Parameter("palmgren_s0", s0, "", coeff.source("palmgren_s0")),
+        Parameter(
+            "sliding_friction μ", coeff.sliding_friction, "", coeff.source("sliding_friction")
+        ),
+        Parameter("palmgren_s0", coeff.palmgren_s0, "", coeff.source("palmgren_s0")),
         Parameter("test_speed", TEST_SPEED / DEG, "deg/s", "assumed: Yu gives no test speed"),
     ]
     return ps
