@@ -241,11 +241,19 @@ def test_forced_convection_by_hand():
 
 def test_contact_conductance_follows_the_handbook_rows():
     steel, ti = catalog.material("9cr18"), catalog.material("tc4")
-    # stainless-steel rows scaled by k_s/14.9; air-filled gap 1/2.75e-4
-    k_s = 2 * 24.2 * 6.7 / (24.2 + 6.7)
-    assert tn.contact_conductance(ti, steel, True, True)[0] == pytest.approx(k_s / 14.9 / 1.67e-4)
-    assert tn.contact_conductance(ti, steel, False, True)[0] == pytest.approx(k_s / 14.9 / 12.2e-4)
-    assert tn.contact_conductance(ti, steel, False, False)[0] == pytest.approx(1 / 2.75e-4)
+    # Incropera Table 3.1(a) stainless steel: 1/12.2e-4 at 0.1 MPa, 1/1.67e-4 at 10 MPa, a power
+    # law between, scaled by k_s/14.9; the air-filled gap 1/2.75e-4 as the floor in air
+    scale = 2 * 24.2 * 6.7 / (24.2 + 6.7) / 14.9
+    lo, hi = scale / 12.2e-4, scale / 1.67e-4
+
+    def h(pressure, vacuum=True):
+        return tn.contact_conductance(ti, steel, pressure, vacuum)[0]
+
+    assert h(0.0) == pytest.approx(lo) and h(1e5) == pytest.approx(lo)
+    assert h(1e7) == pytest.approx(hi) and h(1e8) == pytest.approx(hi)  # no extrapolation
+    assert h(1e6) == pytest.approx(math.sqrt(lo * hi))  # the geometric middle of 0.1…10 MPa
+    assert h(0.0, vacuum=False) == pytest.approx(1 / 2.75e-4)
+    assert h(1e7, vacuum=False) == pytest.approx(hi)  # above the air floor
 
 
 # ---------------------------------------------------------------------------- presets

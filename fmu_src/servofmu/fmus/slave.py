@@ -127,7 +127,7 @@ def _runtime_hash() -> str:
 
 
 class ServoSlave(Fmi2Slave):
-    """Base class of the four servofmu FMUs; see the module docstring."""
+    """Base class of the servofmu FMUs; see the module docstring."""
 
     VARIABLES: tuple[Var, ...] = ()
     PHYSICS: tuple[str, ...] = ()  # modules whose equations the documentation shows

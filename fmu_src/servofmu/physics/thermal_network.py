@@ -3,8 +3,10 @@
 Nodes (each part isothermal; SI throughout): housing (frame), shaft, outer rings, inner rings of
 the bearing pair. The balls are not a node: each ball's capacity goes half to each ring, and its
 two contacts are conductances in series between the rings. The lubricant's capacity is
-neglected (a grease fill is about a quarter of the balls' capacity in the 71803, a MoS2 film
-nothing). Energy balance of node k (capacity C_k [J/K], temperature T_k [K]):
+neglected: a 30 % fill of a 71803's free space with PFPE grease (≈ 1.9 g/cm³, ≈ 1 J/(g·K))
+holds about 0.4 J/K per bearing (an estimate), a tenth of its rings and balls and 0.2 % of
+frame and shaft; a MoS2 film holds nothing. Energy balance of node k (capacity C_k [J/K],
+temperature T_k [K]):
 
     C_k·dT_k/dt = Σ_j G_kj·(T_j − T_k)                       conduction between parts [W/K]
                 + G_k,a·(T_a − T_k)                          convection, mounting [W/K]
@@ -16,14 +18,16 @@ with the ambient (chamber air, mounting plate) temperature T_a, the radiative si
 walls, shroud, space) T_s and σ = 5.670374419e-8 W/(m²·K⁴). The conductances:
 
 - ring fits: G = h_c·π·D·B per bearing seat; h_c from the thermal contact resistances of
-  Incropera et al. (2007), *Fundamentals of Heat and Mass Transfer*, 6th ed., Table 3.1:
-  a pressed (interference) fit uses the stainless-steel row at 10 MPa in vacuum (0.7–4.0e-4
-  m²·K/W, geometric mean), a clearance or zero-interference fit the row at 100 kPa (6–25e-4)
-  in vacuum and the air-filled interface of Table 3.1(b) (2.75e-4) in air. The stainless rows
-  are scaled with the harmonic-mean conductivity of the two metals, as the contact
-  conductance of Mikic/Yovanovich, h_c = 1.25·k_s·(m/σ)·(P/H_c)^0.95, is proportional to it
-  (Yovanovich & Marotta 2003, in Bejan & Kraus, *Heat Transfer Handbook*, ch. 4). The fit
-  pressure itself changes with temperature; it is not followed (constant conductances).
+  Incropera et al. (2007), *Fundamentals of Heat and Mass Transfer*, 6th ed., Table 3.1(a):
+  stainless steel in vacuum, 6–25e-4 m²·K/W at 100 kPa and 0.7–4.0e-4 at 10 MPa (geometric
+  means), interpolated as a power of the Lamé fit pressure of the assembly (:mod:`.fits`;
+  Yu's 12 µm outer fit: 4.4 MPa, Ning's 5 µm inner fit: 1.6 MPa), the 100 kPa row for a
+  clearance fit; in air the air-filled interface of Table 3.1(b) (2.75e-4) is the lower
+  bound. The stainless rows are scaled with the harmonic-mean conductivity of the two metals,
+  as the contact conductance of Mikic/Yovanovich, h_c = 1.25·k_s·(m/σ)·(P/H_c)^0.95, is
+  proportional to it (Yovanovich & Marotta 2003, in Bejan & Kraus, *Heat Transfer Handbook*,
+  ch. 4). The fit pressure changes with temperature; the conductances stay at their assembly
+  values.
 - ball contacts: the constriction resistance of an isothermal elliptical contact (semi-axes
   a ≥ b) on a half-space, R = K(m)/(2·π·λ·a), m = 1 − b²/a², K the complete elliptic integral
   of the first kind (Yovanovich 1976, "Thermal constriction resistance of contacts on a
@@ -58,8 +62,12 @@ DCMotor; the matrix is cached per step size. Radiation is not linear: the step i
 exact solution of the network linearised about T_ref (radiation replaced by its tangent, the
 fluxes themselves taken at T(t)); the steady state is exact and the error is second order in
 h when T_ref = T(t). T_ref is renewed once a node has moved more than a tolerance from it
-(0: every step); each renewal costs one matrix exponential. Measured against a 1e-11 ODE
-solution (tests/test_thermal_network.py): see ``step``.
+(0: every step); each renewal costs one matrix exponential. Measured against Radau at
+rtol = atol = 1e-11 over 3 h after the ambient and the sink jump by 140 K
+(benchmarks/bench_thermal_network.py), largest error of any part with per-step linearisation:
+Yu's gimbal 4.4e-7, 4.5e-5, 1.7e-3 and 0.24 K at 1, 10, 60 and 600 s steps; Ning's bearing
+5.4e-7, 5.4e-5, 2.0e-3 and 0.26 K (second order); renewed every 0.1 K at 1 s steps, 1.4e-6 K
+with a seventh of the exponentials.
 """
 
 from __future__ import annotations
@@ -68,6 +76,7 @@ import dataclasses
 import functools
 import math
 from dataclasses import dataclass
+from operator import mul
 
 import numpy as np
 from scipy.linalg import expm
@@ -76,6 +85,7 @@ from scipy.special import ellipk
 
 from . import hertz
 from ._checks import check_finite, check_nonnegative, check_positive, check_range
+from .fits import fit_pressure
 from .materials import Material, reduced_compliance
 
 NODES = ("housing", "shaft", "outer_ring", "inner_ring")
@@ -166,7 +176,7 @@ def _terms(network: ThermalNetwork):
 def _rates(terms, t, ambient, sink, power):
     rows, amb, split, sink_k, exch = terms
     out = [
-        sum(r * x for r, x in zip(row, t, strict=True)) + g * ambient + s * power
+        sum(map(mul, row, t)) + g * ambient + s * power
         for row, g, s in zip(rows, amb, split, strict=True)
     ]
     s4 = sink**4
@@ -261,9 +271,8 @@ def step(
 
     ``reference`` [K]: the temperatures about which radiation is linearised (default: the
     start temperatures, i.e. re-linearised every step). Exact for a network without
-    radiation; with radiation, measured against a 1e-11 ODE solution for Ning's space bearing
-    after a 140 K sink step (tests/test_thermal_network.py): see the README's ThermalNetwork
-    section for the error at 1, 10 and 60 s steps.
+    radiation; with radiation the error is second order in h (module docstring: 5.4e-5 K at
+    10 s steps for Ning's bearing after a 140 K jump).
 
     >>> net = ThermalNetwork((10.0,), ambient=(2.0,), sink_radiation=(0.0,), heat_split=(1.0,),
     ...                      nodes=("part",))
@@ -283,9 +292,7 @@ def _step(network, t, ambient, sink, power, h, reference):
     """:func:`step` without checks: ``reference`` a tuple of floats (None without radiation)."""
     m = propagator(network, h, reference)
     f = _rates(_terms(network), t, ambient, sink, power)
-    return [
-        x + sum(mi * fi for mi, fi in zip(row, f, strict=True)) for x, row in zip(t, m, strict=True)
-    ]
+    return [x + sum(map(mul, row, f)) for x, row in zip(t, m, strict=True)]
 
 
 def steady_state(network: ThermalNetwork, ambient: float, sink: float, power: float):
@@ -415,30 +422,45 @@ def ball_conductance(bearing, preload: float) -> float:
     return b.n_balls / per_ball
 
 
-def contact_conductance(material_a: Material, material_b: Material, pressed: bool, vacuum: bool):
-    """Thermal contact conductance h_c [W/(m²·K)] of a ring seat and its provenance (module
-    docstring): Incropera Table 3.1's stainless-steel row (10 MPa for a ``pressed`` fit,
-    100 kPa otherwise), scaled by the harmonic-mean conductivity 2·λa·λb/(λa + λb) of the two
-    metals; an unpressed seat in air takes the air-filled interface of Table 3.1(b).
+def contact_conductance(material_a: Material, material_b: Material, pressure, vacuum: bool):
+    """Thermal contact conductance h_c [W/(m²·K)] of a metallic seat under the contact
+    pressure ``pressure`` [Pa], and its provenance (module docstring). Incropera Table 3.1(a)
+    gives the stainless-steel interface in vacuum at 100 kPa and at 10 MPa; between them h_c
+    is interpolated as a power of the pressure, outside them the nearer row is kept (no
+    extrapolation; a seat without pressure, a clearance fit, takes the 100 kPa row). The
+    result is scaled by the harmonic-mean conductivity k_s = 2·λa·λb/(λa + λb) of the two
+    metals over the stainless steel's. In air, the air-filled interface of Table 3.1(b) is the
+    lower bound.
 
     >>> from servofmu.physics import catalog
-    >>> h, _ = contact_conductance(catalog.material("tc4"), catalog.material("9cr18"), True, True)
-    >>> round(h)
+    >>> tc4, ring = catalog.material("tc4"), catalog.material("9cr18")
+    >>> round(contact_conductance(tc4, ring, 1.0e7, True)[0])  # the 10 MPa row, scaled
     4218
     """
+    p = check_nonnegative("pressure", pressure, "Pa")
     hb = _handbook()
-    if not pressed and not vacuum:
-        r, src = hb["air_filled_contact_resistance"]
-        return 1.0 / r, f"derived: 1/R'' with {src}"
-    r, src = hb["pressed_contact_resistance" if pressed else "light_contact_resistance"]
-    k_ref, ref_src = hb["contact_reference_conductivity"]
+    p_lo, p_hi = hb["light_contact_pressure"][0], hb["pressed_contact_pressure"][0]
+    h_lo = 1.0 / hb["light_contact_resistance"][0]
+    h_hi = 1.0 / hb["pressed_contact_resistance"][0]
+    k_ref = hb["contact_reference_conductivity"][0]
     la = material_a.thermal("thermal_conductivity")
     lb = material_b.thermal("thermal_conductivity")
     k_s = 2.0 * la * lb / (la + lb)
-    return k_s / (k_ref * r), (
-        f"derived: (k_s/k_ref)/R'' with k_s = {k_s:.3g} W/(m·K) of {material_a.key} and "
-        f"{material_b.key}, R'' {src}, k_ref {ref_src}"
+    exponent = math.log(h_hi / h_lo) / math.log(p_hi / p_lo)
+    h = h_lo * (min(max(p, p_lo), p_hi) / p_lo) ** exponent * k_s / k_ref
+    src = (
+        f"derived: Incropera Table 3.1(a) stainless steel in vacuum, 1/R'' = {h_lo:.4g} W/(m²·K) "
+        f"at {p_lo / 1e6:g} MPa and {h_hi:.4g} at {p_hi / 1e6:g} MPa (geometric means of the "
+        f"ranges), ∝ P^{exponent:.3f} between, at P = {p / 1e6:.3g} MPa; × k_s/k_ref = "
+        f"{k_s:.3g}/{k_ref:g} ({material_a.key}, {material_b.key} against AISI 304)"
     )
+    h_air = 1.0 / hb["air_filled_contact_resistance"][0]
+    if not vacuum and h_air > h:
+        return (
+            h_air,
+            "derived: the air-filled interface of Incropera Table 3.1(b), 1/2.75e-4 m²·K/W",
+        )
+    return h, src
 
 
 def forced_convection_coefficient(diameter: float, air_speed: float) -> float:
@@ -850,14 +872,31 @@ def _fits(b, mounting, g: _Geometry, n, vacuum, mounted):
         ("outer_fit_conductance", fit.housing_material, fit.outer_interference, g.outer),
         ("inner_fit_conductance", fit.shaft_material, fit.inner_interference, g.d),
     )
-    for field, seat_material, interference, diameter in seats:
-        pressed = interference > 0.0
-        h, src = contact_conductance(seat_material, b.ring_material, pressed, vacuum)
+    pressures = (
+        fit_pressure(
+            fit.outer_interference,
+            g.outer,
+            b.outer_groove_diameter,
+            g.housing,
+            b.ring_material,
+            fit.housing_material,
+        ),
+        fit_pressure(
+            fit.inner_interference,
+            g.d,
+            g.bore,
+            b.inner_groove_diameter,
+            fit.shaft_material,
+            b.ring_material,
+        ),
+    )
+    for (field, seat_material, _, diameter), pressure in zip(seats, pressures, strict=True):
+        h, src = contact_conductance(seat_material, b.ring_material, float(pressure), vacuum)
         values[field] = n * h * math.pi * diameter * b.width
         prov[field] = (
             f"derived: {n} seats π·{diameter * 1e3:.4g} mm·{b.width * 1e3:.4g} mm × h_c = "
-            f"{h:.4g} W/(m²·K) ({'pressed' if pressed else 'unpressed'} fit, "
-            f"{'vacuum' if vacuum else 'air'}; {src})"
+            f"{h:.4g} W/(m²·K) at the Lamé fit pressure {float(pressure) / 1e6:.3g} MPa of the "
+            f"assembly ({'vacuum' if vacuum else 'air'}; {src})"
         )
     return values, prov
 
@@ -923,6 +962,6 @@ def _surfaces(b, mounting, g: _Geometry, n, vacuum, mounted):
 def _mount(material: Material, face: float, length: float, vacuum: bool) -> float:
     """Housing end face (area ``face`` [m²]) on a plate at the ambient temperature: a light
     contact of the metal on itself in series with conduction over half the housing length."""
-    h, _ = contact_conductance(material, material, False, vacuum)
+    h, _ = contact_conductance(material, material, 0.0, vacuum)
     wall = material.thermal("thermal_conductivity") * face / (0.5 * length)
     return 1.0 / (1.0 / (h * face) + 1.0 / wall)
