@@ -14,25 +14,10 @@ import argparse
 import time
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from servofmu.physics import thermal_network as tn
 
 COLD, HOT, POWER = 213.15, 353.15, 0.05  # K, K, W
-
-
-def reference(net, start, horizon):
-    terms = tn._terms(net)
-    return solve_ivp(
-        lambda t, x: tn._rates(terms, list(x), HOT, HOT, POWER),
-        (0.0, horizon),
-        start,
-        method="Radau",
-        rtol=1e-11,
-        atol=1e-11,
-        jac=lambda t, x: tn._jacobian(terms, x),
-        dense_output=True,
-    )
 
 
 def stepped(net, start, ref, h, tolerance, horizon):
@@ -44,7 +29,7 @@ def stepped(net, start, ref, h, tolerance, horizon):
             lin, count = tuple(x), count + 1
         x = tn._step(net, x, HOT, HOT, POWER, h, lin)
         spent += time.perf_counter() - t0
-        worst = max(worst, float(np.abs(np.asarray(x) - ref.sol(h * (k + 1))).max()))
+        worst = max(worst, float(np.abs(np.asarray(x) - ref(h * (k + 1))).max()))
     return worst, count, spent / round(horizon / h)
 
 
@@ -59,7 +44,7 @@ def main() -> None:
     for key in tn.PRESETS:
         net = tn.network(tn.preset(key))
         start = tn.steady_state(net, COLD, COLD, 0.0)
-        ref = reference(net, start, horizon)
+        ref = tn.ode_solution(net, start, HOT, HOT, POWER, horizon)
         for h in (1.0, 10.0, 60.0, 600.0):
             for tol in (0.0, 0.1):
                 err, count, cost = stepped(net, start, ref, h, tol, horizon)

@@ -130,23 +130,13 @@ def test_stiff_network_with_radiation_matches_a_stiff_ode_solution():
     # a strong radiator on the frame (ε·A = 0.02 m², 0.08 W/K at 260 K): the stiff rings are
     # still exact, what remains is the second-order linearisation error of the radiation
     net = tn.ThermalNetwork(**{**vars(stiff_network()), "sink_radiation": (0.02, 0.0, 0.0, 0.0)})
-    terms = tn._terms(net)
-    ref = solve_ivp(
-        lambda t, x: tn._rates(terms, list(x), 330.0, 200.0, 2.0),
-        (0, 1200),
-        [250.0] * 4,
-        method="Radau",
-        rtol=1e-11,
-        atol=1e-10,
-        jac=lambda t, x: tn._jacobian(terms, x),
-        dense_output=True,
-    )
+    ref = tn.ode_solution(net, [250.0] * 4, 330.0, 200.0, 2.0, 1200.0)
     worst = {}
     for h in (60.0, 6.0):
         x, worst[h] = [250.0] * 4, 0.0
         for k in range(round(1200 / h)):
             x = tn.step(net, x, 330.0, 200.0, 2.0, h)
-            worst[h] = max(worst[h], float(np.abs(np.array(x) - ref.sol(h * (k + 1))).max()))
+            worst[h] = max(worst[h], float(np.abs(np.array(x) - ref(h * (k + 1))).max()))
     assert worst[60.0] < 5e-3 and worst[6.0] < 5e-5  # measured 3.7e-3 and 3.6e-5 K
     assert 70 < worst[60.0] / worst[6.0] < 130  # second order: 10² = 100
 
@@ -156,18 +146,8 @@ def radiation_error(key, h, tolerance, horizon=3600.0):
     ambient and the sink jump from −60 to +80 °C (0.05 W of bearing loss), and the number of
     linearisations used."""
     net = tn.network(tn.preset(key))
-    terms = tn._terms(net)
     start = tn.steady_state(net, 213.15, 213.15, 0.0)
-    ref = solve_ivp(
-        lambda t, x: tn._rates(terms, list(x), 353.15, 353.15, 0.05),
-        (0, horizon),
-        start,
-        method="Radau",
-        rtol=1e-11,
-        atol=1e-11,
-        jac=lambda t, x: tn._jacobian(terms, x),
-        dense_output=True,
-    )
+    ref = tn.ode_solution(net, start, 353.15, 353.15, 0.05, horizon)
     x, reference, renewals, worst = list(start), None, 0, 0.0
     for k in range(round(horizon / h)):
         if (
@@ -176,7 +156,7 @@ def radiation_error(key, h, tolerance, horizon=3600.0):
         ):
             reference, renewals = tuple(x), renewals + 1
         x = tn._step(net, x, 353.15, 353.15, 0.05, h, reference)
-        worst = max(worst, float(np.abs(np.array(x) - ref.sol(h * (k + 1))).max()))
+        worst = max(worst, float(np.abs(np.array(x) - ref(h * (k + 1))).max()))
     return worst, renewals
 
 

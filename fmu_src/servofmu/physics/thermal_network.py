@@ -341,6 +341,40 @@ def _newton_step(balance, x):
     return new
 
 
+def ode_solution(
+    network: ThermalNetwork, temperatures, ambient, sink, power, duration, tolerance=1e-11
+):
+    """The network's ODE solved by scipy's Radau (stiff, analytic Jacobian) from
+    ``temperatures`` [K] over ``duration`` [s] with the inputs held (ambient and sink [K],
+    power [W]) at rtol = atol = ``tolerance``: a dense ``OdeSolution`` (call it with a time
+    [s]), the reference against which :func:`step` is measured.
+
+    >>> net = ThermalNetwork((10.0,), ambient=(2.0,), sink_radiation=(0.0,), heat_split=(1.0,),
+    ...                      nodes=("part",))
+    >>> round(float(ode_solution(net, [300.0], 290.0, 0.0, 0.0, 5.0)(5.0)[0]), 6)
+    293.678794
+    """
+    from scipy.integrate import solve_ivp
+
+    t0 = _check_state(network, temperatures)
+    _check_inputs(ambient, sink, power)
+    tol = check_positive("tolerance", tolerance)
+    terms = _terms(network)
+    sol = solve_ivp(
+        lambda t, x: _rates(terms, [float(v) for v in x], ambient, sink, power),
+        (0.0, check_positive("duration", duration, "s")),
+        t0,
+        method="Radau",
+        rtol=tol,
+        atol=tol,
+        jac=lambda t, x: _jacobian(terms, [float(v) for v in x]),
+        dense_output=True,
+    )
+    if not sol.success:
+        raise ValueError(f"ODE solution failed: {sol.message}")
+    return sol.sol
+
+
 def time_constants(network: ThermalNetwork, temperature: float = 293.15):
     """Time constants τ = −1/λ [s] of the network linearised at the uniform temperature
     ``temperature`` [K] (λ the eigenvalues of the Jacobian), longest first; inf for a mode
