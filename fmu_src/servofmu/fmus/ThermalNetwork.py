@@ -158,7 +158,7 @@ class ThermalNetwork(ServoSlave):
             min=0.0,
             max=10.0,
             source=(
-                "assumed: 0.1 K; Ning's bearing after a 140 K jump, 3 h at 1 s steps: 1494 "
+                "assumed: 0.1 K; Ning's bearing after a 140 K jump, 3 h at 1 s steps: 1497 "
                 "matrix exponentials instead of 10800, largest error 1.4e-6 K instead of 5.4e-7 K"
             ),
         ),
