@@ -38,6 +38,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_fmus.py
 	$(BIN)/python benchmarks/bench_harness.py
 	$(BIN)/python benchmarks/bench_sweep.py
+	$(BIN)/python benchmarks/bench_thermal_network.py
 
 clean:
 	rm -rf $(VENV) $(OUT) .pytest_cache .ruff_cache

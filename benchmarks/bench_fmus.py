@@ -63,6 +63,12 @@ LOOPS = {
         lambda k: (math.sin(1e-3 * k), 0.9 * math.sin(1e-3 * k)),
         "command",
     ),
+    # a chamber ramp of 1 K/s seen at 1 ms steps: radiation re-linearised every 0.1 K (default)
+    "ThermalNetwork (chamber ramp, power loss changes)": (
+        ("ambient_temperature", "sink_temperature", "power_loss"),
+        lambda k: (233.15 + 1e-3 * k, 233.15 + 1e-3 * k, 0.1 + 0.05 * math.sin(1e-3 * k)),
+        "shaft_temperature",
+    ),
 }
 
 

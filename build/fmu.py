@@ -12,7 +12,7 @@ from servofmu.fmus.slave import BUILD_INFO, SHIPPED, package_hash
 
 from .documentation import write_documentation
 
-FMUS = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController")
+FMUS = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
 PACKAGE_DIR = Path(servofmu.__file__).resolve().parent
 DEFAULT_OUT = Path(__file__).resolve().parent / "out"
 

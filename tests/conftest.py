@@ -21,7 +21,7 @@ def ning_pair():
 
 @pytest.fixture(scope="session")
 def fmus(tmp_path_factory):
-    """The four FMUs, built once per test session."""
+    """The five FMUs, built once per test session."""
     from servofmu.build.fmu import FMUS, build_all
 
     out = tmp_path_factory.mktemp("fmus")

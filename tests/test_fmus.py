@@ -1,4 +1,4 @@
-"""The four FMUs through fmpy: validation, outputs after initialization, state, reset,
+"""The five FMUs through fmpy: validation, outputs after initialization, state, reset,
 several instances, bad input, agreement with the library (issue 4)."""
 
 import json
@@ -18,7 +18,7 @@ from servofmu.physics.actuator import ActuatorModel
 from servofmu.physics.bearing import BearingModel, BearingPair
 from servofmu.physics.control import PIDParameters
 
-NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController")
+NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
 
 
 def drive(name, t):
@@ -33,6 +33,12 @@ def drive(name, t):
         return dict(angle=0.3 * math.sin(4 * t), load_torque=150 + 100 * math.sin(7 * t))
     if name == "DCMotor":
         return dict(voltage=5 * math.sin(10 * t), load_torque=1e-3)
+    if name == "ThermalNetwork":
+        return dict(
+            ambient_temperature=273.15 + 30 * math.sin(2 * t),
+            sink_temperature=263.15 + 20 * math.sin(3 * t),
+            power_loss=0.5 + 0.5 * math.sin(5 * t),
+        )
     return dict(reference=math.sin(3 * t), measurement=0.8 * math.sin(3 * t - 0.1))
 
 
@@ -162,7 +168,7 @@ def test_reset_gives_a_fresh_instance(fmus, name):
     fresh.close()
 
 
-def test_instances_are_independent_and_all_four_share_a_process(fmus):
+def test_instances_are_independent_and_all_five_share_a_process(fmus):
     hot = Fmu(fmus["BearingFriction"], "hot").init(temperature=323.15, shim=0.0)
     cold = Fmu(fmus["BearingFriction"], "cold").init(temperature=253.15, shim=0.05e-3)
     others = [Fmu(fmus[n], n).init() for n in NAMES[1:]]
@@ -186,6 +192,7 @@ def test_instances_are_independent_and_all_four_share_a_process(fmus):
         ("ActuatorStiffness", "load_torque", float("nan")),
         ("DCMotor", "voltage", float("nan")),
         ("ServoController", "measurement", float("-inf")),
+        ("ThermalNetwork", "sink_temperature", float("nan")),
     ],
 )
 def test_bad_input_is_discarded_with_a_message_and_the_instance_recovers(
@@ -290,6 +297,7 @@ def test_bad_tunable_parameter_then_fixed(fmus):
             "output_min = 5.0 V must be below",
         ),
         ("DCMotor", {"inductance": float("nan")}, "inductance = nan"),
+        ("ThermalNetwork", {"shaft_capacity": 0.0}, "shaft_capacity = 0.0"),
     ],
 )
 def test_bad_parameters_are_reported(fmus, name, params, text):

@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 HERE = Path(__file__).resolve().parent / "robustness"
-NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController")
+NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
 
 
 def _child(args, timeout):

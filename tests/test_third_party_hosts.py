@@ -27,6 +27,10 @@ CASES = {  # FMU: (constant inputs, outputs to compare)
     ),
     "DCMotor": ({"voltage": 6.0, "load_torque": 2e-3}, ("speed", "angle", "current")),
     "ServoController": ({"reference": 1.0, "measurement": 0.25}, ("command",)),
+    "ThermalNetwork": (
+        {"ambient_temperature": 253.15, "sink_temperature": 233.15, "power_loss": 0.5},
+        ("housing_temperature", "shaft_temperature", "inner_ring_temperature"),
+    ),
 }
 STEP, STEPS = 1e-3, 20
 

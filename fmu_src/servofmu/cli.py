@@ -341,7 +341,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", help="directory for CSV and PNG files (default out/NAME)")
     p.set_defaults(func=_paper)
     b = sub.add_parser("build", help="build the FMUs (pythonfmu) into build/out")
-    b.add_argument("names", nargs="*", help="FMUs to build (default: all four)")
+    b.add_argument("names", nargs="*", help="FMUs to build (default: all five)")
     b.add_argument("--out", default="build/out", help="output directory (default build/out)")
     b.set_defaults(func=_build)
     v = sub.add_parser(

@@ -35,7 +35,7 @@ from hypothesis import strategies as st
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # tests/: the shared FMU driver
 from fmu_helpers import Fmu
 
-NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController")
+NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
 EXTREMES = (
     math.nan,
     math.inf,

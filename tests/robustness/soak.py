@@ -23,7 +23,7 @@ import psutil
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Slave
 
-NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController")
+NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
 
 
 # inputs as functions of the step index k: in range, varying every step; the temperature
@@ -53,6 +53,11 @@ INPUTS = {
     "ServoController": {
         "reference": lambda k: math.sin(1e-3 * k),
         "measurement": lambda k: 0.9 * math.sin(1e-3 * k - 0.1),
+    },
+    "ThermalNetwork": {
+        "ambient_temperature": lambda k: _chamber(k, 263.15, 40.0),
+        "sink_temperature": lambda k: _chamber(k, 253.15, 30.0),
+        "power_loss": lambda k: 0.2 + 0.2 * math.sin(1e-3 * k),
     },
 }
 

@@ -69,6 +69,9 @@ UNITS: dict[str, tuple[dict[str, int], tuple[tuple[str, float, float], ...]]] = 
     "kg.m2": ({"kg": 1, "m": 2}, ()),
     "N.m.s/rad": ({"kg": 1, "m": 2, "s": -1, "rad": -1}, ()),
     "s": ({"s": 1}, (("ms", 1.0e3, 0.0),)),
+    "J/K": ({"kg": 1, "m": 2, "s": -2, "K": -1}, ()),
+    "W/K": ({"kg": 1, "m": 2, "s": -3, "K": -1}, ()),
+    "W/(m2.K)": ({"kg": 1, "s": -3, "K": -1}, ()),
     "1": ({}, ()),
 }
 
@@ -245,7 +248,7 @@ def _runtime_hash() -> str:
 
 
 class ServoSlave(Fmi2Slave):
-    """Base class of the four servofmu FMUs; see the module docstring."""
+    """Base class of the servofmu FMUs; see the module docstring."""
 
     VARIABLES: tuple[Var, ...] = ()
     PHYSICS: tuple[str, ...] = ()  # modules whose equations the documentation shows

@@ -2,7 +2,8 @@
 
 Modules: units, materials, viscosity, geometry, hertz, equilibrium, fits (radial thermal
 coupling), preload (axial thermal coupling), friction, bearing (the composed model),
-actuator (Liu 2014), motor, control, catalog (records kept as data in ``data/*.toml``).
+actuator (Liu 2014), motor, control, thermal_network (part temperatures of a mechanism),
+catalog (records kept as data in ``data/*.toml``).
 """
 
 MODULES = (
@@ -19,6 +20,7 @@ MODULES = (
     "actuator",
     "motor",
     "control",
+    "thermal_network",
     "catalog",
 )
 

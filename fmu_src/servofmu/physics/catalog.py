@@ -62,12 +62,19 @@ def titles(table: str) -> dict[str, str]:
     return {key: entry.get("name", key) for key, entry in _table(table).items()}
 
 
+#: Thermal properties a material entry may give (heat-transfer models need them).
+OPTIONAL_MATERIAL_FIELDS = ("density", "specific_heat", "thermal_conductivity", "emissivity")
+
+
 @functools.cache
 def material(key: str) -> Material:
-    """The :class:`Material` ``key`` from ``data/materials.toml``."""
+    """The :class:`Material` ``key`` from ``data/materials.toml``; the thermal properties
+    (:data:`OPTIONAL_MATERIAL_FIELDS`) are optional."""
     entry = _lookup("materials", key)
     values, prov = {}, []
-    for field in ("youngs_modulus", "poisson_ratio", "expansion"):
+    for field in ("youngs_modulus", "poisson_ratio", "expansion", *OPTIONAL_MATERIAL_FIELDS):
+        if field in OPTIONAL_MATERIAL_FIELDS and field not in entry:
+            continue
         values[field], src = quantity(entry[field], field)
         prov.append((field, src))
     return Material(key=key, name=entry["name"], provenance=tuple(prov), **values)
@@ -282,6 +289,18 @@ def tolerances(key: str) -> dict[str, tuple[float, float, str]]:
     return out
 
 
+def thermal(key: str) -> dict:
+    """Entry ``key`` of ``data/thermal.toml`` (``handbook`` or a preset of
+    :mod:`.thermal_network`): numeric values as (SI value, provenance), other values as given."""
+    data = _table("thermal")
+    if key not in data:
+        raise ValueError(f"thermal key = {key!r} is not one of {sorted(data)}")
+    return {
+        field: quantity(spec, field) if isinstance(spec, dict) else spec
+        for field, spec in data[key].items()
+    }
+
+
 TABLES = (
     "materials",
     "lubricants",
@@ -290,6 +309,7 @@ TABLES = (
     "actuators",
     "coefficients",
     "tolerances",
+    "thermal",
 )
 
 
