@@ -13,11 +13,18 @@ import tomllib
 from importlib import resources
 
 from .fits import RadialFit
-from .geometry import BallBearing, ball_diameter_from_grooves, free_contact_angle
+from .geometry import (
+    BallBearing,
+    BallSetRule,
+    ball_diameter_from_grooves,
+    clearance_from_group,
+    free_contact_angle,
+)
+from .lubricant import LubricantRecord, TorqueTest
 from .materials import Material
 from .mounting import Mounting
 from .preload import LoopMember, PreloadLoop
-from .units import to_si
+from .units import MM, UM, to_si
 from .viscosity import WaltherViscosity, walther_from_two_points
 
 PROVENANCE_KINDS = ("paper", "catalogue", "handbook", "assumed", "calibrated", "derived")
@@ -80,82 +87,363 @@ def material(key: str) -> Material:
     return Material(key=key, name=entry["name"], provenance=tuple(prov), **values)
 
 
+def _quantities(entry: dict, owner: str, skip=()) -> tuple[dict, dict]:
+    """SI values and provenance of every ``{value, unit, kind, ref}`` field of ``entry``."""
+    values, prov = {}, {}
+    for field, spec in entry.items():
+        if isinstance(spec, dict) and field not in skip:
+            values[field], prov[field] = quantity(spec, f"{owner} {field}")
+    return values, prov
+
+
+def _walther(key: str, entry: dict, v: dict, prov: dict) -> WaltherViscosity:
+    """The Walther model of a lubricant entry: given a, b (and c), or the ASTM D341 fit through
+    ν40/ν100 or through the two points t1/nu1, t2/nu2. c defaults to ASTM D341's 0.7 cSt."""
+    if "c" in v:
+        c_cst, c_src = v["c"] / to_si(1.0, "cSt"), prov["c"]
+    else:
+        c_cst, c_src = 0.7, "handbook: ASTM D341 (c = 0.7 cSt)"
+    name = entry["name"]
+    if "a" in v and "b" in v:
+        prov_ab = (("a", prov["a"]), ("b", prov["b"]), ("c", c_src))
+        return WaltherViscosity(key=key, name=name, a=v["a"], b=v["b"], c=c_cst, provenance=prov_ab)
+    if "viscosity_40" in v and "viscosity_100" in v:
+        t1, nu1, t2, nu2 = (
+            to_si(40.0, "degC"),
+            v["viscosity_40"],
+            to_si(100.0, "degC"),
+            v["viscosity_100"],
+        )
+        fields = ("viscosity_40", "viscosity_100")
+    elif all(f in v for f in ("t1", "nu1", "t2", "nu2")):
+        t1, nu1, t2, nu2 = v["t1"], v["nu1"], v["t2"], v["nu2"]
+        fields = ("t1", "nu1", "t2", "nu2")
+    else:
+        raise ValueError(
+            "a walther model needs a and b, viscosity_40 and viscosity_100, or t1, nu1, t2, "
+            f"nu2; the entry has {sorted(v)}"
+        )
+    fit = walther_from_two_points(t1, nu1, t2, nu2, c=c_cst, key=key)
+    src = "derived: ASTM D341 fit through " + "; ".join(f"{f} ({prov[f]})" for f in fields)
+    prov_fit = (("a", src), ("b", src), ("c", c_src))
+    return WaltherViscosity(key=key, name=name, a=fit.a, b=fit.b, c=c_cst, provenance=prov_fit)
+
+
+def _named(where: str, err: Exception) -> ValueError:
+    """``err`` as a ValueError whose message starts with ``where`` (the entry it is about)."""
+    msg = err.args[0] if isinstance(err, KeyError) else str(err)
+    if isinstance(err, KeyError):
+        msg = f"{msg} is missing"
+    return ValueError(msg if msg.startswith(where) else f"{where}: {msg}")
+
+
+def _torque_test(key: str, i: int, spec: dict) -> TorqueTest:
+    where = f"lubricant {key!r} low_temperature_torque[{i}]"
+    try:
+        v, prov = _quantities(spec, where)
+        return TorqueTest(
+            standard=spec["standard"],
+            bearing=spec["bearing"],
+            temperature=v["temperature"],
+            starting_torque=v.get("starting_torque"),
+            running_torque=v.get("running_torque"),
+            provenance=tuple(sorted(prov.items())),
+        )
+    except (KeyError, ValueError) as err:
+        raise _named(where, err) from None
+
+
+def _reference_viscosities(key: str, visc: WaltherViscosity, v: dict, prov: dict) -> dict:
+    """ν at 40 and 100 °C [m²/s]: the entry's, or the model's where the entry gives a, b, c."""
+    nu = {}
+    for field, t_c in (("viscosity_40", 40.0), ("viscosity_100", 100.0)):
+        if field in v:
+            nu[field] = v[field]
+        else:
+            nu[field] = float(visc.kinematic_viscosity(to_si(t_c, "degC")))
+            prov[field] = f"derived: Walther model of {key} at {t_c:g} °C"
+    return nu
+
+
+def _viscosity_points(key: str, entry: dict, prov: dict) -> tuple[tuple[float, float], ...]:
+    """The entry's further published (T [K], ν [m²/s]) points."""
+    points = []
+    for i, pt in enumerate(entry.get("viscosity_points", [])):
+        pv, pp = _quantities(pt, f"lubricant {key!r} viscosity_points[{i}]")
+        points.append((pv["temperature"], pv["viscosity"]))
+        prov[f"viscosity_points[{i}]"] = pp["viscosity"]
+    return tuple(points)
+
+
+def lubricant_record_from_entry(key: str, entry: dict) -> LubricantRecord:
+    """The :class:`lubricant.LubricantRecord` of one ``data/lubricants.toml``-format entry.
+
+    Parameters
+    ----------
+    key : the entry's key (named in error messages)
+    entry : the entry's table: ``name``, ``model`` ("walther" or "solid"), optional ``type``
+        ("oil", "grease", "solid"), ``base_oil``, the viscosity (a, b, c; or viscosity_40 and
+        viscosity_100; or t1, nu1, t2, nu2), optional ``viscosity_points``, ``density``,
+        ``density_temperature``, ``pour_point`` and ``low_temperature_torque`` tests, every
+        number as ``{value, unit, kind, ref}``
+
+    Returns
+    -------
+    LubricantRecord, SI: viscosities [m²/s], density [kg/m³], temperatures [K], torques [N·m]
+
+    Examples
+    --------
+    >>> def q(value, unit):
+    ...     return {"value": value, "unit": unit, "kind": "assumed", "ref": "example"}
+    >>> entry = {"name": "ISO VG 32 oil", "model": "walther",
+    ...          "viscosity_40": q(32, "cSt"), "viscosity_100": q(5.4, "cSt")}
+    >>> rec = lubricant_record_from_entry("vg32", entry)
+    >>> round(float(rec.viscosity.kinematic_viscosity(313.15)) * 1e6, 6)  # cSt at 40 °C
+    32.0
+    """
+    try:
+        return _lubricant_record(key, entry)
+    except (KeyError, ValueError) as err:
+        raise _named(f"lubricant {key!r}", err) from None
+
+
+def _lubricant_record(key: str, entry: dict) -> LubricantRecord:
+    model = entry.get("model")
+    if model not in ("walther", "solid"):
+        raise ValueError(f"model = {model!r} is not walther or solid")
+    v, prov = _quantities(entry, f"lubricant {key!r}")
+    solid = model == "solid"
+    visc = None if solid else _walther(key, entry, v, prov)
+    nu = {} if solid else _reference_viscosities(key, visc, v, prov)
+    points = _viscosity_points(key, entry, prov)
+    torques = tuple(
+        _torque_test(key, i, t) for i, t in enumerate(entry.get("low_temperature_torque", []))
+    )
+    prov.update(dict(visc.provenance) if visc else {})
+    return LubricantRecord(
+        key=key,
+        name=entry["name"],
+        lubricant_type=entry.get("type", "solid" if solid else "oil"),
+        base_oil=entry.get("base_oil", ""),
+        viscosity=visc,
+        viscosity_40=nu.get("viscosity_40"),
+        viscosity_100=nu.get("viscosity_100"),
+        viscosity_points=points,
+        density=v.get("density"),
+        density_temperature=v.get("density_temperature"),
+        pour_point=v.get("pour_point"),
+        low_temperature_torque=torques,
+        provenance=tuple(sorted(prov.items())),
+    )
+
+
+@functools.cache
+def lubricant_record(key: str) -> LubricantRecord:
+    """The full record of lubricant ``key`` from ``data/lubricants.toml``: base-oil viscosity at
+    40 and 100 °C and its Walther model, density, pour point and the datasheet's
+    low-temperature torque tests, every value with its provenance.
+
+    Parameters
+    ----------
+    key : catalogue key, one of ``keys("lubricants")``
+
+    Returns
+    -------
+    LubricantRecord, SI: viscosities [m²/s], density [kg/m³], temperatures [K], torques [N·m]
+
+    Examples
+    --------
+    >>> rec = lubricant_record("pennzane_2000")
+    >>> round(rec.viscosity_40 * 1e6, 1), round(rec.pour_point - 273.15, 1)  # cSt, °C
+    (107.0, -55.0)
+    """
+    return lubricant_record_from_entry(key, _lookup("lubricants", key))
+
+
 @functools.cache
 def lubricant(key: str) -> WaltherViscosity | None:
     """The viscosity model of lubricant ``key``; ``None`` for a solid (dry-film) lubricant."""
-    entry = _lookup("lubricants", key)
-    if entry["model"] == "solid":
-        return None
-    if entry["model"] != "walther":
-        raise ValueError(f"lubricant {key!r}: model = {entry['model']!r} is not walther or solid")
-    c, c_src = quantity(entry["c"], "c")
-    c_cst = c / to_si(1.0, "cSt")
-    if "a" in entry:
-        a, a_src = quantity(entry["a"], "a")
-        b, b_src = quantity(entry["b"], "b")
-        prov = (("a", a_src), ("b", b_src), ("c", c_src))
-        return WaltherViscosity(key=key, name=entry["name"], a=a, b=b, c=c_cst, provenance=prov)
-    pts = {f: quantity(entry[f], f) for f in ("t1", "nu1", "t2", "nu2")}
-    fit = walther_from_two_points(
-        pts["t1"][0], pts["nu1"][0], pts["t2"][0], pts["nu2"][0], c=c_cst, key=key
+    return lubricant_record(key).viscosity
+
+
+@functools.cache
+def ball_set_rule() -> BallSetRule:
+    """The catalogue's design rule for ball sets that are not published
+    (``data/bearing_rules.toml``): coefficients calibrated on the bearings with a published
+    ball set, and the rule's stated leave-one-out error on them.
+
+    Returns
+    -------
+    BallSetRule (dimensionless coefficients and error bounds)
+
+    Examples
+    --------
+    >>> rule = ball_set_rule()
+    >>> dm, dw, z = rule.ball_set(0.015, 0.032)  # 7002: d = 15 mm, D = 32 mm
+    >>> round(dw * 1e3, 2), z, rule.calibration_bearings[0]
+    (4.86, 9, '71803')
+    """
+    entry = _table("bearing_rules")["ball_set"]
+    v, prov = _quantities(entry, "bearing_rules ball_set")
+    return BallSetRule(
+        section_ratio=v["section_ratio"],
+        fill=v["fill"],
+        calibration_bearings=tuple(entry["calibration_bearings"]),
+        ball_diameter_error=v["ball_diameter_error"],
+        ball_count_error=round(v["ball_count_error"]),
+        pitch_diameter_error=v["pitch_diameter_error"],
+        provenance=tuple(sorted(prov.items())),
     )
-    src = "derived: ASTM D341 fit through " + "; ".join(f"{f} ({s})" for f, (_, s) in pts.items())
-    return WaltherViscosity(
-        key=key,
-        name=entry["name"],
-        a=fit.a,
-        b=fit.b,
-        c=c_cst,
-        provenance=(("a", src), ("b", src), ("c", c_src)),
+
+
+def _apply_ball_set_rule(rule_name: str, v: dict, prov: dict) -> None:
+    if rule_name != "ball_set":
+        raise ValueError(f"design_rule = {rule_name!r} is not one of ['ball_set']")
+    rule = ball_set_rule()
+    dm, dw, z = rule.ball_set(v["bore"], v["outer_diameter"])
+    why = (
+        f"design rule ball_set (data/bearing_rules.toml), coefficients calibrated on "
+        f"{', '.join(rule.calibration_bearings)}"
     )
+    for field, value, formula, err in (
+        ("pitch_diameter", dm, "dm = (d + D)/2", f"±{rule.pitch_diameter_error:.1%}"),
+        ("ball_diameter", dw, f"Dw = {rule.section_ratio:g}·(D − d)",
+         f"±{rule.ball_diameter_error:.0%}"),
+        ("n_balls", z, f"Z = round({rule.fill:g}·π·dm/Dw)", f"±{rule.ball_count_error} ball"),
+    ):  # fmt: skip
+        if field in v:
+            raise ValueError(f"{field} is given and design_rule = 'ball_set' would replace it")
+        v[field] = value
+        prov[field] = f"derived: {formula}, {why}; leave-one-out error {err}"
+
+
+def _radial_clearance(entry: dict, v: dict, prov: dict) -> None:
+    """Put the mid-point of the entry's ISO 5753-1 clearance group into ``v``."""
+    group = entry["radial_clearance_group"]
+    if "radial_clearance" in v:
+        raise ValueError("give radial_clearance or radial_clearance_group, not both")
+    table = _table("bearing_rules")["radial_clearance"]
+    low, high = clearance_from_group(v["bore"], group, table["rows"])
+    v["radial_clearance"] = 0.5 * (low + high)
+    prov["radial_clearance"] = (
+        f"assumed: clearance group {group} (the bearing's own group is not published), "
+        f"mid-point of its {low / UM:g}…{high / UM:g} µm for d = {v['bore'] / MM:g} mm "
+        f"({table['kind']}: {table['ref']})"
+    )
+
+
+def _groove_diameters(entry: dict, v: dict, prov: dict) -> tuple[float, float, float]:
+    """(d_i, d_o, Dw) [m] from the groove diameters, or from dm and Dw with either the free
+    contact angle (angular-contact) or the radial clearance (deep-groove)."""
+    f_i, f_o = v["inner_curvature"], v["outer_curvature"]
+    if "inner_groove_diameter" in v:
+        d_i, d_o = v["inner_groove_diameter"], v["outer_groove_diameter"]
+        prov["ball_diameter"] = "derived: from the groove diameters and the free contact angle"
+        return d_i, d_o, ball_diameter_from_grooves(d_i, d_o, f_i, f_o, v["contact_angle"])
+    if "radial_clearance_group" in entry:
+        _radial_clearance(entry, v, prov)
+    if ("contact_angle" in v) == ("radial_clearance" in v):
+        raise ValueError(
+            "give contact_angle (angular-contact: the free contact angle sets the clearance) or "
+            "radial_clearance / radial_clearance_group (deep-groove: the clearance sets the "
+            "free contact angle), exactly one of them"
+        )
+    dw, dm = v["ball_diameter"], v["pitch_diameter"]
+    if "contact_angle" in v:
+        clearance = 2.0 * (f_i + f_o - 1.0) * dw * (1.0 - math.cos(v["contact_angle"]))
+        src = "derived: from pitch and ball diameters and the free contact angle"
+    else:
+        clearance = v["radial_clearance"]
+        src = "derived: from pitch and ball diameters and the radial clearance"
+    for g in ("inner_groove_diameter", "outer_groove_diameter"):
+        prov[g] = src
+    return dm - dw - 0.5 * clearance, dm + dw + 0.5 * clearance, dw
+
+
+def _material_source(where: str, entry: dict, prov: dict) -> None:
+    spec = entry.get("material_source")
+    if spec is None:
+        return
+    kind, ref = spec.get("kind"), spec.get("ref")
+    if kind not in PROVENANCE_KINDS or not ref:
+        raise ValueError(f"{where} material_source = {spec!r} must be {{kind, ref}} with kind "
+                         f"one of {PROVENANCE_KINDS}")  # fmt: skip
+    prov["ring_material"] = prov["ball_material"] = f"{kind}: {ref}"
+
+
+def bearing_from_entry(key: str, entry: dict) -> BallBearing:
+    """The :class:`BallBearing` of one ``data/bearings.toml``-format entry.
+
+    The ball set is given (``ball_diameter``, ``n_balls``, ``pitch_diameter``) or, with
+    ``design_rule = "ball_set"``, sized by :func:`ball_set_rule`. The groove diameters are given
+    (the ball diameter then follows from them and ``contact_angle``), or derived from the ball
+    set and either the free ``contact_angle`` (angular-contact bearings) or the unmounted radial
+    internal clearance (deep-groove bearings: ``radial_clearance``, or ``radial_clearance_group``
+    "N"/"C3"… for the mid-point of the ISO 5753-1 range), from which the free contact angle
+    follows (:func:`geometry.free_contact_angle`).
+
+    Parameters
+    ----------
+    key : the entry's key (named in error messages)
+    entry : the entry's table; numbers as ``{value, unit, kind, ref}``, ``ring_material`` and
+        ``ball_material`` as keys of ``data/materials.toml``
+
+    Returns
+    -------
+    BallBearing, SI [m]; geometry that cannot be a bearing raises ValueError naming the entry
+    and the values
+
+    Examples
+    --------
+    >>> def q(value, unit):
+    ...     return {"value": value, "unit": unit, "kind": "assumed", "ref": "example"}
+    >>> entry = {"name": "6205-like", "bore": q(25, "mm"), "outer_diameter": q(52, "mm"),
+    ...          "width": q(15, "mm"), "ball_diameter": q(7.94, "mm"), "n_balls": q(9, "-"),
+    ...          "pitch_diameter": q(39.04, "mm"), "radial_clearance": q(12.5, "um"),
+    ...          "inner_curvature": q(0.52, "-"), "outer_curvature": q(0.53, "-"),
+    ...          "ring_material": "bearing_steel_yu", "ball_material": "bearing_steel_yu"}
+    >>> b = bearing_from_entry("example", entry)
+    >>> round(b.clearance * 1e6, 2), round(math.degrees(b.contact_angle), 2)  # µm, deg
+    (12.5, 10.18)
+    """
+    where = f"bearing {key!r}"
+    v, prov = _quantities(entry, where, skip=("material_source",))
+    try:
+        if "design_rule" in entry:
+            _apply_ball_set_rule(entry["design_rule"], v, prov)
+        d_i, d_o, dw = _groove_diameters(entry, v, prov)
+        _material_source(where, entry, prov)
+        result = BallBearing(
+            key=key,
+            name=entry["name"],
+            bore=v["bore"],
+            outer_diameter=v["outer_diameter"],
+            width=v["width"],
+            n_balls=round(v["n_balls"]),
+            ball_diameter=dw,
+            inner_groove_diameter=d_i,
+            outer_groove_diameter=d_o,
+            inner_curvature=v["inner_curvature"],
+            outer_curvature=v["outer_curvature"],
+            ring_material=material(entry["ring_material"]),
+            ball_material=material(entry["ball_material"]),
+            provenance=tuple(sorted(prov.items())),
+        )
+    except (KeyError, ValueError) as err:
+        raise _named(where, err) from None
+    if "contact_angle" in v and "inner_groove_diameter" not in v:
+        check = free_contact_angle(result.clearance, result.curvature_distance)
+        if abs(check - v["contact_angle"]) > 1e-9:  # pragma: no cover - guards the derivation
+            raise ValueError(f"{where}: derived geometry gives α0 = {check} rad")
+    return result
 
 
 @functools.cache
 def bearing(key: str) -> BallBearing:
-    """The :class:`BallBearing` ``key`` (e.g. "71803", "71807C") from ``data/bearings.toml``.
-
-    Either the groove diameters are given (the ball diameter is derived with
-    :func:`geometry.ball_diameter_from_grooves`), or the pitch and ball diameters (the groove
-    diameters are derived so that the free contact angle equals ``contact_angle``).
-    """
-    entry = _lookup("bearings", key)
-    v, prov = {}, {}
-    for field, spec in entry.items():
-        if isinstance(spec, dict):
-            v[field], prov[field] = quantity(spec, field)
-    f_i, f_o, alpha0 = v["inner_curvature"], v["outer_curvature"], v["contact_angle"]
-    if "inner_groove_diameter" in v:
-        v["ball_diameter"] = ball_diameter_from_grooves(
-            v["inner_groove_diameter"], v["outer_groove_diameter"], f_i, f_o, alpha0
-        )
-        prov["ball_diameter"] = "derived: from the groove diameters and the free contact angle"
-    else:
-        dw, dm = v["ball_diameter"], v["pitch_diameter"]
-        clearance = 2.0 * (f_i + f_o - 1.0) * dw * (1.0 - math.cos(alpha0))
-        v["inner_groove_diameter"] = dm - dw - 0.5 * clearance
-        v["outer_groove_diameter"] = dm + dw + 0.5 * clearance
-        for g in ("inner_groove_diameter", "outer_groove_diameter"):
-            prov[g] = "derived: from pitch and ball diameters and the free contact angle"
-    result = BallBearing(
-        key=key,
-        name=entry["name"],
-        bore=v["bore"],
-        outer_diameter=v["outer_diameter"],
-        width=v["width"],
-        n_balls=round(v["n_balls"]),
-        ball_diameter=v["ball_diameter"],
-        inner_groove_diameter=v["inner_groove_diameter"],
-        outer_groove_diameter=v["outer_groove_diameter"],
-        inner_curvature=f_i,
-        outer_curvature=f_o,
-        ring_material=material(entry["ring_material"]),
-        ball_material=material(entry["ball_material"]),
-        provenance=tuple(sorted(prov.items())),
-    )
-    check = free_contact_angle(result.clearance, result.curvature_distance)
-    if abs(check - alpha0) > 1e-9:  # pragma: no cover - guards the derivation above
-        raise ValueError(f"bearing {key!r}: derived geometry gives α0 = {check} rad, not {alpha0}")
-    return result
+    """The :class:`BallBearing` ``key`` (e.g. "71803", "7002C", "61804") from
+    ``data/bearings.toml``; see :func:`bearing_from_entry` for the ways an entry gives its
+    geometry."""
+    return bearing_from_entry(key, _lookup("bearings", key))
 
 
 def mounting_entry(key: str) -> dict:
@@ -221,10 +509,7 @@ def actuator(key: str, **overrides):
     from .actuator import Actuator, kinematics
 
     entry = _lookup("actuators", key)
-    v, prov = {}, {}
-    for field, spec in entry.items():
-        if isinstance(spec, dict):
-            v[field], prov[field] = quantity(spec, field)
+    v, prov = _quantities(entry, f"actuator {key!r}")
     reflected = {
         "gear_stiffness": v.pop("gear_stiffness_reflected"),
         "screw_stiffness": v.pop("screw_stiffness_reflected"),
@@ -302,6 +587,7 @@ def thermal(key: str) -> dict:
 
 
 TABLES = (
+    "bearing_rules",
     "materials",
     "lubricants",
     "bearings",

@@ -23,6 +23,7 @@ import numpy as np
 
 from ._checks import check_finite, check_positive, check_range
 from .materials import Material, reduced_compliance
+from .units import MM, UM
 
 
 def ball_diameter_from_grooves(
@@ -85,6 +86,109 @@ def first_contact_offset(clearance, curvature_distance):
     pd = np.clip(np.asarray(check_finite("clearance", clearance, "m"), dtype=float), 0.0, 2.0 * a)
     out = np.sqrt(np.maximum(a**2 - (a - 0.5 * pd) ** 2, 0.0))
     return out if out.ndim else float(out)
+
+
+def ball_set_from_design_rule(bore, outer_diameter, section_ratio, fill):
+    """Pitch diameter, ball diameter and ball count of a ball set sized from the boundary
+    dimensions, for a bearing whose internal geometry is not published.
+
+    dm = (d + D)/2,  Dw = k·(D − d),  Z = round(φ·π·dm/Dw). The coefficients k and φ of the
+    catalogue are calibrated on its bearings with a published ball set, and the rule's
+    leave-one-out error on them is stated with them (``data/bearing_rules.toml``,
+    :func:`catalog.ball_set_rule`).
+
+    Parameters
+    ----------
+    bore : bore diameter d [m]
+    outer_diameter : outside diameter D [m], > d
+    section_ratio : k = Dw/(D − d) [-], in (0, 0.5)
+    fill : φ = Z·Dw/(π·dm) [-], the fraction of the pitch circle taken by balls, in (0, 1)
+
+    Returns
+    -------
+    (pitch_diameter [m], ball_diameter [m], n_balls [-])
+
+    Examples
+    --------
+    >>> dm, dw, z = ball_set_from_design_rule(0.015, 0.032, 0.2859, 0.570)  # a 7002
+    >>> round(dm * 1e3, 2), round(dw * 1e3, 3), z
+    (23.5, 4.86, 9)
+    """
+    d = check_positive("bore", bore, "m")
+    big_d = check_positive("outer_diameter", outer_diameter, "m")
+    if not big_d > d:
+        raise ValueError(f"outer_diameter = {big_d!r} m must exceed bore = {d!r} m")
+    k = check_range("section_ratio", section_ratio, 0.0, 0.5, lo_open=True, hi_open=True)
+    phi = check_range("fill", fill, 0.0, 1.0, lo_open=True, hi_open=True)
+    dm = 0.5 * (d + big_d)
+    dw = k * (big_d - d)
+    n_balls = round(phi * np.pi * dm / dw)
+    return dm, dw, n_balls
+
+
+@dataclass(frozen=True)
+class BallSetRule:
+    """The catalogue's design rule for a ball set (:func:`ball_set_from_design_rule`), with the
+    bearings it was calibrated on and its leave-one-out error on them.
+
+    Attributes
+    ----------
+    section_ratio : k = Dw/(D − d) [-]
+    fill : φ = Z·Dw/(π·dm) [-]
+    calibration_bearings : catalogue keys of the bearings with a published ball set
+    ball_diameter_error : stated bound of |ΔDw|/Dw [-]
+    ball_count_error : stated bound of |ΔZ| [balls]
+    pitch_diameter_error : stated bound of |Δdm|/dm [-]
+    provenance : ((field, source), ...)
+    """
+
+    section_ratio: float
+    fill: float
+    calibration_bearings: tuple[str, ...]
+    ball_diameter_error: float
+    ball_count_error: int
+    pitch_diameter_error: float
+    provenance: tuple[tuple[str, str], ...] = ()
+
+    def ball_set(self, bore, outer_diameter):
+        """(dm [m], Dw [m], Z) of a bearing with ``bore`` and ``outer_diameter`` [m]."""
+        return ball_set_from_design_rule(bore, outer_diameter, self.section_ratio, self.fill)
+
+
+def clearance_from_group(bore, group: str, table) -> tuple[float, float]:
+    """Range (min, max) [m] of the radial internal clearance of a deep-groove ball bearing of
+    ``bore`` [m] in clearance ``group`` ("C2", "N", "C3", "C4"), from ``table``: rows
+    ``{"over", "incl", <group>: [min, max]}`` with the bore in mm and the clearance in µm
+    (ISO 5753-1:2009 Table 1, kept in ``data/bearing_rules.toml``).
+
+    Parameters
+    ----------
+    bore : bore diameter d [m]
+    group : clearance group name
+    table : the rows described above
+
+    Returns
+    -------
+    (minimum, maximum) radial internal clearance [m]
+
+    Examples
+    --------
+    >>> rows = [{"over": 24, "incl": 30, "N": [5, 20]}]
+    >>> [round(x * 1e6, 1) for x in clearance_from_group(0.025, "N", rows)]
+    [5.0, 20.0]
+    """
+    d_mm = check_positive("bore", bore, "m") / MM
+    for row in table:
+        if row["over"] < d_mm <= row["incl"]:
+            if group not in row:
+                raise ValueError(
+                    f"radial_clearance_group = {group!r} is not one of "
+                    f"{sorted(k for k in row if k not in ('over', 'incl'))}"
+                )
+            low, high = row[group]
+            return low * UM, high * UM
+    spans = [(r["over"], r["incl"]) for r in table]
+    raise ValueError(f"bore = {bore!r} m is outside the clearance table's bores {spans} mm")
 
 
 @dataclass(frozen=True)

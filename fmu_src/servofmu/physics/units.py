@@ -15,6 +15,7 @@ UM = 1.0e-6  # m per µm
 NMM = 1.0e-3  # N·m per N·mm
 GPA = 1.0e9  # Pa per GPa
 DEG = math.pi / 180.0  # rad per degree
+GRAM_FORCE = 9.80665e-3  # N per gram-force (standard gravity)
 
 
 def celsius_to_kelvin(t_c):
@@ -41,6 +42,7 @@ def rad_per_s_to_rpm(omega):
 TO_SI = {
     "m": 1.0,
     "mm": MM,
+    "in": 0.0254,
     "um": UM,
     "Pa": 1.0,
     "MPa": 1.0e6,
@@ -57,6 +59,8 @@ TO_SI = {
     "cSt": CST,
     "m2/s": 1.0,
     "kg/m3": 1.0,
+    "g/cm3": 1.0e3,
+    "g/mL": 1.0e3,
     "m4": 1.0,
     "mm4": MM**4,
     "N.m/rad": 1.0,
@@ -67,6 +71,10 @@ TO_SI = {
     "m2.K/W": 1.0,
     "m/s": 1.0,
     "W/K": 1.0,
+    "N.m": 1.0,
+    "mN.m": 1.0e-3,
+    "N.mm": NMM,
+    "g.cm": GRAM_FORCE * 1.0e-2,  # gram-force centimetre, ASTM D1478 torques
 }
 
 

@@ -1,0 +1,111 @@
+"""Lubricant records: what a datasheet says about an oil or a grease's base oil (SI).
+
+The values live in ``data/lubricants.toml`` with their provenance; load them with
+:func:`servofmu.physics.catalog.lubricant_record` (the viscosity model alone:
+:func:`servofmu.physics.catalog.lubricant`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ._checks import check_nonnegative, check_positive, check_temperature
+from .viscosity import WaltherViscosity
+
+LUBRICANT_TYPES = ("oil", "grease", "solid")
+
+
+@dataclass(frozen=True)
+class TorqueTest:
+    """One low-temperature torque result of a grease, as its datasheet reports it.
+
+    Attributes
+    ----------
+    standard : test method, e.g. "ASTM D1478", "FED-STD-791 3458", "JIS K 2220"
+    bearing : test bearing as the standard or datasheet names it
+    temperature : test temperature [K]
+    starting_torque : breakaway torque [N·m] (None: not reported)
+    running_torque : torque after the method's running time [N·m] (None: not reported)
+    provenance : ((field, source), ...)
+    """
+
+    standard: str
+    bearing: str
+    temperature: float
+    starting_torque: float | None = None
+    running_torque: float | None = None
+    provenance: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self):
+        check_temperature("temperature", self.temperature)
+        for name in ("starting_torque", "running_torque"):
+            if getattr(self, name) is not None:
+                check_nonnegative(name, getattr(self, name), "N·m")
+        if self.starting_torque is None and self.running_torque is None:
+            raise ValueError("a torque test needs starting_torque or running_torque")
+
+
+@dataclass(frozen=True)
+class LubricantRecord:
+    """A lubricant's datasheet values (of the base oil for a grease), SI units.
+
+    Attributes
+    ----------
+    key, name : catalogue key and description
+    lubricant_type : "oil", "grease" or "solid"
+    base_oil : the base oil as the datasheet names it ("" for a solid film)
+    viscosity : Walther/ASTM D341 model of the base oil (None for a solid film)
+    viscosity_40, viscosity_100 : kinematic viscosity at 40 and 100 °C [m²/s] (None: solid)
+    viscosity_points : further published (temperature [K], viscosity [m²/s]) points, kept to
+        check the two-point fit; not used by it
+    density : base-oil density [kg/m³] at ``density_temperature`` [K] (None: not published)
+    pour_point : base-oil pour point [K] (None: not published)
+    low_temperature_torque : datasheet torque tests, :class:`TorqueTest`
+    provenance : ((field, source), ...)
+    """
+
+    key: str
+    name: str
+    lubricant_type: str
+    base_oil: str = ""
+    viscosity: WaltherViscosity | None = None
+    viscosity_40: float | None = None
+    viscosity_100: float | None = None
+    viscosity_points: tuple[tuple[float, float], ...] = ()
+    density: float | None = None
+    density_temperature: float | None = None
+    pour_point: float | None = None
+    low_temperature_torque: tuple[TorqueTest, ...] = ()
+    provenance: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self):
+        if self.lubricant_type not in LUBRICANT_TYPES:
+            raise ValueError(
+                f"lubricant_type = {self.lubricant_type!r} is not one of {LUBRICANT_TYPES}"
+            )
+        fluid = self.lubricant_type != "solid"
+        if fluid != (self.viscosity is not None):
+            raise ValueError(
+                f"lubricant_type = {self.lubricant_type!r} needs "
+                f"{'a viscosity model' if fluid else 'no viscosity model'}"
+            )
+        if fluid:
+            nu40 = check_positive("viscosity_40", self.viscosity_40, "m²/s")
+            nu100 = check_positive("viscosity_100", self.viscosity_100, "m²/s")
+            if not nu100 < nu40:
+                raise ValueError(
+                    f"viscosity_100 = {nu100!r} m²/s must be below viscosity_40 = {nu40!r} m²/s"
+                )
+        for t, nu in self.viscosity_points:
+            check_temperature("viscosity_points temperature", t)
+            check_positive("viscosity_points viscosity", nu, "m²/s")
+        if self.density is not None:
+            check_positive("density", self.density, "kg/m³")
+        if self.density_temperature is not None:
+            check_temperature("density_temperature", self.density_temperature)
+        if self.pour_point is not None:
+            check_temperature("pour_point", self.pour_point)
+
+    def source(self, field: str) -> str:
+        """Provenance of one field ("" when not recorded)."""
+        return dict(self.provenance).get(field, "")
