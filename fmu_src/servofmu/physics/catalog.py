@@ -279,6 +279,8 @@ TABLES = (
     "actuators",
     "coefficients",
     "tolerances",
+    "skf_friction",
+    "grease_torques",
 )
 
 

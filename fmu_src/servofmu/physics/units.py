@@ -15,6 +15,7 @@ UM = 1.0e-6  # m per µm
 NMM = 1.0e-3  # N·m per N·mm
 GPA = 1.0e9  # Pa per GPa
 DEG = math.pi / 180.0  # rad per degree
+GRAM_FORCE_CM = 9.80665e-5  # N·m per gram-force centimetre (g·cm, grease torque tests)
 
 
 def celsius_to_kelvin(t_c):
@@ -61,6 +62,15 @@ TO_SI = {
     "mm4": MM**4,
     "N.m/rad": 1.0,
     "N.m/deg": 1.0 / DEG,
+    "N.m": 1.0,
+    "mN.m": 1.0e-3,
+    "N.mm": NMM,
+    "g.cm": GRAM_FORCE_CM,
+    "rpm": RPM,
+    "kg": 1.0,
+    "g": 1.0e-3,
+    "mm2/s": CST,
+    "Pa.s": 1.0,
 }
 
 
