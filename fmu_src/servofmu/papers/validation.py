@@ -80,7 +80,8 @@ def _ehl_rig_torque(rig, ser, speed):
 
 def _balan_rows(out_dir: Path) -> tuple[list[Row], list[Parameter], list[str]]:
     data, rig, series = _balan_series()
-    s0, s0_src = catalog.coefficients("yu2017_gimbal").palmgren_s0, "calibrated on Yu 2017"
+    coef = catalog.coefficients("yu2017_gimbal")
+    s0, s0_src = coef.palmgren_s0, coef.source("palmgren_s0")
     rows, csv_cols = [], {k: [] for k in ("series", "speed [rpm]", "published [N.mm]")}
     csv_cols.update({"ehl model [N.mm]": [], "yu2017 palmgren [N.mm]": []})
     ratios = {}

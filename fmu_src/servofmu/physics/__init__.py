@@ -1,8 +1,10 @@
 """Pure physics models (numpy in, numpy out, SI units), each citing its paper and equation.
 
 Modules: units, materials, viscosity, geometry, hertz, equilibrium, fits (radial thermal
-coupling), preload (axial thermal coupling), friction, bearing (the composed model),
-actuator (Liu 2014), motor, control, catalog (records kept as data in ``data/*.toml``).
+coupling), preload (axial thermal coupling), friction, rolling_friction (the SKF 2004 model),
+ehl_rolling (per-contact hydrodynamic rolling resistance), grease_torque (the cold-grease term),
+bearing (the composed model), actuator (Liu 2014), motor, control, catalog (records kept as
+data in ``data/*.toml``).
 """
 
 MODULES = (

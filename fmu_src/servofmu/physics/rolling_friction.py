@@ -472,12 +472,10 @@ def oil_bath_drag_torque(
     t = 2.0 * np.arccos(np.clip((0.6 * dm - h) / (0.6 * dm), -1.0, 1.0))
     f_t = np.where(t <= math.pi, np.sin(0.5 * t), 1.0)
     r_s = 0.36 * dm**2 * (t - np.sin(t)) * f_a
-    with np.errstate(divide="ignore"):
-        viscous = np.where(
-            n > 0.0,
-            1.093e-7 * n**2 * dm**3 * (np.maximum(n, 1e-300) * dm**2 * f_t / nu) ** -1.379 * r_s,
-            0.0,
-        )
+    wet = (n > 0.0) & (r_s > 0.0)  # no speed or no oil: no viscous drag (and no 0^-1.379)
+    n_w, f_w = np.where(wet, n, 1.0), np.where(wet, f_t, 1.0)
+    viscous = 1.093e-7 * n_w**2 * dm**3 * (n_w * dm**2 * f_w / nu) ** -1.379 * r_s
+    viscous = np.where(wet, viscous, 0.0)
     return _scalar((0.4 * vm * k_ball * dm**5 * n**2 + viscous) * NMM)
 
 
