@@ -14,14 +14,14 @@ convert at the edge (:data:`servofmu.physics.units`).
 
 Sources and the printing used (see also ``data/skf_friction.toml``):
 
-- SKF, *Rolling bearings*, catalogue PUB BU/P1 10000 EN ("Rolling bearings", 2012/2013
-  printing), chapter "Friction", section "The SKF model for calculating the frictional
-  moment": the sliding moment, μsl, φbl, μbl ≈ 0.15 and the μEHL values (printed p. 103), and
+- SKF, *Rolling bearings*, chapter "Friction", section "The SKF model for calculating the
+  frictional moment": the sliding moment, μsl, φbl, μbl ≈ 0.15 and the μEHL values, and
   Table 2a "Geometric and load dependent variables for rolling and sliding frictional
-  moments – radial bearings" (printed p. 104) were read from the stored copy "SKF - Rolling
-  Bearings" (yumpu document 55668573, pages 105–106). The same model first appeared in the
-  2004 SKF General Catalogue 6000 EN ("The new SKF model", pp. 89–103) and is unchanged in
-  PUB BU/P1 17000 EN (2018).
+  moments – radial bearings" (on printed p. 104, as the sliding-moment page cites it) were read
+  from the stored copy "SKF - Rolling Bearings" (yumpu document 55668573, pages 105–106). Its
+  title and its Table 2a/2b numbering are those of PUB BU/P1 10000 EN (2012/2013); the cover
+  was not among the stored pages. The model first appeared in the General Catalogue 6000 EN
+  (2005, "The new SKF model", pp. 89–103) and is unchanged in PUB BU/P1 17000 EN (2018).
 - The starting torque Mstart = Msl + Mseal, "at an ambient temperature of 20 to 30 °C":
   skf.com, "Friction – Starting torque" (stored page).
 - φish and φrs: the catalogue's variables and their units were read on skf.com ("Inlet shear
