@@ -11,6 +11,7 @@ import pytest
 from servofmu import cli
 from servofmu.papers import run
 from servofmu.papers.report import STATUSES
+from servofmu.physics.catalog import PROVENANCE_KINDS
 
 # computed/published as reported (commit of this test); a drift beyond 1e-3 fails.
 RATIOS = {
@@ -106,14 +107,8 @@ def test_files_and_parameters(rep):
     header = Path(rep.files[0]).read_text().splitlines()[0].split(",")
     assert all("[" in h for h in header[1:])
     for p in rep.parameters:
-        assert p.provenance.split(":")[0] in {
-            "paper",
-            "catalogue",
-            "handbook",
-            "assumed",
-            "calibrated",
-            "derived",
-        } or p.name.startswith("source.")
+        kind = p.provenance.split(":")[0]
+        assert kind in PROVENANCE_KINDS or p.name.startswith("source."), p
 
 
 def test_cli_runs_the_report(tmp_path, capsys):

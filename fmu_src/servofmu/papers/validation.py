@@ -241,30 +241,24 @@ def _grease_rows() -> tuple[list[Row], list[Parameter]]:
             "no churning of the fill, no thickener yield. Its sliding and rolling terms see "
             "only the base oil's viscosity and the 4.45 N housing load."
         )
-        rows.append(
-            compare(
-                f"g1074.{i}.running.skf",
-                "running torque, SKF model (series 62 constants, literature μ), a prediction",
-                pt.running_torque / 1e-3,
-                float(skf.total) / 1e-3,
-                "mN.m",
-                rel=OIL_TOLERANCE,
-                note=f"computed/published = {skf.total / pt.running_torque:.3g}. {where}",
-                miss_note=skf_miss,
+        for which, what, published, computed in (
+            ("running", "running torque, SKF model (series 62 constants, literature μ)",
+             pt.running_torque, float(skf.total)),
+            ("starting", "starting torque, SKF model Mstart = Msl + Mseal",
+             pt.starting_torque, float(skf.starting)),
+        ):  # fmt: skip
+            rows.append(
+                compare(
+                    f"g1074.{i}.{which}.skf",
+                    f"{what}, a prediction",
+                    published / 1e-3,
+                    computed / 1e-3,
+                    "mN.m",
+                    rel=OIL_TOLERANCE,
+                    note=f"computed/published = {computed / published:.3g}. {where}",
+                    miss_note=skf_miss,
+                )
             )
-        )
-        rows.append(
-            compare(
-                f"g1074.{i}.starting.skf",
-                "starting torque, SKF model Mstart = Msl + Mseal, a prediction",
-                pt.starting_torque / 1e-3,
-                float(skf.starting) / 1e-3,
-                "mN.m",
-                rel=OIL_TOLERANCE,
-                note=f"computed/published = {skf.starting / pt.starting_torque:.3g}. {where}",
-                miss_note=skf_miss,
-            )
-        )
         term = calibrate_grease_term(
             pt.starting_torque, pt.running_torque, nu, test.speed, test.mean_diameter
         )
