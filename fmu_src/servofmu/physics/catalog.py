@@ -279,8 +279,6 @@ TABLES = (
     "actuators",
     "coefficients",
     "tolerances",
-    "skf_friction",
-    "grease_torques",
 )
 
 
