@@ -1,9 +1,10 @@
 """Reproductions of the source papers: validation reports, CSV curves and PNG figures.
 
-``servofmu paper yu2017|ning|liu2014 [--json] [--out DIR]``; see :mod:`.report` for the format.
+``servofmu paper yu2017|ning|liu2014|validation [--json] [--out DIR]``; see :mod:`.report`
+for the format.
 """
 
-PAPERS = ("yu2017", "ning", "liu2014")
+PAPERS = ("yu2017", "ning", "liu2014", "validation")
 
 
 def run(paper: str, out_dir):
@@ -14,6 +15,8 @@ def run(paper: str, out_dir):
         from . import ning as mod
     elif paper == "liu2014":
         from . import liu2014 as mod
+    elif paper == "validation":
+        from . import validation as mod
     else:
         raise ValueError(f"paper = {paper!r} is not one of {PAPERS}")
     return mod.reproduce(out_dir)

@@ -1,9 +1,11 @@
 """Pure physics models (numpy in, numpy out, SI units), each citing its paper and equation.
 
 Modules: units, materials, viscosity, geometry, hertz, equilibrium, fits (radial thermal
-coupling), preload (axial thermal coupling), friction, bearing (the composed model),
-actuator (Liu 2014), motor, control, thermal_network (part temperatures of a mechanism),
-catalog (records kept as data in ``data/*.toml``).
+coupling), preload (axial thermal coupling), friction, rolling_friction (the SKF 2004 model),
+ehl_rolling (per-contact hydrodynamic rolling resistance), grease_torque (the cold-grease term),
+temperatures (part temperatures), pair, pair_state and continuation (the pair's state, exact and
+per step), bearing (the composed model), actuator (Liu 2014), motor, control, thermal_network
+(part temperatures of a mechanism), catalog (records kept as data in ``data/*.toml``).
 """
 
 MODULES = (

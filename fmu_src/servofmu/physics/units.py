@@ -16,6 +16,7 @@ NMM = 1.0e-3  # N·m per N·mm
 GPA = 1.0e9  # Pa per GPa
 DEG = math.pi / 180.0  # rad per degree
 GRAM_FORCE = 9.80665e-3  # N per gram-force (standard gravity)
+GRAM_FORCE_CM = GRAM_FORCE * 1.0e-2  # N·m per gram-force centimetre (g·cm, grease torque tests)
 
 
 def celsius_to_kelvin(t_c):
@@ -74,7 +75,12 @@ TO_SI = {
     "N.m": 1.0,
     "mN.m": 1.0e-3,
     "N.mm": NMM,
-    "g.cm": GRAM_FORCE * 1.0e-2,  # gram-force centimetre, ASTM D1478 torques
+    "g.cm": GRAM_FORCE_CM,  # gram-force centimetre, ASTM D1478 torques
+    "rpm": RPM,
+    "kg": 1.0,
+    "g": 1.0e-3,
+    "mm2/s": CST,
+    "Pa.s": 1.0,
 }
 
 

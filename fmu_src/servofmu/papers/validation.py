@@ -1,0 +1,357 @@
+"""``servofmu paper validation``: the friction models against published measured torques
+that no coefficient of theirs was fitted to (issue 17).
+
+Sources (data with provenance in ``physics/data/friction_measurements.toml`` and
+``physics/data/grease_torques.toml``):
+
+1. Bălan, Houpert, Tufescu, Olaru (2015), Lubricants 3:222, Tables 1–2: three balls of a
+   modified thrust bearing 51205 in mineral oil, spin-down torques at 60–210 r/min. Checked:
+   the per-contact hydrodynamic rolling model (:mod:`physics.ehl_rolling`, Biboulet &
+   Houpert 2010 with literature constants only) and, for reference, the Yu-calibrated
+   Palmgren term that servofmu uses by default. The SKF model has no constants for a
+   three-ball bearing and is not applied.
+2. DuPont, technical data sheet of Molykote G-1074 (form 80-8136B-01, 09/19): starting and
+   running torque at −40 °C in the JIS K 2220 low-temperature torque test. Checked: the SKF
+   model (:mod:`physics.rolling_friction`, catalogue constants of series 62) as a
+   prediction; the grease term (:mod:`physics.grease_torque`) is calibrated on this point, so
+   its rows are "calibrated", and its prediction is untested for want of a second point.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from ..physics import catalog
+from ..physics.catalog import quantity
+from ..physics.ehl_rolling import ehl_rolling_torque
+from ..physics.friction import palmgren_viscous_torque
+from ..physics.grease_torque import (
+    base_oil_viscosity,
+    calibrate_grease_term,
+    grease_torque_points,
+    torque_test,
+)
+from ..physics.rolling_friction import MU_BOUNDARY, MU_EHL, skf_constants, skf_friction
+from ..physics.units import NMM, RPM, kelvin_to_celsius
+from .report import Parameter, Report, Row, calibrated, compare, plot, trend, write_csv
+
+OIL_TOLERANCE = 0.30  # the issue's aim for the oil rows, ±30 %
+MINERAL_OIL_DENSITY = 870.0  # kg/m³, assumed (only for the Yu-model reference rows)
+
+
+def _q(entry: dict, field: str) -> tuple[float, str]:
+    return quantity(entry[field], field)
+
+
+def _balan_series():
+    """The two series of Bălan 2015 with SI values: (rig dict, [(series dict, points)])."""
+    data = catalog._table("friction_measurements")["balan2015"]
+    rig = {f: _q(data, f) for f in ("race_radius", "groove_radius", "reduced_modulus", "n_balls")}
+    out = []
+    for s in data["series"]:
+        ser = {f: _q(s, f) for f in ("ball_diameter", "ball_load", "dynamic_viscosity")}
+        ser["id"], ser["table"] = s["id"], s["table"]
+        pts = [{f: _q(p, f)[0] for f in ("speed", "k_star", "exponent")} for p in s["points"]]
+        out.append((ser, pts))
+    return data, rig, out
+
+
+def _ehl_rig_torque(rig, ser, speed):
+    """6·r·F_R of the three-ball rig [N·m] (Bălan 2015 eq 14 = ehl_rolling_torque at 90°)."""
+    z = round(rig["n_balls"][0])
+    q = np.full(z, ser["ball_load"][0])
+    r = rig["race_radius"][0]
+    return ehl_rolling_torque(
+        q,
+        q,
+        np.full(z, math.pi / 2),
+        2.0 * r,
+        ser["ball_diameter"][0],
+        rig["groove_radius"][0],
+        rig["groove_radius"][0],
+        ser["dynamic_viscosity"][0],
+        speed,
+        rig["reduced_modulus"][0],
+    )
+
+
+def _balan_rows(out_dir: Path) -> tuple[list[Row], list[Parameter], list[str]]:
+    data, rig, series = _balan_series()
+    coef = catalog.coefficients("yu2017_gimbal")
+    s0, s0_src = coef.palmgren_s0, coef.source("palmgren_s0")
+    rows, csv_cols = [], {k: [] for k in ("series", "speed [rpm]", "published [N.mm]")}
+    csv_cols.update({"ehl model [N.mm]": [], "yu2017 palmgren [N.mm]": []})
+    ratios = {}
+    for k, (ser, pts) in enumerate(series):
+        d_mm, q = ser["ball_diameter"][0] * 1e3, ser["ball_load"][0]
+        eta = ser["dynamic_viscosity"][0]
+        label = f"d = {d_mm:g} mm, Q = {q:g} N, η0 = {eta:g} Pa·s"
+        for p in pts:
+            w = p["speed"]
+            published = p["k_star"] * w ** p["exponent"]  # Tz,exp at the initial speed
+            ehl = _ehl_rig_torque(rig, ser, w)
+            ehl_lab = _ehl_rig_torque(rig, ser, 2.0 * w)  # u_m = ω·r instead of ω·r/2
+            yu = palmgren_viscous_torque(
+                eta / MINERAL_OIL_DENSITY, w, 2.0 * rig["race_radius"][0], s0
+            )
+            rpm = round(w / RPM)
+            ratios.setdefault(ser["id"], []).append(ehl / published)
+            note = (
+                f"computed/published = {ehl / published:.2f}. "
+                f"{ser['table']} ({label}); published = K*·ω^n at the initial speed. The rig "
+                "has no cage and no seal; the measured total includes the dry hysteresis and "
+                "pivoting share (2–12 %, §4.3) that the model leaves out, and ran on two drops "
+                "of oil where the model is fully flooded."
+            )
+            miss = (
+                "The race radius r of the "
+                "paper's Fig. 1 is not in its text (18 mm assumed from the 51205; Tz ∝ r^1.7), "
+                "and with the race's own speed ω·r as entrainment speed instead of the "
+                f"contact-relative ω·r/2 the same model gives {ehl_lab / published:.2f}× — a "
+                "reading consistent with the data, not a prediction."
+            )
+            rows.append(
+                compare(
+                    f"balan2015.{ser['id']}.{rpm:03d}rpm.ehl",
+                    f"rig torque, EHL rolling model (Biboulet & Houpert 2010), {rpm} r/min",
+                    published / NMM,
+                    ehl / NMM,
+                    "N.mm",
+                    rel=OIL_TOLERANCE,
+                    note=note,
+                    miss_note=miss,
+                )
+            )
+            rows.append(
+                compare(
+                    f"balan2015.{ser['id']}.{rpm:03d}rpm.yu2017",
+                    f"rig torque, servofmu's default Palmgren term (s0 = {s0:.3f}), {rpm} r/min",
+                    published / NMM,
+                    yu / NMM,
+                    "N.mm",
+                    rel=OIL_TOLERANCE,
+                    note=(
+                        f"computed/published = {yu / published:.1f}. {ser['table']} ({label}); "
+                        "for reference: the default model."
+                    ),
+                    miss_note=(
+                        "Palmgren's term sees neither "
+                        "ball size, load nor ball count, and s0 was calibrated on Yu's gimbal."
+                    ),
+                )
+            )
+            for col, val in zip(
+                csv_cols, (k, rpm, published / NMM, ehl / NMM, yu / NMM), strict=True
+            ):
+                csv_cols[col].append(val)
+    files = _balan_files(out_dir, series, csv_cols)
+    params = [
+        Parameter(
+            "balan2015.race_radius", rig["race_radius"][0] * 1e3, "mm", rig["race_radius"][1]
+        ),
+        Parameter(
+            "balan2015.groove_radius", rig["groove_radius"][0] * 1e3, "mm", rig["groove_radius"][1]
+        ),
+        Parameter(
+            "balan2015.reduced_modulus",
+            rig["reduced_modulus"][0] / 1e9,
+            "GPa",
+            rig["reduced_modulus"][1],
+        ),
+        Parameter("yu2017.palmgren_s0", s0, "", s0_src),
+        Parameter(
+            "mineral_oil_density",
+            MINERAL_OIL_DENSITY,
+            "kg/m3",
+            "assumed: typical mineral oil at 26 °C (Yu-model reference rows only)",
+        ),
+        Parameter("source.balan2015", data["ref"], "", "paper"),
+    ]
+    for sid, r in ratios.items():
+        params.append(
+            Parameter(
+                f"balan2015.{sid}.ehl_ratio_range",
+                f"{min(r):.3f}–{max(r):.3f}",
+                "",
+                "derived: computed/published of the rows above",
+            )
+        )
+    return rows, params, files
+
+
+def _balan_files(out_dir: Path, series, cols) -> list[str]:
+    csv = write_csv(Path(out_dir) / "balan2015_torque.csv", cols)
+    speeds = np.array(cols["speed [rpm]"], dtype=float)
+    which = np.array(cols["series"])
+    pub = np.array(cols["published [N.mm]"])
+    ehl = np.array(cols["ehl model [N.mm]"])
+    lines, marks = {}, []
+    for k, (ser, _) in enumerate(series):
+        sel = which == k
+        d_mm, q = ser["ball_diameter"][0] * 1e3, ser["ball_load"][0]
+        tag = f"{ser['table']}: d = {d_mm:g} mm, Q = {q:g} N"
+        lines[f"model, {tag}"] = ehl[sel]
+        marks.append((speeds[sel], pub[sel], f"measured, {tag}"))
+
+    def decorate(ax):
+        for i, ((x, y, lab), mk) in enumerate(zip(marks, ("o", "s"), strict=False)):
+            ax.plot(x, y, mk, color=ax.lines[i].get_color(), label=lab)
+        ax.set_ylim(bottom=0.0)
+
+    png = plot(
+        Path(out_dir) / "balan2015_torque.png",
+        speeds[which == 0],
+        lines,
+        "initial speed [r/min]",
+        "rig torque Tz [N·mm]",
+        "Bălan et al. 2015: hydrodynamic rolling model (lines) vs spin-down (markers)",
+        decorate=decorate,
+    )
+    return [str(csv), str(png)]
+
+
+def _grease_rows() -> tuple[list[Row], list[Parameter]]:
+    key = "molykote_g1074"
+    rows, params = [], []
+    nu_model = base_oil_viscosity(key)
+    consts = skf_constants("62")
+    for i, pt in enumerate(grease_torque_points(key)):
+        test = torque_test(pt.test)
+        nu = float(nu_model.kinematic_viscosity(pt.temperature))
+        t_c = kelvin_to_celsius(pt.temperature)
+        skf = skf_friction(
+            consts,
+            test.bore,
+            test.outer_diameter,
+            test.radial_load,
+            0.0,
+            nu,
+            test.speed,
+            lubrication="grease",
+            mu_bl=MU_BOUNDARY,
+            mu_ehl=MU_EHL["synthetic"],
+        )
+        where = f"{key}, {test.name} at {t_c:.0f} °C, {pt.source('temperature')}."
+        skf_miss = (
+            "The test bearing (open 6204 with its cage, no seals) is packed completely full; "
+            "the SKF model has no term for a bearing packed completely full of cold grease: "
+            "no churning of the fill, no thickener yield. Its sliding and rolling terms see "
+            "only the base oil's viscosity and the 4.45 N housing load."
+        )
+        for which, what, published, computed in (
+            ("running", "running torque, SKF model (series 62 constants, literature μ)",
+             pt.running_torque, float(skf.total)),
+            ("starting", "starting torque, SKF model Mstart = Msl + Mseal",
+             pt.starting_torque, float(skf.starting)),
+        ):  # fmt: skip
+            rows.append(
+                compare(
+                    f"g1074.{i}.{which}.skf",
+                    f"{what}, a prediction",
+                    published / 1e-3,
+                    computed / 1e-3,
+                    "mN.m",
+                    rel=OIL_TOLERANCE,
+                    note=f"computed/published = {computed / published:.3g}. {where}",
+                    miss_note=skf_miss,
+                )
+            )
+        term = calibrate_grease_term(
+            pt.starting_torque, pt.running_torque, nu, test.speed, test.mean_diameter
+        )
+        rows.append(
+            calibrated(
+                f"g1074.{i}.running.grease_term",
+                "running torque, grease term (Palmgren M0 with f0)",
+                pt.running_torque / 1e-3,
+                term.running(nu, test.speed, test.mean_diameter) / 1e-3,
+                "mN.m",
+                f"f0 = {term.f0:.3g} on this point",
+                note=where,
+            )
+        )
+        rows.append(
+            calibrated(
+                f"g1074.{i}.starting.grease_term",
+                "starting torque, grease term (ks × running)",
+                pt.starting_torque / 1e-3,
+                term.starting(nu, test.mean_diameter) / 1e-3,
+                "mN.m",
+                f"ks = {term.starting_ratio:.3g} on this point",
+                note=where,
+            )
+        )
+        params += [
+            Parameter(f"{key}.f0", term.f0, "", f"calibrated: running torque of {where}"),
+            Parameter(
+                f"{key}.ks", term.starting_ratio, "", f"calibrated: starting/running of {where}"
+            ),
+            Parameter(
+                f"{key}.base_oil_nu_{t_c:.0f}C",
+                nu / 1e-6,
+                "cSt",
+                "derived: ASTM D341 through ν40, ν100 of the TDS, extrapolated 80 K below the "
+                "lowest datum (a PAO's Walther line may bend there)",
+            ),
+        ]
+    n_points = len(grease_torque_points(key))
+    rows.append(
+        trend(
+            "grease_term.prediction",
+            "grease term calibrated on one datasheet point predicts another (aim: within 2×)",
+            "a second published torque of the same grease (other temperature or test)",
+            n_points >= 2,
+            f"{n_points} published point(s) of {key} found",
+            miss_note=(
+                "Untested: no second low-temperature torque of the same grease was readable in "
+                "the stored sources (Krytox 240AC, Braycote 601EF, Mobil 28, AeroShell 33 and "
+                "Rheolube 2000 datasheets were searched for and not found)."
+            ),
+        )
+    )
+    for field in ("r1", "r2", "s1", "s2", "kz"):
+        params.append(
+            Parameter(f"skf.62.{field}", getattr(consts, field), "", consts.source(field))
+        )
+    params += [
+        Parameter(
+            "skf.mu_bl", MU_BOUNDARY, "", "catalogue: SKF 10000 EN p. 103, 'generally ≈ 0,15'"
+        ),
+        Parameter(
+            "skf.mu_ehl", MU_EHL["synthetic"], "", "catalogue: SKF 10000 EN p. 103, synthetic oils"
+        ),
+        Parameter("skf.krs", 6e-8, "", "catalogue: SKF 10000 EN, grease and oil-air lubrication"),
+    ]
+    return rows, params
+
+
+def reproduce(out_dir) -> Report:
+    """Build the validation report.
+
+    Parameters
+    ----------
+    out_dir : directory for the CSV and PNG files
+
+    Returns
+    -------
+    :class:`report.Report` (rows, parameters with provenance, files written)
+
+    >>> import tempfile
+    >>> rep = reproduce(tempfile.mkdtemp())
+    >>> sum(r.status == "reproduced" for r in rep.rows if r.id.endswith(".ehl"))
+    8
+    """
+    out_dir = Path(out_dir)
+    rep = Report(
+        "validation",
+        "Friction models vs published measured torques that no coefficient was fitted to",
+    )
+    rows, params, files = _balan_rows(out_dir)
+    g_rows, g_params = _grease_rows()
+    rep.rows = rows + g_rows
+    rep.parameters = params + g_params
+    rep.files = files
+    return rep

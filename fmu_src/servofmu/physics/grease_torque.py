@@ -1,0 +1,323 @@
+"""Torque of a grease-packed ball bearing at low temperature, calibrated on a grease
+datasheet's low-temperature torque test and carried to another bearing by Palmgren's law.
+
+The datasheet tests (records with provenance in ``data/grease_torques.toml``, ``[tests]``):
+
+- ASTM D1478 (and FED-STD-791 Method 3458, its military twin): a No. 6204 open ball bearing
+  (d = 20, D = 47 mm) packed completely full and struck off flush, held 2 h at the test
+  temperature, inner ring turned at 1 ± 0.05 r/min; the restraining torque on the outer ring
+  is the starting torque and, after 60 min, the running torque (§4.1); housing mass
+  454 ± 3 g (§6.1.3); torque [g·cm] = 6.50 × scale reading [g] (§9.1.1).
+- JIS K 2220, low-temperature torque: the stored copy lists the method but not its test
+  conditions; the 6204 bearing and 1 r/min of ASTM D1478 are assumed.
+
+Running torque: Palmgren's load-independent torque (Palmgren 1959, *Ball and Roller Bearing
+Engineering*; the form of Yu 2017 eq 8, :func:`friction.palmgren_viscous_torque`)
+
+    M0 = 1e-7·f0·(ν·n)^(2/3)·dm³ [N·mm]  (ν·n ≥ 2000 mm²/s·r/min; 160e-7·f0·dm³ below),
+
+ν the base oil's kinematic viscosity at the bearing temperature, n in r/min, dm in mm. The
+grease factor f0 is calibrated on one datasheet running torque (:func:`grease_factor`); the
+law then carries it to another temperature (through ν(T)), speed (n^(2/3)) and bearing
+(dm³). Starting torque: the datasheet's starting/running ratio ks, taken as constant
+(:func:`starting_ratio`): M_start = ks·M0 at the test's speed.
+
+Limits (stated, not modelled):
+
+- dm³ presumes geometrically similar bearings with the same relative grease fill. The test
+  bearing is packed completely full; a bearing filled to 20–40 % churns less, so the term
+  over-predicts it by an unknown factor. Channelling after running-in is not modelled.
+- (ν·n)^(2/3) is Palmgren's law for a lubricant's viscous drag. At low temperature a grease's
+  torque is carried largely by its thickener (f0 calibrated on datasheets comes out ten or more
+  times the oil values), so the base-oil ν(T) may under-state the temperature sensitivity.
+- ks constant in temperature and size is an assumption without a cited law.
+- Only where ν·n of the user's bearing lies near the test's (1 r/min, cold): at high speed
+  the grease channels and Palmgren's oil-bath correlation no longer describes it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ._checks import check_finite, check_positive, check_range
+from .friction import palmgren_viscous_torque
+from .units import RPM
+
+
+def grease_factor(running_torque, kinematic_viscosity, speed, mean_diameter):
+    """Palmgren factor f0 [-] calibrated on one measured running torque of a grease-packed
+    bearing: f0 = M_run / M0(f0 = 1) (Palmgren 1959; Yu 2017 eq 8).
+
+    Parameters
+    ----------
+    running_torque : measured running torque M_run [N·m], > 0
+    kinematic_viscosity : base-oil viscosity ν [m²/s] at the test temperature
+    speed : test speed ω [rad/s] (ASTM D1478: 1 r/min)
+    mean_diameter : dm [m] of the test bearing (6204: 33.5 mm)
+
+    Returns
+    -------
+    f0 [-]
+
+    >>> w = 2 * 3.141592653589793 / 60                      # 1 r/min
+    >>> round(grease_factor(0.050, 5000e-6, w, 0.0335), 2)  # 50 mN·m, ν = 5000 mm²/s
+    45.48
+    """
+    m = check_positive("running_torque", running_torque, "N·m")
+    unit = palmgren_viscous_torque(kinematic_viscosity, speed, mean_diameter, 1.0)
+    check_positive("palmgren torque at f0 = 1", unit, "N·m")
+    return m / unit
+
+
+def starting_ratio(starting_torque, running_torque):
+    """Starting-to-running torque ratio ks = M_start/M_run [-] of one datasheet test.
+
+    Parameters
+    ----------
+    starting_torque, running_torque : [N·m], > 0
+
+    Returns
+    -------
+    ks [-], ≥ 1 expected (a ratio below 1 is accepted: some greases shear-thin at start)
+
+    >>> round(starting_ratio(0.099, 0.050), 3)
+    1.98
+    """
+    s = check_positive("starting_torque", starting_torque, "N·m")
+    r = check_positive("running_torque", running_torque, "N·m")
+    return s / r
+
+
+@dataclass(frozen=True)
+class GreaseTorqueTerm:
+    """A calibrated grease torque term (see the module docstring for the law and its limits).
+
+    Attributes
+    ----------
+    f0 : Palmgren factor [-], calibrated
+    starting_ratio : ks = M_start/M_run [-], calibrated
+    reference_speed : the test's speed [rad/s], at which ks was measured
+    provenance : ((field, source), ...)
+    """
+
+    f0: float
+    starting_ratio: float
+    reference_speed: float
+    provenance: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self):
+        check_positive("f0", self.f0)
+        check_range("starting_ratio", self.starting_ratio, 0.1, 1000.0)
+        check_positive("reference_speed", self.reference_speed, "rad/s")
+
+    def running(self, kinematic_viscosity, speed, mean_diameter):
+        """Running torque of one grease-packed bearing [N·m] at base-oil viscosity ν [m²/s],
+        speed ω [rad/s] (sign ignored) and mean diameter dm [m]: Palmgren's M0 with f0.
+
+        >>> t = GreaseTorqueTerm(f0=45.48, starting_ratio=1.98, reference_speed=0.10472)
+        >>> round(t.running(5000e-6, 0.10472, 0.0335) * 1e3, 1)  # mN·m
+        50.0
+        """
+        return palmgren_viscous_torque(kinematic_viscosity, speed, mean_diameter, self.f0)
+
+    def starting(self, kinematic_viscosity, mean_diameter):
+        """Starting torque [N·m] of one grease-packed bearing: ks times the running torque at
+        the test's speed, at base-oil viscosity ν [m²/s] and mean diameter dm [m].
+
+        >>> t = GreaseTorqueTerm(f0=45.48, starting_ratio=1.98, reference_speed=0.10472)
+        >>> round(t.starting(5000e-6, 0.0335) * 1e3, 1)  # mN·m
+        99.0
+        """
+        return self.starting_ratio * self.running(
+            kinematic_viscosity, self.reference_speed, mean_diameter
+        )
+
+
+def calibrate_grease_term(
+    starting_torque, running_torque, kinematic_viscosity, speed, mean_diameter, provenance=()
+) -> GreaseTorqueTerm:
+    """The :class:`GreaseTorqueTerm` calibrated on one datasheet point: f0 on the running
+    torque (:func:`grease_factor`), ks on the starting/running ratio (:func:`starting_ratio`).
+
+    Parameters
+    ----------
+    starting_torque, running_torque : datasheet torques [N·m]
+    kinematic_viscosity : base-oil ν [m²/s] at the test temperature
+    speed : test speed [rad/s]
+    mean_diameter : test bearing dm [m]
+    provenance : ((field, source), ...) to carry along
+
+    Returns
+    -------
+    :class:`GreaseTorqueTerm`
+
+    >>> w = 2 * 3.141592653589793 / 60
+    >>> t = calibrate_grease_term(0.099, 0.050, 5000e-6, w, 0.0335)
+    >>> round(t.f0, 2), round(t.starting_ratio, 2)
+    (45.48, 1.98)
+    """
+    check_finite("speed", speed, "rad/s")
+    return GreaseTorqueTerm(
+        f0=grease_factor(running_torque, kinematic_viscosity, speed, mean_diameter),
+        starting_ratio=starting_ratio(starting_torque, running_torque),
+        reference_speed=abs(speed),
+        provenance=tuple(provenance),
+    )
+
+
+@dataclass(frozen=True)
+class TorqueTest:
+    """A grease low-temperature torque test standard (``data/grease_torques.toml``).
+
+    Attributes
+    ----------
+    key, name : e.g. "astm_d1478"
+    bore, outer_diameter : test bearing d, D [m]
+    speed : test speed [rad/s]
+    radial_load : load on the test bearing [N] (from the housing mass)
+    provenance : ((field, source), ...)
+    """
+
+    key: str
+    name: str
+    bore: float
+    outer_diameter: float
+    speed: float
+    radial_load: float
+    provenance: tuple[tuple[str, str], ...] = ()
+
+    @property
+    def mean_diameter(self) -> float:
+        """dm = (d + D)/2 [m]."""
+        return 0.5 * (self.bore + self.outer_diameter)
+
+    @property
+    def speed_rpm(self) -> float:
+        return self.speed / RPM
+
+    def source(self, field: str) -> str:
+        return dict(self.provenance).get(field, "")
+
+
+@dataclass(frozen=True)
+class GreaseTorquePoint:
+    """One published low-temperature torque of a grease (``data/grease_torques.toml``).
+
+    Attributes
+    ----------
+    lubricant : lubricant key (e.g. "molykote_g1074")
+    test : test key (e.g. "jis_k2220")
+    temperature : [K]
+    starting_torque, running_torque : [N·m]
+    provenance : ((field, source), ...)
+    """
+
+    lubricant: str
+    test: str
+    temperature: float
+    starting_torque: float
+    running_torque: float
+    provenance: tuple[tuple[str, str], ...] = ()
+
+    def source(self, field: str) -> str:
+        return dict(self.provenance).get(field, "")
+
+
+def _entry_quantities(entry: dict, fields) -> tuple[dict, list]:
+    from .catalog import quantity
+
+    values, prov = {}, []
+    for field in fields:
+        values[field], src = quantity(entry[field], field)
+        prov.append((field, src))
+    return values, prov
+
+
+def torque_test(key: str) -> TorqueTest:
+    """The :class:`TorqueTest` ``key`` from ``data/grease_torques.toml`` (``[tests.KEY]``).
+
+    Parameters
+    ----------
+    key : "astm_d1478" or "jis_k2220"
+
+    Returns
+    -------
+    :class:`TorqueTest` (SI)
+
+    >>> round(torque_test("astm_d1478").mean_diameter * 1e3, 1)
+    33.5
+    """
+    from .catalog import _table
+
+    tests = _table("grease_torques")["tests"]
+    if key not in tests:
+        raise ValueError(f"torque test key = {key!r} is not one of {sorted(tests)}")
+    entry = tests[key]
+    fields = ("bore", "outer_diameter", "speed", "housing_mass")
+    v, prov = _entry_quantities(entry, fields)
+    load = v.pop("housing_mass") * 9.80665
+    prov.append(("radial_load", "derived: housing mass × g; " + dict(prov)["housing_mass"]))
+    return TorqueTest(
+        key=key,
+        name=entry["name"],
+        bore=v["bore"],
+        outer_diameter=v["outer_diameter"],
+        speed=v["speed"],
+        radial_load=load,
+        provenance=tuple(prov),
+    )
+
+
+def grease_torque_points(lubricant: str) -> list[GreaseTorquePoint]:
+    """Published low-temperature torques of ``lubricant`` (``data/grease_torques.toml``).
+
+    Parameters
+    ----------
+    lubricant : lubricant key
+
+    Returns
+    -------
+    list of :class:`GreaseTorquePoint` (SI), possibly empty
+
+    >>> [round(p.running_torque * 1e3, 1) for p in grease_torque_points("molykote_g1074")]
+    [50.0]
+    """
+    from .catalog import _table
+
+    entry = _table("grease_torques").get("greases", {}).get(lubricant, {})
+    out = []
+    for pt in entry.get("points", []):
+        fields = ("temperature", "starting_torque", "running_torque")
+        v, prov = _entry_quantities(pt, fields)
+        out.append(
+            GreaseTorquePoint(lubricant=lubricant, test=pt["test"], provenance=tuple(prov), **v)
+        )
+    return out
+
+
+def base_oil_viscosity(lubricant: str):
+    """The base oil's :class:`viscosity.WaltherViscosity` of ``lubricant`` from its ν40 and
+    ν100 in ``data/grease_torques.toml`` (ASTM D341 two-point fit).
+
+    Parameters
+    ----------
+    lubricant : lubricant key
+
+    Returns
+    -------
+    :class:`viscosity.WaltherViscosity`
+
+    >>> nu = base_oil_viscosity("molykote_g1074")
+    >>> round(float(nu.kinematic_viscosity(313.15)) * 1e6, 3)   # 53 mm²/s at 40 °C
+    53.0
+    """
+    from .catalog import _table
+    from .viscosity import walther_from_two_points
+
+    entry = _table("grease_torques").get("greases", {}).get(lubricant)
+    if entry is None or "base_oil_nu40" not in entry:
+        raise ValueError(f"lubricant = {lubricant!r} has no base-oil viscosities in grease_torques")
+    v = _entry_quantities(entry, ("base_oil_nu40", "base_oil_nu100"))[0]
+    return walther_from_two_points(
+        313.15, v["base_oil_nu40"], 373.15, v["base_oil_nu100"], key=lubricant, name=entry["name"]
+    )
