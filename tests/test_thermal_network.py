@@ -368,7 +368,7 @@ def test_fmu_vacuum_switch_removes_convection(fmus):
         ambient_temperature=253.15, sink_temperature=253.15
     )
     vac = Fmu(fmus["ThermalNetwork"], "vac").init(
-        ambient_temperature=253.15, sink_temperature=253.15, vacuum=True
+        ambient_temperature=253.15, sink_temperature=253.15, environment="vacuum"
     )
     t = 0.0
     for _ in range(30):

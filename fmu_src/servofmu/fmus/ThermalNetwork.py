@@ -7,15 +7,14 @@ of a climatic chamber (preset ``yu2017_gimbal_chamber``); the preset ``ning_spac
 any mounting give their values through :func:`thermal_network.preset` /
 :func:`thermal_network.mechanism_parameters` and ``ThermalParameters.as_dict()``.
 
-The Boolean ``vacuum`` stands for the environment choice air (false) / vacuum (true) until the
-FMUs get FMI Enumerations.
+The choice ``environment`` (air / vacuum) removes convection and the gas gap in vacuum.
 """
 
 from __future__ import annotations
 
 import math
 
-from servofmu.fmus.slave import ServoSlave, Var
+from servofmu.fmus.slave import Item, ServoSlave, Var
 from servofmu.physics import thermal_network as tn
 
 _P = tn.preset("yu2017_gimbal_chamber")
@@ -61,9 +60,20 @@ _PARAMETERS = {
         1.0,
     ),
 }
-_VACUUM = (
-    "Environment: true = vacuum (no convection, no gas gap), false = air (stands for an "
-    "air/vacuum choice)"
+_ENVIRONMENT = {
+    "air": "chamber air: convection and the gas gap conduct",
+    "vacuum": "thermal vacuum: no convection, no gas in the gap",
+}
+# the outputs right after initialization: the steady state of the inputs and every network
+# parameter, or initial_temperature (start_steady); the radiation tolerance plays no part
+_INITIAL = (
+    "ambient_temperature",
+    "sink_temperature",
+    "power_loss",
+    *_PARAMETERS,
+    "environment",
+    "start_steady",
+    "initial_temperature",
 )
 _STEADY = (
     "true: start at the steady state of the inputs at initialization; false: every part at "
@@ -120,14 +130,19 @@ class ThermalNetwork(ServoSlave):
             min=0.0,
             max=1.0e4,
         ),
-        *(_real(n, "output", d, unit="K", display_unit="degC") for n, d in _OUTPUTS),
+        *(
+            _real(n, "output", d, unit="K", display_unit="degC", initial_depends=_INITIAL)
+            for n, d in _OUTPUTS
+        ),
         *(_parameter(field) for field in _PARAMETERS),
         Var(
-            name="vacuum",
-            type="Boolean",
+            name="environment",
+            type="Enumeration",
             causality="parameter",
-            description=_VACUUM,
-            start=_P.vacuum,
+            description="Air (convection, gas gap) or vacuum",
+            start=tn.ENVIRONMENTS.index(_P.environment) + 1,
+            items=tuple(Item(e, _ENVIRONMENT[e]) for e in tn.ENVIRONMENTS),
+            declared_type="ThermalEnvironment",
             source="paper: Yu's climatic chamber (air)",
         ),
         Var(
@@ -170,7 +185,8 @@ class ThermalNetwork(ServoSlave):
         self.started = False  # the initial state has been set
 
     def configure(self):
-        self.params = tn.ThermalParameters(**{f: getattr(self, f) for f in tn.PARAMETER_FIELDS})
+        values = {f: getattr(self, f) for f in _PARAMETERS}
+        self.params = tn.ThermalParameters(**values, environment=self.item("environment"))
         self.network = tn.network(self.params)
 
     def initialise(self):

@@ -84,7 +84,7 @@ from scipy.optimize import root
 from scipy.special import ellipk
 
 from . import hertz
-from ._checks import check_finite, check_nonnegative, check_positive, check_range
+from ._checks import check_choice, check_finite, check_nonnegative, check_positive, check_range
 from .fits import fit_pressure
 from .materials import Material, reduced_compliance
 
@@ -586,7 +586,8 @@ class ThermalParameters:
     housing_radiating_area, shaft_radiating_area : surfaces seeing the sink [m²]
     exchange_area : gray-body exchange area 𝓔 shaft ↔ housing [m²]
     inner_ring_heat_fraction : share of the power loss entering the inner rings [-]
-    vacuum : True removes convection and the gas gap
+    environment : "air" or "vacuum" (:data:`ENVIRONMENTS`; vacuum removes convection and the
+        gas gap)
     provenance : ((field, source), ...)
     """
 
@@ -608,10 +609,11 @@ class ThermalParameters:
     shaft_radiating_area: float = 0.0
     exchange_area: float = 0.0
     inner_ring_heat_fraction: float = 0.5
-    vacuum: bool = False
+    environment: str = "air"
     provenance: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self):
+        check_choice("environment", self.environment, ENVIRONMENTS)
         for field in POSITIVE_FIELDS:
             check_positive(field, getattr(self, field), UNITS[field])
         for field in NONNEGATIVE_FIELDS:
@@ -623,12 +625,19 @@ class ThermalParameters:
         """Provenance of one field ("" when not recorded)."""
         return dict(self.provenance).get(field, "")
 
+    @property
+    def vacuum(self) -> bool:
+        """Whether the mechanism is in vacuum (no convection, no gas gap)."""
+        return self.environment == "vacuum"
+
     def as_dict(self) -> dict:
         """{FMU parameter name: value} (the provenance left out)."""
         return {f: getattr(self, f) for f in PARAMETER_FIELDS}
 
 
 PARAMETER_FIELDS = tuple(f.name for f in dataclasses.fields(ThermalParameters))[:-1]
+#: The environments of a mechanism: in air (convection, gas gap) or in vacuum.
+ENVIRONMENTS = ("air", "vacuum")
 UNITS = {
     **dict.fromkeys(PARAMETER_FIELDS[:4], "J/K"),
     **dict.fromkeys(PARAMETER_FIELDS[4:9], "W/K"),
@@ -759,7 +768,11 @@ def mechanism_parameters(
     )
     values["inner_ring_heat_fraction"] = inner_ring_heat_fraction
     prov["inner_ring_heat_fraction"] = notes.get("inner_ring_heat_fraction", "given")
-    return ThermalParameters(**values, vacuum=bool(vacuum), provenance=tuple(sorted(prov.items())))
+    return ThermalParameters(
+        **values,
+        environment="vacuum" if vacuum else "air",
+        provenance=tuple(sorted(prov.items())),
+    )
 
 
 def parameters_for_pair(pair, *, vacuum: bool, **options) -> ThermalParameters:
