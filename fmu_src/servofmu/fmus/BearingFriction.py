@@ -10,12 +10,22 @@ cast-aluminium frame, 45-steel shaft) with the coefficients calibrated in
 
 from __future__ import annotations
 
-from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter
+from servofmu.fmus.slave import Item, ServoSlave, Var, output, real_input, spec_parameter
 from servofmu.physics.bearing import BearingModel
 from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in
 
-_ALL = ("temperature", "speed", "axial_load", "radial_load")
-_LOADS = ("temperature", "axial_load", "radial_load")
+#: How the temperature inputs are read (parameter ``temperature_mode``): every part at
+#: ``temperature``; the rings at their seats' temperatures; or each part its own input.
+TEMPERATURE_MODES = {
+    "uniform": "every part at temperature (Yu's and Ning's soaked chambers)",
+    "housing_shaft": "housing and outer ring at housing_temperature, shaft and inner ring at "
+    "shaft_temperature",
+    "parts": "housing, shaft, outer and inner ring at their own inputs (a thermal network)",
+}
+_PARTS = ("housing", "shaft", "outer_ring", "inner_ring")
+_TEMPS = ("temperature", *(f"{p}_temperature" for p in _PARTS))
+_ALL = (*_TEMPS, "speed", "axial_load", "radial_load")
+_LOADS = (*_TEMPS, "axial_load", "radial_load")
 _STATE = ("fit", "loop")  # parameter groups that fix the thermal and load state
 _TORQUE = (*_STATE, "lubrication", "hysteresis", "sliding", "viscous")  # Coulomb + viscous
 #: What BearingModel.speed_outputs returns, in its order: the outputs that move with speed.
@@ -33,7 +43,7 @@ def _out(name, description, unit, display=None, *, depends=_LOADS, groups=_STATE
         display,
         type=kw.pop("kind", "Real"),
         depends=depends,
-        initial_depends=depends + parameters_in(*groups),
+        initial_depends=(*depends, "temperature_mode", *parameters_in(*groups)),
         field=kw.pop("field", name),
         **kw,
     )
@@ -69,12 +79,26 @@ class BearingFriction(ServoSlave):
     VARIABLES = (
         real_input(
             "temperature",
-            "Temperature of bearings, frame and shaft",
+            "Temperature of bearings, frame and shaft (temperature_mode uniform)",
             293.15,
             "K",
             "degC",
             173.15,
             473.15,
+        ),
+        *(
+            real_input(
+                f"{part}_temperature",
+                f"Temperature of the {part.replace('_', ' ')} (temperature_mode parts; "
+                + ("housing_shaft too" if part in ("housing", "shaft") else "else unused")
+                + ")",
+                293.15,
+                "K",
+                "degC",
+                173.15,
+                473.15,
+            )
+            for part in _PARTS
         ),
         real_input(
             "speed",
@@ -152,7 +176,7 @@ class BearingFriction(ServoSlave):
             "Palmgren viscous torque (Yu eq 8)",
             "N.m",
             "N.mm",
-            depends=("temperature", "speed"),
+            depends=(*_TEMPS, "speed"),
             groups=("fit", "lubrication", "lubricant", "viscous"),
         ),
         _out("preload", "Axial force in the preload loop", "N"),
@@ -162,7 +186,7 @@ class BearingFriction(ServoSlave):
             "Operating radial (diametral) clearance",
             "m",
             "um",
-            depends=("temperature",),
+            depends=_TEMPS,
             groups=("fit",),
         ),
         _out(
@@ -170,7 +194,7 @@ class BearingFriction(ServoSlave):
             "Kinematic viscosity of the lubricant (0 for a dry film)",
             "m2/s",
             "cSt",
-            depends=("temperature",),
+            depends=_TEMPS,
             groups=("lubrication", "lubricant"),
         ),
         _out("axial_stiffness", "Axial stiffness of the shaft in the pair", "N/m", "N/um"),
@@ -187,7 +211,7 @@ class BearingFriction(ServoSlave):
             "Diametral interference of outer ring and bore at temperature",
             "m",
             "um",
-            depends=("temperature",),
+            depends=_TEMPS,
             groups=("fit",),
             field="outer_interference",
         ),
@@ -196,7 +220,7 @@ class BearingFriction(ServoSlave):
             "Diametral interference of shaft and inner ring at temperature",
             "m",
             "um",
-            depends=("temperature",),
+            depends=_TEMPS,
             groups=("fit",),
             field="inner_interference",
         ),
@@ -209,6 +233,16 @@ class BearingFriction(ServoSlave):
             "locked", "No operating clearance left (balls pinched radially) or no load equilibrium"
         ),
         _flag("unloaded", "Preload lost: a bearing of the pair carries no axial load (axial play)"),
+        Var(
+            name="temperature_mode",
+            type="Enumeration",
+            causality="parameter",
+            description="Which temperature inputs the parts follow",
+            start=1,
+            items=tuple(Item(k, v) for k, v in TEMPERATURE_MODES.items()),
+            declared_type="TemperatureMode",
+            source="assumed: uniform, as Yu 2017 and Ning measured after soaking",
+        ),
         *(spec_parameter(p) for p in PARAMETERS),
     )
     _SPEED_OUTPUTS = _outputs_of(_SPEED_FIELDS, VARIABLES)  # those that move with speed alone
@@ -218,7 +252,7 @@ class BearingFriction(ServoSlave):
         for p in PARAMETERS:
             if p.choices:
                 values[p.name] = p.key(values[p.name])
-        self._point = None  # (temperature, axial_load, radial_load) of the last evaluate
+        self._point = None  # (temperatures, axial_load, radial_load) of the last evaluate
         self.model = BearingModel(pair_from_parameters(values))
 
     def hidden_state(self):
@@ -233,15 +267,30 @@ class BearingFriction(ServoSlave):
         if self._configured:
             self.model.restore(state.get("continuation"))
 
+    def _temperatures(self):
+        """The parts' temperatures (housing, shaft, outer ring, inner ring) [K] per mode, or the
+        uniform temperature."""
+        mode = self.temperature_mode
+        if mode == 1:
+            return self.temperature
+        if mode == 2:
+            h, s = self.housing_temperature, self.shaft_temperature
+            return (h, s, h, s)
+        return (
+            self.housing_temperature,
+            self.shaft_temperature,
+            self.outer_ring_temperature,
+            self.inner_ring_temperature,
+        )
+
     def compute(self):
-        point = (self.temperature, self.axial_load, self.radial_load)
+        temps = self._temperatures()
+        point = (temps, self.axial_load, self.radial_load)
         if point == self._point:  # only the speed changed: the speed terms alone
             for name, value in zip(
                 self._SPEED_OUTPUTS, self.model.speed_outputs(self.speed), strict=True
             ):
                 setattr(self, name, value)
             return
-        self.copy_outputs(
-            self.model.evaluate(self.temperature, self.speed, self.axial_load, self.radial_load)
-        )
+        self.copy_outputs(self.model.evaluate(temps, self.speed, self.axial_load, self.radial_load))
         self._point = point
