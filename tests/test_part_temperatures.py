@@ -1,4 +1,5 @@
-"""BearingFriction's part-temperature inputs (temperature_mode) against the library."""
+"""BearingFriction's part-temperature inputs (temperature_mode) against the library (a fresh
+library model solves exactly, the FMU by continuation from its initial state: equal to 1e-9)."""
 
 import pytest
 from fmu_helpers import Fmu
@@ -72,7 +73,7 @@ def test_parts_mode_equals_the_library_at_the_parts_temperatures(fmus, library):
             "outer_fit_interference": "outer_interference",
             "inner_fit_interference": "inner_interference",
         }.get(name, name)
-        assert fmu.get(name) == pytest.approx(getattr(lib, field), rel=1e-12), name
+        assert fmu.get(name) == pytest.approx(getattr(lib, field), rel=1e-9), name
     fmu.close()
 
 
@@ -87,8 +88,8 @@ def test_housing_shaft_mode_puts_the_rings_at_their_seats(fmus, library):
         speed=0.17,
     )
     lib = library.evaluate(PartTemperatures(250.0, 270.0, 250.0, 270.0), 0.17)
-    assert fmu.get("preload") == pytest.approx(lib.preload, rel=1e-12)
-    assert fmu.get("running_torque") == pytest.approx(lib.running_torque, rel=1e-12)
+    assert fmu.get("preload") == pytest.approx(lib.preload, rel=1e-9)
+    assert fmu.get("running_torque") == pytest.approx(lib.running_torque, rel=1e-9)
     fmu.close()
 
 
