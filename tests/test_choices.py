@@ -36,9 +36,11 @@ def _items(fmu_path) -> dict[str, dict[str, int]]:
 def test_every_choice_has_its_catalogue_items_in_file_order(fmus):
     items = _items(fmus["BearingFriction"])
     choices = {p.name for p in PARAMETERS if p.choices}
-    assert set(items) == choices == {
+    assert choices == {
         "mounting", "bearing", "lubrication", "lubricant", "frame_material", "shaft_material"
     }  # fmt: skip
+    assert set(items) == choices | {"temperature_mode"}  # the FMU's own choice of inputs
+    assert list(items["temperature_mode"]) == ["uniform", "housing_shaft", "parts"]
     assert list(items["lubrication"]) == ["grease", "solid"]
     assert list(items["bearing"])[:2] == ["from_mounting", "71803"]  # "" = the mounting's own
     assert items["mounting"]["ning_space_shaft"] == parameter("mounting").item("ning_space_shaft")

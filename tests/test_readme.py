@@ -18,7 +18,12 @@ README = Path(__file__).resolve().parents[1] / "README.md"
 def examples():
     """Each Python block of the README run in its own namespace, keyed by a name of its own."""
     blocks = re.findall(r"```python\n(.*?)```", README.read_text(), flags=re.S)
-    keys = {"BearingModel(pair)": "bearing", "stiffness_breakdown(": "actuator", "run(": "harness"}
+    keys = {
+        "BearingModel(pair)": "bearing",
+        "stiffness_breakdown(": "actuator",
+        "run(": "harness",
+        "tn.network(": "thermal",
+    }
     out = {}
     for code in blocks:
         namespace, printed = {}, io.StringIO()
