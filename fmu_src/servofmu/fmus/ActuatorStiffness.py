@@ -1,7 +1,12 @@
 """ActuatorStiffness FMU: stiffness of gear train → ball screw → crank-slider linkage → output
 shaft, with the screw's support bearings (Liu 2014 and this project's extension), at the
 output shaft for the current angle, hinge moment and temperature
-(:class:`servofmu.physics.actuator.ActuatorModel`)."""
+(:class:`servofmu.physics.actuator.ActuatorModel`).
+
+The angle comes from the ``angle`` input (output shaft) or, with the parameter
+``motor_side_inputs``, from ``motor_angle`` (motor shaft) through the exact inverse of the
+crank-slider (:func:`servofmu.physics.actuator.output_angle`): a system can then connect its
+motor to the actuator directly, without a LinearTransformation, which can only be linear."""
 
 from __future__ import annotations
 
@@ -10,10 +15,12 @@ import dataclasses
 from servofmu.fmus.slave import ServoSlave, Var
 from servofmu.physics import catalog
 from servofmu.physics.actuator import ActuatorModel
+from servofmu.physics.actuator import output_angle as mechanism_output_angle
 from servofmu.physics.bearing import BearingPair, with_mounting
 
 _A = catalog.actuator("liu2014_ema")
-_LOAD = ("temperature", "load_torque", "angle")
+_ANGLE = ("angle", "motor_angle")  # the position input: output shaft, or motor shaft
+_LOAD = ("temperature", "load_torque", *_ANGLE)
 
 
 def _p(name, description, unit, display, lo, hi):
@@ -93,35 +100,29 @@ class ActuatorStiffness(ServoSlave):
             1.5,
         ),
         _out("stiffness", "Stiffness of the whole actuator at the output shaft (secant M/Δθ)"),
-        _out(
-            "gear_stiffness", "Gear train, reflected to the output (Liu eq 8)", depends=("angle",)
-        ),
-        _out(
-            "screw_stiffness", "Ball screw, reflected to the output (Liu eq 8)", depends=("angle",)
-        ),
-        _out("linkage_stiffness", "Crank-slider linkage (Liu eq 9-20)", depends=("angle",)),
-        _out("housing_stiffness", "Housing, reflected to the output", depends=("angle",)),
+        _out("gear_stiffness", "Gear train, reflected to the output (Liu eq 8)", depends=_ANGLE),
+        _out("screw_stiffness", "Ball screw, reflected to the output (Liu eq 8)", depends=_ANGLE),
+        _out("linkage_stiffness", "Crank-slider linkage (Liu eq 9-20)", depends=_ANGLE),
+        _out("housing_stiffness", "Housing, reflected to the output", depends=_ANGLE),
         _out(
             "support_bearing_stiffness",
             "Support bearings and seat, reflected to the output (inf when none)",
         ),
-        _out(
-            "reduction_ratio", "Motor radians per output radian (Liu eq 4)", "1", None, ("angle",)
-        ),
+        _out("reduction_ratio", "Motor radians per output radian (Liu eq 4)", "1", None, _ANGLE),
         _out("deflection", "Elastic deflection of the output under load_torque", "rad", "deg"),
         _out(
             "screw_force",
             "Axial force in the ball screw (Liu eq 11)",
             "N",
             None,
-            ("load_torque", "angle"),
+            ("load_torque", *_ANGLE),
         ),
         _out(
             "motor_load_torque",
             "Hinge moment reflected to the motor shaft, load_torque/reduction_ratio",
             "N.m",
             "N.mm",
-            ("load_torque", "angle"),
+            ("load_torque", *_ANGLE),
         ),
         _p("gear_ratio", "Gear-train ratio i_g", "1", None, 1e-3, 1e4),
         _p("screw_lead", "Ball-screw lead p (per revolution)", "m", "mm", 1e-5, 1.0),
@@ -228,6 +229,60 @@ class ActuatorStiffness(ServoSlave):
             1e6,
             source=catalog.mounting("liu2014_screw_support").source("assembly_preload"),
         ),
+        # the motor side (issue 15): an SSP connection can only scale linearly, so a system
+        # that drives the actuator from its motor gives it the motor's angle and speed, and
+        # the exact crank-slider reduction is applied here
+        Var(
+            name="motor_side_inputs",
+            type="Boolean",
+            causality="parameter",
+            description=(
+                "true: the mechanism's position is motor_angle/motor_speed (motor shaft) "
+                "through the exact crank-slider reduction; false: angle/speed (output shaft)"
+            ),
+            start=False,
+            source="assumed: false, the output-shaft inputs",
+        ),
+        Var(
+            name="motor_angle",
+            type="Real",
+            causality="input",
+            description="Motor-shaft angle from the neutral position (with motor_side_inputs)",
+            start=0.0,
+            unit="rad",
+            display_unit="deg",
+            min=-1.0e4,
+            max=1.0e4,
+        ),
+        Var(
+            name="motor_speed",
+            type="Real",
+            causality="input",
+            description="Motor-shaft speed (with motor_side_inputs)",
+            start=0.0,
+            unit="rad/s",
+            display_unit="rpm",
+            min=-1.0e5,
+            max=1.0e5,
+        ),
+        Var(
+            name="output_angle",
+            type="Real",
+            causality="output",
+            description="Output-shaft angle of the rigid mechanism (angle, or from motor_angle)",
+            unit="rad",
+            display_unit="deg",
+            depends=_ANGLE,
+        ),
+        Var(
+            name="output_speed",
+            type="Real",
+            causality="output",
+            description="Output-shaft speed (speed, or motor_speed over the reduction ratio)",
+            unit="rad/s",
+            display_unit="deg/s",
+            depends=("speed", "motor_speed", *_ANGLE),
+        ),
     )
 
     def configure(self):
@@ -247,7 +302,8 @@ class ActuatorStiffness(ServoSlave):
         self.model = ActuatorModel(act, support)
 
     def compute(self):
-        b = self.model.evaluate(self.angle, self.load_torque, self.temperature)
+        angle = self._mechanism_angle()
+        b = self.model.evaluate(angle, self.load_torque, self.temperature)
         self.stiffness = b.total
         self.gear_stiffness = b.gear
         self.screw_stiffness = b.screw
@@ -258,3 +314,14 @@ class ActuatorStiffness(ServoSlave):
         self.deflection = b.deflection
         self.screw_force = b.screw_force
         self.motor_load_torque = self.load_torque / b.reduction_ratio
+        self.output_angle = angle
+        self.output_speed = (
+            self.motor_speed / b.reduction_ratio if self.motor_side_inputs else self.speed
+        )
+
+    def _mechanism_angle(self) -> float:
+        """The output angle δ [rad]: the angle input, or the motor angle through the exact
+        inverse of the crank-slider (ValueError naming motor_angle beyond a dead centre)."""
+        if self.motor_side_inputs:
+            return float(mechanism_output_angle(self.model.act, self.motor_angle))
+        return self.angle
