@@ -40,7 +40,7 @@ def ecos_unavailable() -> str:
 
 
 def run_ecos(
-    ssp, record, stop: float, step: float, parameter_set: str = PARAMETER_SET
+    ssp, record, stop: float, step: float, parameter_set: str | None = PARAMETER_SET
 ) -> dict[str, np.ndarray]:
     """Simulate ``ssp`` (archive or folder) in ecos from 0 to ``stop`` [s] at the fixed
     ``step`` [s], applying the parameter sets named ``parameter_set``; returns

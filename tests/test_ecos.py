@@ -79,3 +79,22 @@ def test_ecos_runs_every_system_like_the_harness_jacobi(fmus, name):
             gap = np.max(np.abs(ecos[v] - jacobi[v]))
         assert gap <= 1e-9 * scale, f"{name}: {v} differs by {gap:g} (scale {scale:g})"
     assert moved, f"{name}: nothing moved, the comparison would be empty"
+
+
+def test_ecos_applies_only_the_named_parameter_sets(fmus):
+    """Why every .ssv carries one name: ecos applies the sets named at init, and none without
+    a name (the controller then runs with the FMU's own default gain)."""
+    archive = fmus["BearingFriction"].parent / "seeker_gimbal.ssp"
+    system = load_system(archive)
+    try:
+        comp = system.components["controller"]
+        bound = comp.parameters["kp"][1]
+        default = comp.variables["kp"].start
+    finally:
+        system.close()
+    assert float(bound) != float(default)
+    h = 1e-3
+    named = run_ecos(archive, ["controller.kp"], h, h)
+    unnamed = run_ecos(archive, ["controller.kp"], h, h, parameter_set=None)
+    assert named["controller.kp"][-1] == float(bound)
+    assert unnamed["controller.kp"][-1] == float(default)
