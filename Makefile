@@ -22,7 +22,7 @@ run: $(STAMP)
 ## system library of a test engine: ecos (ecospy) needs Debian's libtbb12. Installed with
 ## apt-get when missing and run as root (CI); otherwise the ecos tests are skipped and say why.
 system-deps:
-	@if ldconfig -p 2>/dev/null | grep -q 'libtbb\.so\.12 '; then :; \
+	@if { ldconfig -p || /sbin/ldconfig -p; } 2>/dev/null | grep -q 'libtbb\.so\.12 '; then :; \
 	elif [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
 	  echo "installing libtbb12 (needed by ecos, a co-simulation engine of the tests)"; \
 	  (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends libtbb12 >/dev/null) \
