@@ -1,13 +1,29 @@
-"""``documentation/index.html`` of each FMU: what it computes, its equations (the docstrings of
-the physics modules it uses) and every variable with unit, start, range and provenance."""
+"""``documentation/`` of each FMU, for a user of any FMI tool: ``index.html`` (what the FMU
+computes, its equations, every variable with unit, start, range and provenance, the host
+requirements) and ``characteristic.png``, the FMU's characteristic curve computed by the
+FMU's own Python code at build time.
+
+The equations are the docstrings of the FMU module and of the physics modules it names
+(``PHYSICS``), rendered from reStructuredText to HTML with docutils. Nothing here is part of
+the servofmu package that the FMU carries, so documentation changes leave the package hash
+(and the built FMU's identity) alone.
+"""
 
 from __future__ import annotations
 
+import functools
 import html
 import importlib
+import math
+import platform
+from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 import servofmu
+
+IMAGE = "characteristic.png"
 
 
 def slave_class(name: str):
@@ -15,72 +31,355 @@ def slave_class(name: str):
     return getattr(importlib.import_module(f"servofmu.fmus.{name}"), name)
 
 
-def render(name: str) -> str:
-    """The HTML page of FMU ``name``."""
-    cls = slave_class(name)
-    module = importlib.import_module(cls.__module__)
+# ----------------------------------------------------------------------------- driving
+class _Slave:
+    """One instance of an FMU's slave class driven in this process through pythonfmu's
+    Python API (set/get by value reference, initialization, fmi2DoStep): the FMU's own code,
+    without the binary."""
+
+    def __init__(self, name: str, **inputs):
+        self.slave = slave_class(name)(instance_name="documentation")
+        self.vr = {v.name: ref for ref, v in self.slave.vars.items()}
+        self.slave.setup_experiment(0.0, None, None)
+        self.slave.enter_initialization_mode()
+        self.set(**inputs)
+        self.slave.exit_initialization_mode()
+
+    def set(self, **values):
+        if values:
+            self.slave.set_real([self.vr[k] for k in values], [float(v) for v in values.values()])
+
+    def get(self, *names) -> list[float]:
+        return self.slave.get_real([self.vr[n] for n in names])
+
+    def step(self, t: float, h: float):
+        if not self.slave.do_step(t, h):
+            raise RuntimeError(f"{type(self.slave).__name__}: step at t = {t} s refused")
+
+
+@dataclass(frozen=True)
+class Curve:
+    """A characteristic curve: x values and labelled series (all in display units)."""
+
+    title: str
+    xlabel: str
+    ylabel: str
+    x: np.ndarray
+    series: tuple[tuple[str, np.ndarray], ...]
+    caption: str
+    right: tuple[str, str, np.ndarray] | None = None  # (axis label, series label, values)
+    log_y: bool = False
+
+
+def _bearing_curve() -> Curve:
+    """Running and breakaway torque versus temperature, −60…+80 °C, at 10 °/s."""
+    celsius = np.arange(-60.0, 80.0 + 1e-9, 2.5)
+    speed = math.radians(10.0)
+    fmu = _Slave("BearingFriction", speed=speed)
     rows = []
-    for v in cls.VARIABLES:
-        rng = "" if v.min is None and v.max is None else f"[{v.min:g}, {v.max:g}]"
-        start = "" if v.causality == "output" else html.escape(repr(v.start))
-        cells = (
-            v.name,
-            v.causality,
-            v.type,
-            v.unit or "",
-            v.display_unit or "",
-            start,
-            rng,
-            v.description,
-            v.source,
-        )
-        rows.append("<tr>" + "".join(f"<td>{html.escape(str(c))}</td>" for c in cells) + "</tr>")
-    physics = []
-    for mod_name in cls.PHYSICS:
-        mod = importlib.import_module(mod_name)
-        physics.append(f"<h3>{mod_name}</h3>\n<pre>{html.escape(mod.__doc__ or '')}</pre>")
-    head = "".join(
-        f"<th>{h}</th>"
-        for h in (
-            "name",
-            "causality",
-            "type",
-            "unit",
-            "display",
-            "start",
-            "range",
-            "description",
-            "provenance",
+    for c in celsius:
+        fmu.set(temperature=c + 273.15)
+        rows.append(fmu.get("running_torque", "breakaway_torque"))
+    torque = 1e3 * np.array(rows)  # N·m → N·mm
+    return Curve(
+        "BearingFriction: friction torque versus temperature",
+        "temperature [°C]",
+        "torque [N·mm]",
+        celsius,
+        (("running torque at 10 °/s", torque[:, 0]), ("breakaway torque", torque[:, 1])),
+        "Default parameters, no external load, shaft speed 10 °/s (logarithmic torque axis). "
+        "The thermal coupling of frame, shaft and bearings changes fits and preload with "
+        "temperature; the lubricant's viscosity adds the viscous part of the running torque. "
+        "With the default mounting the preload is lost above about 36 °C (unloaded).",
+        log_y=True,
+    )
+
+
+def _actuator_curve() -> Curve:
+    """Stiffness at the output shaft versus hinge moment, at neutral and at +10°."""
+    moments = np.linspace(10.0, 400.0, 40)
+    series = []
+    for degrees in (0.0, 10.0):
+        fmu = _Slave("ActuatorStiffness", angle=math.radians(degrees))
+        k = []
+        for m in moments:
+            fmu.set(load_torque=m)
+            k.append(fmu.get("stiffness")[0])
+        series.append((f"output angle {degrees:+g}°", math.radians(1.0) * np.array(k)))
+    return Curve(
+        "ActuatorStiffness: stiffness versus hinge moment",
+        "hinge moment [N·m]",
+        "stiffness at the output shaft [N·m/°]",
+        moments,
+        tuple(series),
+        "Default parameters (Liu 2014's actuator with the support-bearing extension), 20 °C. "
+        "The Hertzian support bearings stiffen with load; every other element is linear. "
+        "The kink at 30–50 N·m is where one bearing of the preloaded support pair unloads.",
+    )
+
+
+def _motor_curve() -> Curve:
+    """Speed and current after a 1 V step from rest, no load."""
+    cls = slave_class("DCMotor")
+    p = {v.name: v.start for v in cls.VARIABLES}
+    tau = p["resistance"] * p["inertia"] / (p["torque_constant"] * p["back_emf_constant"])
+    h = tau / 100.0
+    fmu = _Slave("DCMotor", voltage=1.0)
+    t = h * np.arange(501)
+    rows = [fmu.get("speed", "current")]
+    for k in range(500):
+        fmu.step(t[k], h)
+        rows.append(fmu.get("speed", "current"))
+    speed, current = np.array(rows).T
+    return Curve(
+        "DCMotor: response to a 1 V voltage step",
+        "time [ms]",
+        "speed [rad/s]",
+        1e3 * t,
+        (("speed", speed),),
+        f"Default parameters, from rest, no load or friction; mechanical time constant "
+        f"R·J/(k_t·k_e) = {1e3 * tau:.3g} ms (the current rises with L/R, then falls as "
+        "the back-EMF builds up). The FMU integrates exactly over each step.",
+        right=("current [A]", "current", current),
+    )
+
+
+def _controller_curve() -> Curve:
+    """Command after a unit step of the reference, measurement held at 0 (open loop)."""
+    cls = slave_class("ServoController")
+    period = {v.name: v.start for v in cls.VARIABLES}["sample_period"]
+    fmu = _Slave("ServoController", reference=1.0, measurement=0.0)
+    t = period * np.arange(3001)
+    command = [fmu.get("command")[0]]
+    for k in range(3000):
+        fmu.step(t[k], period)
+        command.append(fmu.get("command")[0])
+    return Curve(
+        "ServoController: step response of the command",
+        "time [s]",
+        "command [V]",
+        t,
+        (("command", np.array(command)),),
+        "Default parameters (speed mode); the reference steps from 0 to 1 rad/s at t = 0 and "
+        "the measurement stays 0 (open loop): proportional step, integral ramp, clamped at "
+        "the output limit (anti-windup).",
+    )
+
+
+CURVES = {
+    "BearingFriction": _bearing_curve,
+    "ActuatorStiffness": _actuator_curve,
+    "DCMotor": _motor_curve,
+    "ServoController": _controller_curve,
+}
+
+
+def plot_curve(curve: Curve, path: Path) -> Path:
+    """Write ``curve`` as a PNG (labelled axes with units) to ``path``."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(6.4, 4.0), dpi=100)
+    ax = fig.add_subplot()
+    lines = [ax.plot(curve.x, y, label=label)[0] for label, y in curve.series]
+    if curve.right is not None:
+        axis_label, label, y = curve.right
+        twin = ax.twinx()
+        lines += twin.plot(curve.x, y, color="C3", label=label)
+        twin.set_ylabel(axis_label)
+    if curve.log_y:
+        ax.set_yscale("log")
+    ax.set_title(curve.title, fontsize=10)
+    ax.set_xlabel(curve.xlabel)
+    ax.set_ylabel(curve.ylabel)
+    ax.grid(True, which="both", alpha=0.3)
+    if len(lines) > 1:
+        ax.legend(handles=lines, fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, metadata={"Software": None})
+    return Path(path)
+
+
+# ----------------------------------------------------------------------------- text
+@functools.lru_cache(maxsize=1)
+def _docutils():
+    """docutils' publisher with the Sphinx cross-reference roles of the docstrings
+    (``:func:`x```…) rendered as code."""
+    from docutils import nodes
+    from docutils.core import publish_parts
+    from docutils.parsers.rst import roles
+
+    def code(name, rawtext, text, lineno, inliner, options=None, content=None):
+        label = text.split(".")[-1] if text.startswith("~") else text.lstrip(".")
+        return [nodes.literal(rawtext, label)], []
+
+    for role in ("func", "class", "mod", "meth", "data", "attr", "obj", "exc"):
+        roles.register_local_role(role, code)
+    return publish_parts
+
+
+def rst_to_html(text: str) -> str:
+    """HTML body of a reStructuredText docstring. ``|x|`` is an absolute value in the
+    docstrings, not a substitution; docutils' messages stay out of the page."""
+    publish_parts = _docutils()
+    source = (text or "").replace("|", "\\|")
+    parts = publish_parts(
+        source,
+        writer="html5",
+        settings_overrides={
+            "report_level": 5,
+            "halt_level": 5,
+            "doctitle_xform": False,
+            "initial_header_level": 4,
+            "input_encoding": "unicode",
+            "embed_stylesheet": False,
+        },
+    )
+    return parts["body"]
+
+
+def _range(v) -> str:
+    if v.min is None and v.max is None:
+        return ""
+    lo = "−∞" if v.min is None else f"{v.min:g}"
+    hi = "+∞" if v.max is None else f"{v.max:g}"
+    return f"[{lo}, {hi}]"
+
+
+def _start(v) -> str:
+    items = getattr(v, "items", None)  # an Enumeration: start is the item's number
+    if items and isinstance(v.start, int) and 0 < v.start <= len(items):
+        item = items[v.start - 1]
+        return f"{v.start} ({getattr(item, 'name', item)})"
+    if isinstance(v.start, float):
+        return f"{v.start:.10g}"
+    return "" if v.start is None else repr(v.start)
+
+
+def _table(variables, columns) -> str:
+    head = "".join(f"<th>{html.escape(c)}</th>" for c, _ in columns)
+    rows = [
+        "<tr>" + "".join(f"<td>{html.escape(str(get(v)))}</td>" for _, get in columns) + "</tr>"
+        for v in variables
+    ]
+    return f"<table><tr>{head}</tr>\n" + "\n".join(rows) + "\n</table>"
+
+
+def _variable_tables(cls) -> str:
+    by = {c: [v for v in cls.VARIABLES if v.causality == c] for c in ("input", "output")}
+    params = [v for v in cls.VARIABLES if v.causality == "parameter"]
+    unit = ("unit", lambda v: v.unit or "")
+    display = ("display unit", lambda v: v.display_unit or "")
+    name = ("name", lambda v: v.name)
+    desc = ("description", lambda v: v.description)
+    return "\n".join(
+        (
+            "<h3>Inputs</h3>",
+            _table(by["input"], (name, unit, display, ("start", _start), ("range", _range), desc)),
+            "<h3>Outputs</h3>",
+            _table(
+                by["output"],
+                (
+                    name,
+                    ("type", lambda v: v.type),
+                    unit,
+                    display,
+                    desc,
+                    ("depends directly on", lambda v: ", ".join(v.depends) or "no input"),
+                ),
+            ),
+            "<h3>Parameters</h3>",
+            _table(
+                params,
+                (
+                    name,
+                    ("type", lambda v: v.type),
+                    unit,
+                    ("start", _start),
+                    ("range", _range),
+                    desc,
+                    ("provenance", lambda v: v.source),
+                ),
+            ),
         )
     )
+
+
+def _host_requirements() -> str:
+    import numpy
+    import scipy
+
+    python = platform.python_version()
+    return f"""<h2>Host requirements</h2>
+<ul>
+<li>FMI 2.0 co-simulation, built with pythonfmu 0.7 (binaries for linux64 and win64). The FMU
+runs inside a CPython interpreter that has numpy and scipy; the servofmu package and
+pythonfmu's runtime are inside the FMU (<code>resources/</code>). Built with Python {python},
+numpy {numpy.__version__}, scipy {scipy.__version__}.</li>
+<li><b>Python hosts</b> (fmpy, libcosimpy, ecospy): the FMU uses the running interpreter and
+its site-packages; nothing to set.</li>
+<li><b>Other hosts on Linux</b> (C/C++ programs): the binary does not link libpython. Export
+<code>LD_PRELOAD=&lt;libpython3.x.so&gt;</code> and
+<code>PYTHONPATH=&lt;site-packages with numpy and scipy&gt;</code>
+(<code>servofmu host-env</code> prints both); the interpreter must be built with
+<code>--enable-shared</code>. The host may end with a normal <code>exit()</code>: the FMU
+registers pythonfmu's interpreter finaliser to run before the static destructors of the
+C++ extensions (see <code>servofmu.fmus.interpreter_exit</code>).</li>
+<li><b>Windows</b>: <code>python3x.dll</code> on PATH and PYTHONPATH set
+(<code>servofmu host-env</code>); not tested by the project. <b>macOS</b>: no binary.</li>
+<li>Every servofmu FMU in one process must come from the same servofmu build: Python imports
+the package once per process, and the FMU refuses to instantiate, naming both versions, when
+it differs.</li>
+<li>Bad inputs or parameters (outside the range, or not finite) make the next step return
+fmi2Discard with a logged message naming the variable and its value. State can be saved,
+restored and serialised (<code>canGetAndSetFMUstate</code>,
+<code>canSerializeFMUstate</code>).</li>
+</ul>"""
+
+
+def render(name: str, curve: Curve | None = None) -> str:
+    """The HTML page of FMU ``name``; with ``curve``, it shows :data:`IMAGE` and its caption."""
+    cls = slave_class(name)
+    module = importlib.import_module(cls.__module__)
+    physics = "".join(
+        f"<h3><code>{m}</code></h3>\n{rst_to_html(importlib.import_module(m).__doc__)}"
+        for m in cls.PHYSICS
+    )
+    figure = ""
+    if curve is not None:
+        figure = (
+            f'<h2>Characteristic curve</h2>\n<figure><img src="{IMAGE}" '
+            f'alt="{html.escape(curve.title)}"><figcaption>{html.escape(curve.caption)}'
+            "</figcaption></figure>"
+        )
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>{name}</title>
-<style>body{{font-family:sans-serif;max-width:75em;margin:2em auto}}
+<style>body{{font-family:sans-serif;max-width:75em;margin:2em auto;line-height:1.4}}
 table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;padding:2px 6px;font-size:90%}}
-pre{{background:#f6f6f6;padding:1em;white-space:pre-wrap}}</style></head><body>
+blockquote{{font-family:serif;font-size:105%;background:#f6f6f6;margin:0.5em 2em;
+padding:0.3em 1em}}figure img{{max-width:100%}}code{{background:#f2f2f2}}</style></head><body>
 <h1>{name}</h1>
 <p>{html.escape(cls.description)}</p>
-<p>servofmu {servofmu.__version__}: FMI 2.0 co-simulation, built with pythonfmu. The FMU runs
-inside a Python interpreter with numpy and scipy (see the project README, "Host
-requirements").</p>
-<pre>{html.escape(module.__doc__ or "")}</pre>
+<p>servofmu {servofmu.__version__}: FMI 2.0 co-simulation FMU, model identifier
+<code>{name}</code>.</p>
+{rst_to_html(module.__doc__)}
+{figure}
 <h2>Variables</h2>
-<p>SI units; display units are declared in the modelDescription. Bad inputs or parameters
-(outside the range, or not finite) make the next step return fmi2Discard with a logged message
-naming the variable and its value.</p>
-<table><tr>{head}</tr>
-{"".join(rows)}
-</table>
+<p>SI units; display units are declared in the modelDescription.</p>
+{_variable_tables(cls)}
 <h2>Equations</h2>
-{"".join(physics)}
+{physics}
+{_host_requirements()}
 </body></html>
 """
 
 
 def write_documentation(name: str, folder: Path) -> Path:
-    """Write ``index.html`` of FMU ``name`` into ``folder``."""
+    """Write ``index.html`` and :data:`IMAGE` (the characteristic curve) of FMU ``name`` into
+    ``folder``; returns the page's path."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
+    curve = CURVES[name]()
+    plot_curve(curve, folder / IMAGE)
     path = folder / "index.html"
-    path.write_text(render(name), encoding="utf-8")
+    path.write_text(render(name, curve), encoding="utf-8")
     return path

@@ -160,3 +160,60 @@ def test_data_file_holds_the_code_calibration(act):
     _, fit = liu2014.calibrated_actuator()
     for name, value in fit.items():
         assert getattr(act, name) == pytest.approx(value, rel=1e-6), name
+
+
+# ----------------------------------------------------------------------------- motor side
+def test_motor_angle_is_the_integral_of_the_reduction_ratio(act):
+    """dφ/dδ = i (Liu eq 4): the motor angle of the exact nut travel against the ratio
+    integrated numerically (Simpson, 2001 points), and φ(0) = 0."""
+    from scipy.integrate import simpson
+
+    delta = np.linspace(0.0, math.radians(40.0), 2001)
+    integral = simpson(A.reduction_ratio(act, delta).total, x=delta)
+    assert A.motor_angle(act, 0.0) == 0.0
+    assert float(A.motor_angle(act, delta[-1])) == pytest.approx(integral, rel=1e-10)
+    assert np.all(np.diff(A.motor_angle(act, np.linspace(-1.2, 1.5, 500))) > 0)
+
+
+def test_output_angle_inverts_motor_angle_in_closed_form(act):
+    delta = np.linspace(-1.2, 1.5, 1001)
+    back = A.output_angle(act, A.motor_angle(act, delta))
+    np.testing.assert_allclose(back, delta, rtol=0, atol=1e-13)
+    # the linearisation the SSP used before (φ/i0, the ratio at neutral) is not exact: the
+    # ratio falls from i0 to i(10°), so the error lies between 0 and (1 − i(10°)/i0)·10°
+    i0, i10 = (float(A.reduction_ratio(act, d).total) for d in (0.0, 10 * DEG))
+    linear = float(A.motor_angle(act, 10 * DEG)) / i0
+    assert 0.01 * DEG < 10 * DEG - linear < (1 - i10 / i0) * 10 * DEG
+
+
+def test_output_angle_refuses_motor_angles_beyond_the_dead_centres(act):
+    with pytest.raises(ValueError, match=r"motor_angle = 300\.0 rad is outside .*dead centre"):
+        A.output_angle(act, 300.0)
+    with pytest.raises(ValueError, match=r"motor_angle = nan"):
+        A.output_angle(act, float("nan"))
+    # the reach in the message is where the crank and rod are in line (lever dx/dθ = 0)
+    message = ""
+    try:
+        A.output_angle(act, [0.0, -1e3])
+    except ValueError as exc:
+        message = str(exc)
+    lo, hi = (float(x) for x in re.search(r"\(([-\d.e+]+), ([-\d.e+]+)\) rad", message).groups())
+    for phi in (lo, hi):
+        inside = phi * (1 - 1e-7)
+        lever = A.kinematics(act, A.output_angle(act, inside)).lever
+        assert abs(lever) < 2e-3 * act.crank_length  # close to the dead centre
+
+
+def test_new_examples_run():
+    import doctest
+
+    from servofmu.fmus import interpreter_exit
+
+    for module in (A, interpreter_exit):
+        finder = doctest.DocTestFinder()
+        names = {"motor_angle", "output_angle", "fmu_binary", "register_interpreter_finaliser"}
+        tests = [t for t in finder.find(module) if t.name.rsplit(".", 1)[-1] in names]
+        runner = doctest.DocTestRunner()
+        for t in tests:
+            runner.run(t)
+        assert tests and runner.summarize(verbose=False).failed == 0

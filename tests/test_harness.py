@@ -25,7 +25,7 @@ from servofmu.harness import (
 from servofmu.harness import master as master_module
 from servofmu.harness.master import order_components
 from servofmu.physics import catalog
-from servofmu.physics.actuator import reduction_ratio
+from servofmu.physics.actuator import output_angle, reduction_ratio
 
 
 @pytest.fixture(scope="module")
@@ -232,10 +232,29 @@ def test_unknown_override_variant_and_signal_targets(out, no_instantiation):
 
 
 # ----------------------------------------------------------------------------- running
-def test_linear_transformation_maps_motor_angle_to_output_angle(out):
-    system = load_system(out / "ema_actuator.ssp")
+def test_linear_transformation_maps_motor_angle_to_output_angle(out, tmp_path):
+    # ema_actuator as it was before issue 15: the motor angle reaches the actuator's
+    # output-angle input through a LinearTransformation (1/i0, the ratio at neutral)
+    folder = _copy_system(tmp_path, "ema_actuator")
+    factor = 1.0 / float(reduction_ratio(catalog.actuator("liu2014_ema"), 0.0).total)
+    _edit(
+        folder / "SystemStructure.ssd",
+        '<ssd:Connection startElement="motor" startConnector="angle" endElement="actuator" '
+        'endConnector="motor_angle"/>',
+        '<ssd:Connection startElement="motor" startConnector="angle" endElement="actuator" '
+        f'endConnector="angle"><ssc:LinearTransformation factor="{factor!r}"/></ssd:Connection>',
+    )
+    _edit(
+        folder / "SystemStructure.ssd",
+        '<ssd:Connector name="motor_angle" kind="input">',
+        '<ssd:Connector name="angle" kind="input">',
+    )
+    _edit(folder / "actuator.ssv", '<ssv:Boolean value="true"/>', '<ssv:Boolean value="false"/>')
+    system = load_system(folder, fmu_dir=out)
     try:
-        factor = next(c for c in system.connections if c.end == ("actuator", "angle")).factor
+        assert next(c for c in system.connections if c.end == ("actuator", "angle")).factor == (
+            factor
+        )
         res = run(
             system,
             stop=0.05,
@@ -250,7 +269,37 @@ def test_linear_transformation_maps_motor_angle_to_output_angle(out):
     expected = reduction_ratio(catalog.actuator("liu2014_ema"), output_angle).total
     assert res["actuator.reduction_ratio"] == pytest.approx(expected, rel=1e-12)
     assert np.ptp(output_angle) > 0  # the loaded motor moves: the check is not at one point
-    assert math.degrees(output_angle[0]) == pytest.approx(10.0, rel=1e-9)
+
+
+def test_ema_actuator_applies_the_exact_reduction_to_the_motor_angle(out):
+    act = catalog.actuator("liu2014_ema")
+    system = load_system(out / "ema_actuator.ssp")
+    try:
+        assert not [c for c in system.connections if c.factor != 1.0 or c.offset != 0.0]
+        res = run(
+            system,
+            stop=0.05,
+            record=[
+                "motor.angle",
+                "motor.speed",
+                "actuator.output_angle",
+                "actuator.output_speed",
+                "actuator.reduction_ratio",
+            ],
+            progress=False,
+        )
+    finally:
+        system.close()
+    # Gauss-Seidel: each row's actuator outputs are at the motor angle of the same row
+    delta = output_angle(act, res["motor.angle"])
+    assert res["actuator.output_angle"] == pytest.approx(delta, rel=1e-12, abs=1e-15)
+    assert res["actuator.reduction_ratio"] == pytest.approx(
+        reduction_ratio(act, delta).total, rel=1e-12
+    )
+    speed = res["motor.speed"] / res["actuator.reduction_ratio"]
+    assert res["actuator.output_speed"] == pytest.approx(speed, rel=1e-12, abs=1e-15)
+    assert np.ptp(res["motor.angle"]) > 0  # the loaded motor moves
+    assert math.degrees(res["actuator.output_angle"][0]) == pytest.approx(10.0, rel=1e-12)
 
 
 def test_variant_and_override_reach_the_fmu(out):

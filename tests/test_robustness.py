@@ -54,3 +54,19 @@ def test_soak_memory_and_outputs(fmus, long_mode):
     assert {r["name"] for r in reports} == {*NAMES, "seeker_gimbal system"}
     for r in reports:
         assert r["steps"] == steps and r["growth_mb"] <= growth, r
+
+
+def test_fmpy_processes_exit_cleanly(fmus, long_mode):
+    """A plain fmpy process that used an FMU (steps, state, a discarded NaN, free) exits 0
+    by a normal interpreter exit. 30 runs per FMU in long mode (the README's measurement
+    runs `python tests/robustness/exit_check.py build/out`), 3 by default."""
+    runs = 30 if long_mode else 3
+    rc, out, err = _child(
+        [HERE / "exit_check.py", fmus["BearingFriction"].parent, "--runs", runs],
+        timeout=None if long_mode else 600,
+    )
+    reports = [json.loads(line) for line in out.splitlines() if line.startswith("{")]
+    assert rc == 0, f"exit status {rc}\n{out}\n{err[-4000:]}"
+    assert {r["name"] for r in reports} == set(NAMES)
+    for r in reports:
+        assert r["runs"] == runs and r["exit_0"] == runs, r

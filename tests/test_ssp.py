@@ -4,6 +4,7 @@ and packed with their FMUs by ``servofmu build``."""
 
 from __future__ import annotations
 
+import inspect
 import zipfile
 
 import pytest
@@ -16,6 +17,7 @@ NS = {
     "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",
     "ssv": "http://ssp-standard.org/SSP1/SystemStructureParameterValues",
     "osp": "http://opensimulationplatform.com/SSP/OSPAnnotations",
+    "oms": "https://raw.githubusercontent.com/OpenModelica/OMSimulator/master/schema/oms.xsd",
 }
 SYSTEMS = [s.name for s in systems()]
 
@@ -65,3 +67,24 @@ def test_packed_archive_holds_the_system_and_its_fmus(fmus):
         entries = set(zf.namelist())
     assert "SystemStructure.ssd" in entries and "variants/cold.ssv" in entries
     assert set(fmu_sources(SSP_DIR / "seeker_gimbal")) <= entries
+
+
+@pytest.mark.parametrize("name", SYSTEMS)
+def test_every_engine_finds_the_step_and_the_parameter_values(name):
+    """OMSimulator's classic route needs the org.openmodelica master annotation on the system
+    (the same step as the OSP annotation that libcosim reads); ecos applies the .ssv files of
+    one ParameterSet name only, so every .ssv of the system carries the same name."""
+    from servofmu.calibration import write_ssv
+    from servofmu.harness.ecos import PARAMETER_SET
+
+    folder = SSP_DIR / name
+    root = etree.parse(str(folder / "SystemStructure.ssd")).getroot()
+    osp = root.find("ssd:DefaultExperiment//osp:FixedStepAlgorithm", NS)
+    annotation = root.find("ssd:System/ssd:Annotations/ssc:Annotation", NS)
+    assert annotation is not None and annotation.get("type") == "org.openmodelica"
+    master = annotation.find("oms:Annotations/oms:SimulationInformation/oms:FixedStepMaster", NS)
+    assert master.get("description") == "oms-ma"
+    assert float(master.get("stepSize")) == float(osp.get("baseStepSize"))
+    for ssv in sorted(folder.rglob("*.ssv")):
+        assert etree.parse(str(ssv)).getroot().get("name") == PARAMETER_SET, ssv
+    assert inspect.signature(write_ssv).parameters["name"].default == PARAMETER_SET

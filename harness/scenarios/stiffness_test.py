@@ -2,10 +2,11 @@
 of +10° output, the hinge moment steps 0 → 100 → 200 → 300 N·m, and at steady state the
 output angle is read; stiffness = ΔM/Δθ (secant, from the unloaded plateau, as Table 1).
 
-The output angle of the system is the kinematic angle of the motor (the connection's
-LinearTransformation, motor rad → output rad) plus the elastic deflection of the actuator, so
-the measured stiffness also carries whatever the servo loop gives way under load (its
-integral action brings it back to the reference; the residual is reported). It is set next
+The output angle of the system is the kinematic angle of the held motor (the actuator's
+``output_angle``: the motor angle through the exact crank-slider inverse) plus the elastic
+deflection of the actuator, so the measured stiffness also carries whatever the servo loop
+gives way under load (its integral action brings it back to the reference; the residual is
+reported). It is set next
 to the library's series stiffness (``physics.actuator.stiffness_breakdown``, support-bearing
 extension included) and to Liu's measurement (100 N·m calibrated in the liu2014 report,
 200/300 N·m predictions there).
@@ -35,8 +36,6 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
     plateau = 0.3 if coarse else 1.0  # s per load step
     system = load_system(system_path("ema_actuator", fmu_dir))
     try:
-        link = next(c for c in system.connections if c.end == ("actuator", "angle"))
-        factor = link.factor  # output rad per motor rad of the kinematic angle
         temperature = float(system.components["actuator"].parameters["temperature"][1])
         starts = tuple(i * plateau for i in range(len(LOADS) + 1))
         res = run_system(
@@ -47,6 +46,7 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
                 "actuator.load_torque",
                 "motor.angle",
                 "motor.current",
+                "actuator.output_angle",
                 "actuator.deflection",
                 "actuator.stiffness",
             ],
@@ -55,8 +55,8 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
     finally:
         system.close()
     t = res["time"]
-    output_angle = factor * res["motor.angle"] + res["actuator.deflection"]
-    servo_angle = factor * res["motor.angle"]
+    output_angle = res["actuator.output_angle"] + res["actuator.deflection"]
+    servo_angle = res["actuator.output_angle"]
 
     def steady(values, i):
         return plateau_mean(t, values, starts[i], starts[i] + plateau)

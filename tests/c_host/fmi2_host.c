@@ -4,7 +4,9 @@
  *
  * usage: fmi2_host LIB GUID RESOURCE_URI STEP NSTEPS [s VR VALUE]... [g VR]...
  * prints "init VR VALUE" and "final VR VALUE" lines; exits 1 if any call returns a status
- * worse than fmi2Warning, 2 on usage or loading errors. */
+ * worse than fmi2Warning, 2 on usage or loading errors. With FMI2_HOST_EXIT set in the
+ * environment it leaves with exit() (exit handlers and library destructors run), else with
+ * _exit(). */
 #include <dlfcn.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -112,8 +114,8 @@ int main(int argc, char **argv) {
     fflush(stdout);
     fflush(stderr);
     if (getenv("FMI2_HOST_EXIT")) exit(failed);  /* normal exit: runs library destructors */
-    /* Leave without running the FMU library's destructors: pythonfmu finalises the embedded
-     * interpreter there, and with numpy/scipy loaded that has been seen to crash after every
-     * FMI call succeeded (TOOLCHAIN.md). The FMI work is complete at this point. */
+    /* Leave without running the FMU library's destructors, where pythonfmu finalises the
+     * embedded interpreter. Before servofmu.fmus.interpreter_exit put that finalisation
+     * first, a normal exit crashed after every FMI call had succeeded; the tests run both. */
     _exit(failed);
 }

@@ -156,12 +156,13 @@ def plot(cal: Calibration, path) -> Path:
     return path
 
 
-def write_ssv(parameters, path, component: str | None = None, name: str = "calibrated") -> Path:
+def write_ssv(parameters, path, component: str | None = None, name: str = "servofmu") -> Path:
     """The whole BearingFriction parameter set as an SSP 1.0 parameter set: bare names (a
     component-level binding, or start values for the FMU), or ``component.name`` names (a
     variant of a system, e.g. ``ssp/seeker_gimbal/variants/``). A choice is written as its
     item number (``ssv:Integer``, which every engine applies) with the item name as the
-    parameter's description."""
+    parameter's description. The set's name is the one every .ssv of ``ssp/`` carries (ecos
+    applies the sets of one name only)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     root = Element(f"{{{SSV_NS}}}ParameterSet", {"version": "1.0", "name": name})

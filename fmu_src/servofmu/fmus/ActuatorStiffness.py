@@ -1,7 +1,12 @@
 """ActuatorStiffness FMU: stiffness of gear train → ball screw → crank-slider linkage → output
 shaft, with the screw's support bearings (Liu 2014 and this project's extension), at the
 output shaft for the current angle, hinge moment and temperature
-(:class:`servofmu.physics.actuator.ActuatorModel`)."""
+(:class:`servofmu.physics.actuator.ActuatorModel`).
+
+The angle comes from the ``angle`` input (output shaft) or, with the parameter
+``motor_side_inputs``, from ``motor_angle`` (motor shaft) through the exact inverse of the
+crank-slider (:func:`servofmu.physics.actuator.output_angle`): a system can then connect its
+motor to the actuator directly, without a LinearTransformation, which can only be linear."""
 
 from __future__ import annotations
 
@@ -10,11 +15,15 @@ import dataclasses
 from servofmu.fmus.slave import ServoSlave, Var, items, output, real_input, real_parameter
 from servofmu.physics import catalog
 from servofmu.physics.actuator import ActuatorModel
+from servofmu.physics.actuator import output_angle as mechanism_output_angle
 from servofmu.physics.bearing import BearingPair, with_mounting
 from servofmu.physics.bearing_parameters import FROM_MOUNTING, Choice, catalogue_choices
 
 _A = catalog.actuator("liu2014_ema")
-_LOAD = ("temperature", "load_torque", "angle")
+_ANGLE = ("angle", "motor_angle")  # the position input: output shaft, or motor shaft
+_LOAD = ("temperature", "load_torque", *_ANGLE)
+# with motor_side_inputs, the angle follows from motor_angle through the ratio's parameters
+_MOTOR_SIDE = ("motor_side_inputs", "gear_ratio", "screw_lead")
 _SUPPORT_MOUNTINGS = catalogue_choices(
     "mountings", Choice("", "none", "no support bearings (rigid: infinite stiffness)")
 )
@@ -67,7 +76,7 @@ def _out(name, description, params, unit="N.m/rad", display="N.m/deg", depends=_
         unit,
         display,
         depends=depends,
-        initial_depends=depends + _KINEMATICS + params,
+        initial_depends=(*depends, *_KINEMATICS, *_MOTOR_SIDE, *params),
         **kw,
     )
 
@@ -117,28 +126,28 @@ class ActuatorStiffness(ServoSlave):
             "gear_stiffness",
             "Gear train, reflected to the output (Liu eq 8)",
             _GEAR,
-            depends=("angle",),
+            depends=(*_ANGLE,),
             field="gear",
         ),
         _out(
             "screw_stiffness",
             "Ball screw, reflected to the output (Liu eq 8)",
             ("screw_axial_stiffness",),
-            depends=("angle",),
+            depends=(*_ANGLE,),
             field="screw",
         ),
         _out(
             "linkage_stiffness",
             "Crank-slider linkage (Liu eq 9-20)",
             _LINKAGE,
-            depends=("load_torque", "angle"),
+            depends=("load_torque", *_ANGLE),
             field="linkage",
         ),
         _out(
             "housing_stiffness",
             "Housing, reflected to the output",
             ("housing_axial_stiffness",),
-            depends=("angle",),
+            depends=(*_ANGLE,),
             field="housing",
         ),
         _out(
@@ -153,7 +162,7 @@ class ActuatorStiffness(ServoSlave):
             _RATIO,
             "1",
             None,
-            ("angle",),
+            _ANGLE,
             field="reduction_ratio",
         ),
         _out(
@@ -170,7 +179,7 @@ class ActuatorStiffness(ServoSlave):
             (),
             "N",
             None,
-            ("load_torque", "angle"),
+            ("load_torque", *_ANGLE),
             field="screw_force",
         ),
         _out(
@@ -179,7 +188,7 @@ class ActuatorStiffness(ServoSlave):
             _RATIO,
             "N.m",
             "N.mm",
-            ("load_torque", "angle"),
+            ("load_torque", *_ANGLE),
         ),
         _p("gear_ratio", "Gear-train ratio i_g", "1", None, 1e-3, 1e4),
         _p("screw_lead", "Ball-screw lead p (per revolution)", "m", "mm", 1e-5, 1.0),
@@ -269,6 +278,54 @@ class ActuatorStiffness(ServoSlave):
             1e6,
             source=catalog.mounting("liu2014_screw_support").source("assembly_preload"),
         ),
+        # the motor side (issue 15): an SSP connection can only scale linearly, so a system
+        # that drives the actuator from its motor gives it the motor's angle and speed, and
+        # the exact crank-slider reduction is applied here
+        Var(
+            name="motor_side_inputs",
+            type="Boolean",
+            causality="parameter",
+            description=(
+                "true: the mechanism's position is motor_angle/motor_speed (motor shaft) "
+                "through the exact crank-slider reduction; false: angle/speed (output shaft)"
+            ),
+            start=False,
+            source="assumed: false, the output-shaft inputs",
+        ),
+        real_input(
+            "motor_angle",
+            "Motor-shaft angle from the neutral position (with motor_side_inputs)",
+            0.0,
+            "rad",
+            "deg",
+            -1.0e4,
+            1.0e4,
+        ),
+        real_input(
+            "motor_speed",
+            "Motor-shaft speed (with motor_side_inputs)",
+            0.0,
+            "rad/s",
+            "rpm",
+            -1.0e5,
+            1.0e5,
+        ),
+        _out(
+            "output_angle",
+            "Output-shaft angle of the rigid mechanism (angle, or from motor_angle)",
+            (),
+            "rad",
+            "deg",
+            _ANGLE,
+        ),
+        _out(
+            "output_speed",
+            "Output-shaft speed (speed, or motor_speed over the reduction ratio)",
+            (),
+            "rad/s",
+            "deg/s",
+            ("speed", "motor_speed", *_ANGLE),
+        ),
     )
 
     def configure(self):
@@ -295,9 +352,21 @@ class ActuatorStiffness(ServoSlave):
         self.model = ActuatorModel(act, support)
 
     def compute(self):
-        b = self.model.evaluate(self.angle, self.load_torque, self.temperature)
+        angle = self._mechanism_angle()
+        b = self.model.evaluate(angle, self.load_torque, self.temperature)
         self.copy_outputs(b)
         self.motor_load_torque = self.load_torque / b.reduction_ratio
+        self.output_angle = angle
+        self.output_speed = (
+            self.motor_speed / b.reduction_ratio if self.motor_side_inputs else self.speed
+        )
+
+    def _mechanism_angle(self) -> float:
+        """The output angle δ [rad]: the angle input, or the motor angle through the exact
+        inverse of the crank-slider (ValueError naming motor_angle beyond a dead centre)."""
+        if self.motor_side_inputs:
+            return float(mechanism_output_angle(self.model.act, self.motor_angle))
+        return self.angle
 
     def hidden_state(self):
         # the support pair's continuation (physics/continuation.py): restored bit for bit

@@ -42,6 +42,7 @@ from pythonfmu import Boolean, Fmi2Causality, Fmi2Slave, Fmi2Variability, Intege
 from pythonfmu.enums import Fmi2Initial, Fmi2Status
 
 from .. import __version__
+from .interpreter_exit import register_interpreter_finaliser
 
 BUILD_INFO = "servofmu_build.json"  # written into resources/ by the build
 
@@ -269,6 +270,8 @@ class ServoSlave(Fmi2Slave):
         from pythonfmu.default_experiment import DefaultExperiment
 
         self._check_build()
+        # after every import that loads a C++ extension (servofmu.fmus loads all of them)
+        register_interpreter_finaliser(self.resources, type(self).__name__)
         start, stop, step = self.DEFAULT_EXPERIMENT
         self.default_experiment = DefaultExperiment(
             start_time=start, stop_time=stop, step_size=step

@@ -32,6 +32,12 @@ two circles), the output shaft twists by M·l/(G·I1) (eq 17) and the output arm
 cantilever by M·l³/(3·E·I·L1) (eq 18, corrected: the printed form lacks the second moment of
 area I), adding arctan(M·l²/(3·E·I·L1)) to the rotation (eq 19), and K_rod = M/Δθ (eq 20).
 Every term is linear in M for small deflections: eq 9–20 give a load-independent K_rod.
+
+Motor side (this project): the motor angle from the neutral position is the nut travel in
+motor radians, φ = ±(i_g·2π/p)·(x_A(θ0 + δ) − x_A(θ0)), with dφ/dδ = i (eq 4). Its inverse is
+closed form: the crank pin lies on the circle of radius L1 about the output shaft and on the
+circle of radius L2 about the nut, so θ = ψ ± arccos((L1² + R² − L2²)/(2·L1·R)) with
+R = |CA|, ψ = atan2(Y1, x_A); the reach ends at the dead centres (R = L1 + L2, |L2 − L1|).
 """
 
 from __future__ import annotations
@@ -216,6 +222,103 @@ def reduction_ratio(act: Actuator, output_angle) -> ReductionRatios:
     i_s = 2.0 * np.pi * act.crank_length / act.screw_lead
     i_r = lever / act.crank_length
     return ReductionRatios(screw=i_s, linkage=i_r, total=act.gear_ratio * i_s * i_r)
+
+
+def _motor_radians_per_metre(act: Actuator) -> float:
+    """Signed motor angle per nut travel [rad/m]: i_g·2π/p (Liu 2014 eq 1, 4), with the sign
+    that makes the motor angle rise with the output angle (the sign of dx/dθ at neutral)."""
+    lever0 = kinematics(act, 0.0).lever
+    return float(np.sign(lever0) * act.gear_ratio * 2.0 * np.pi / act.screw_lead)
+
+
+def motor_angle(act: Actuator, output_angle):
+    """Motor-shaft angle φ [rad] from the neutral position that puts the rigid mechanism at
+    output angle δ [rad]: φ = ±(i_g·2π/p)·(x_A(θ0 + δ) − x_A(θ0)), the nut travel of the exact
+    crank-slider (Liu 2014 eq 2–3, 9) turned into motor radians by the screw lead and the gear
+    ratio (eq 1, 4). dφ/dδ is the reduction ratio i of eq 4 (positive: φ rises with δ).
+
+    Parameters
+    ----------
+    act : the actuator
+    output_angle : δ [rad], array-like
+
+    Returns
+    -------
+    ndarray
+        φ [rad]; ValueError where the linkage cannot reach δ (see :func:`kinematics`).
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> ema = catalog.actuator("liu2014_ema")
+    >>> round(float(motor_angle(ema, np.radians(10.0))), 6)
+    33.92322
+    """
+    x = kinematics(act, output_angle).nut_position
+    return _motor_radians_per_metre(act) * (x - kinematics(act, 0.0).nut_position)
+
+
+def output_angle(act: Actuator, motor_angle):
+    """Output angle δ [rad] of the rigid mechanism at motor-shaft angle φ [rad] from the
+    neutral position: the exact inverse of :func:`motor_angle`, in closed form.
+
+    The motor angle gives the nut position x_A = x_A(θ0) + φ/(±i_g·2π/p) (Liu 2014 eq 1, 4).
+    The crank pin B lies on the circle |CB| = L1 about the output shaft and on the circle
+    |AB| = L2 about the nut A = (x_A, Y1), so x_A·cos θ + Y1·sin θ = (L1² + R² − L2²)/2L1 with
+    R = |CA|: θ = ψ ± arccos((L1² + R² − L2²)/(2·L1·R)), ψ = atan2(Y1, x_A), on the branch of
+    the neutral position. The two branches meet at the dead centres (crank and rod in line,
+    R = L1 + L2 or |L2 − L1|), which bound the reach.
+
+    Parameters
+    ----------
+    act : the actuator
+    motor_angle : φ [rad] from the neutral position, array-like
+
+    Returns
+    -------
+    ndarray
+        δ [rad]. ValueError naming the motor angle where the mechanism would have to pass a
+        dead centre, or where the rod would leave the slide's side of the crank.
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> ema = catalog.actuator("liu2014_ema")
+    >>> round(float(np.degrees(output_angle(ema, motor_angle(ema, np.radians(10.0))))), 9)
+    10.0
+    """
+    phi = np.asarray(check_finite("motor_angle", motor_angle, "rad"), dtype=float)
+    l1, l2, y1 = act.crank_length, act.rod_length, act.slide_offset
+    x0 = kinematics(act, 0.0).nut_position
+    x = x0 + phi / _motor_radians_per_metre(act)
+    r = np.hypot(x, y1)
+    cos_rel = (l1**2 + r**2 - l2**2) / (2.0 * l1 * r)  # cos(θ − ψ)
+    psi = np.arctan2(y1, x)
+    theta0 = act.neutral_crank_angle
+    branch = np.sign(np.angle(np.exp(1j * (theta0 - np.arctan2(y1, x0)))))
+    with np.errstate(invalid="ignore"):
+        theta = psi + branch * np.arccos(cos_rel)
+    cos_rod = (x - l1 * np.cos(theta)) / l2  # cos γ ≥ 0: the rod runs from B towards +x
+    bad = ~(np.abs(cos_rel) < 1.0) | ~(cos_rod > 0.0)
+    if np.any(bad):
+        raise ValueError(
+            f"motor_angle = {float(phi[bad].flat[0])!r} rad is outside the linkage's reach: "
+            "the crank-slider would pass a dead centre (crank and rod in line); valid "
+            f"{_motor_reach_text(act)}"
+        )
+    return np.angle(np.exp(1j * (theta - theta0)))
+
+
+def _motor_reach_text(act: Actuator) -> str:
+    """The open interval of motor angles between the dead centres around the neutral
+    position, as text (nut at distance L1 + L2 and |L2 − L1| from the output shaft)."""
+    l1, l2, y1 = act.crank_length, act.rod_length, act.slide_offset
+    x0 = kinematics(act, 0.0).nut_position
+    ends = [np.sign(x0) * np.sqrt(d**2 - y1**2) for d in (l1 + l2, abs(l2 - l1)) if d**2 > y1**2]
+    phis = sorted(_motor_radians_per_metre(act) * (x - x0) for x in ends)
+    if len(phis) == 2:
+        return f"({phis[0]:.9g}, {phis[1]:.9g}) rad"
+    return "motor angles keep the nut between the dead centres"
 
 
 def screw_force(act: Actuator, output_angle, load_torque):
