@@ -166,11 +166,37 @@ def _controller_curve() -> Curve:
     )
 
 
+def _thermal_curve() -> Curve:
+    """Part temperatures after a 20 → 60 °C step of the chamber (ambient and sink), 3 h."""
+    names = ("housing", "shaft", "outer_ring", "inner_ring")
+    outputs = tuple(f"{n}_temperature" for n in names)
+    h = 30.0
+    fmu = _Slave("ThermalNetwork", ambient_temperature=293.15, sink_temperature=293.15)
+    t = h * np.arange(361)
+    rows = [fmu.get(*outputs)]
+    for k in range(360):
+        fmu.set(ambient_temperature=333.15, sink_temperature=333.15)
+        fmu.step(t[k], h)
+        rows.append(fmu.get(*outputs))
+    celsius = np.array(rows) - 273.15
+    return Curve(
+        "ThermalNetwork: chamber step from 20 to 60 °C",
+        "time [min]",
+        "temperature [°C]",
+        t / 60.0,
+        tuple((n.replace("_", " "), celsius[:, i]) for i, n in enumerate(names)),
+        "Default parameters (Yu's seeker gimbal in chamber air, preset yu2017_gimbal_chamber), "
+        "no bearing loss: the frame follows the air first, the shaft and the inner rings lag "
+        "behind the balls' small conductance. The FMU integrates exactly over each step.",
+    )
+
+
 CURVES = {
     "BearingFriction": _bearing_curve,
     "ActuatorStiffness": _actuator_curve,
     "DCMotor": _motor_curve,
     "ServoController": _controller_curve,
+    "ThermalNetwork": _thermal_curve,
 }
 
 

@@ -30,6 +30,7 @@ BASE = {
         initial_angle=0.5,
     ),
     "ServoController": dict(reference=1.0, measurement=0.4, kp=2.0, ki=10.0, kd=0.1),
+    "ThermalNetwork": dict(ambient_temperature=263.15, sink_temperature=250.0, power_loss=0.5),
 }
 # a change where the base value is 0, by unit
 STEP = {"m": 2e-6, "N": 20.0, "N/m": 1e8, "rad/s": 0.3, "A": 0.5, "rad": 0.1, "V": 2.0}
@@ -39,11 +40,13 @@ def _candidates(v, base):
     """Values to try for variable ``v`` (fmpy ModelVariable) whose base value is ``base``."""
     if v.name in _items:
         return [i for i in _items[v.name].values() if i != base]
+    if v.type == "Boolean":
+        return [not base]
     if v.type != "Real":
         return []
     lo = -float("inf") if v.min is None else float(v.min)
     hi = float("inf") if v.max is None else float(v.max)
-    if v.unit == "K":
+    if v.unit == "K" and base > 100.0:  # an absolute temperature (else a difference)
         values = [base + 10.0, base + 100.0, base - 80.0]
     elif base == 0.0:
         step = STEP.get(v.unit, 0.5)
@@ -90,7 +93,10 @@ def test_initial_unknowns_declare_their_true_dependencies(fmus, name):
     untested = []
     for v in knowns:
         start = BASE[name].get(v.name, v.start)
-        start = float(start) if v.type == "Real" else int(start)
+        if v.type == "Boolean":
+            start = start in (True, "true", "1")
+        else:
+            start = float(start) if v.type == "Real" else int(start)
         accepted = 0
         for value in _candidates(v, start):
             out, _ = probe.initial({**BASE[name], v.name: value})
