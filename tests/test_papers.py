@@ -192,10 +192,10 @@ def test_ning_rows_say_what_they_are(ning_report):
 def test_yu_rows_say_what_they_are(yu):
     cal = yu2017.CALIBRATION_READING
     readings = tuple(yu2017.READINGS)
-    assert ids_of(yu, "calibration") == {"fig8.viscous_m40", f"fig8.geometric_min.{cal}"}
+    assert ids_of(yu, "calibration") == {"fig8.viscous_m40", f"fig8.geometric_m40.{cal}"}
     assert ids_of(yu, "prediction") == {
-        *{f"fig8.geometric_max.{x}" for x in readings},
-        *{f"fig8.geometric_min.{x}" for x in readings if x != cal},
+        *{f"fig8.geometric_max.{x}" for x in readings if x != cal},
+        *{f"fig8.geometric_min.{x}" for x in readings},
     }
     assert ids_of(yu, "consequence") == {
         f"fig8.{q}.{x}" for q in ("total_m40", "viscous_share_m40") for x in readings
@@ -203,17 +203,31 @@ def test_yu_rows_say_what_they_are(yu):
     r = rows(yu)
     for x in readings:  # the −40 °C total is the calibrated viscous part plus the geometric
         assert "fig8.viscous_m40" in r[f"fig8.total_m40.{x}"].note
-        assert r[f"fig8.geometric_max.{x}"].tolerance.endswith("[paper model]")
+    for x in readings:
+        if x != cal:
+            assert r[f"fig8.geometric_max.{x}"].tolerance.endswith("[paper model]")
+    # in the calibration mounting the total is both calibrations added: consistent with
+    assert f"fig8.geometric_m40.{cal}" in r[f"fig8.total_m40.{cal}"].note
+    assert "consistent with" in r[f"fig8.total_m40.{cal}"].note
 
 
 def test_yu_calibrations_hit_their_points(yu):
     r = rows(yu)
-    cal = f"fig8.geometric_min.{yu2017.CALIBRATION_READING}"
-    for rid, target in (("fig8.viscous_m40", 2.30), (cal, 0.38)):
+    cal = f"fig8.geometric_m40.{yu2017.CALIBRATION_READING}"
+    for rid, target in (("fig8.viscous_m40", 2.30), (cal, 0.87)):
         assert r[rid].status == "calibrated"
         assert r[rid].computed == pytest.approx(target, rel=1e-3)
     mu = next(p.value for p in yu.parameters if p.name.startswith("sliding_friction"))
     assert 0.01 < mu < 0.3  # a physical boundary-lubrication coefficient
+
+
+def test_yu_default_mounting_is_credible_at_minus_40(yu):
+    # issue 12: within 2× of Yu's 3.17 N·mm with no overload or lock, in the default mounting
+    r = rows(yu)
+    total = r[f"fig8.total_m40.{yu2017.CALIBRATION_READING}"].computed
+    assert 3.17 / 2 < total < 3.17 * 2
+    band = r["fig8.total_m40.loop_band"]
+    assert band.kind == "trend" and "consistent with" in band.note
 
 
 def test_yu_clearance_trends(yu):

@@ -347,10 +347,7 @@ def default_parameters(mounting: str, lubrication: str = "grease") -> dict[str, 
 
 
 def _coefficients(mounting: str) -> FrictionCoefficients:
-    try:
-        return catalog.coefficients(mounting)
-    except ValueError:
-        return FrictionCoefficients()
+    return catalog.mounting_coefficients(mounting) or FrictionCoefficients()
 
 
 def default_sources(mounting: str) -> dict[str, str]:

@@ -23,7 +23,7 @@ from .geometry import (
 from .lubricant import LubricantRecord, TorqueTest
 from .materials import Material
 from .mounting import Mounting
-from .preload import LoopMember, PreloadLoop
+from .preload import LoopMember, PreloadLoop, YokeArm
 from .units import MM, UM, to_si
 from .viscosity import WaltherViscosity, walther_from_two_points
 
@@ -484,9 +484,28 @@ def mounting(key: str):
         members.append(
             LoopMember(m["name"], m["role"], length, material(m["material"]), area, m.get("part"))
         )
+    arms = []
+    for i, a in enumerate(entry.get("arms", ())):
+        size = []
+        for f in ("length", "width", "thickness"):
+            value, prov[f"arms.{a['name']}.{f}"] = quantity(a[f], f"arms[{i}].{f}")
+            size.append(value)
+        arms.append(YokeArm(a["name"], *size, material(a["material"]), int(a.get("count", 1))))
     shim = q("shim") if "shim" in entry else 0.0
     stiffness = q("loop_stiffness") if "loop_stiffness" in entry else None
-    loop = PreloadLoop(tuple(members), shim=shim, stiffness=stiffness)
+    spring = q("spring_stiffness") if "spring_stiffness" in entry else None
+    preload = q("assembly_preload") if "assembly_preload" in entry else None
+    if spring is not None:  # a spring compressed by c at assembly pushes k·c on the pair
+        preload = spring * q("spring_compression")
+        prov["assembly_preload"] = "derived: spring_stiffness × spring_compression"
+    loop = PreloadLoop(
+        tuple(members),
+        shim=shim,
+        stiffness=stiffness,
+        model=entry.get("loop_model", "members"),
+        arms=tuple(arms),
+        spring_stiffness=spring,
+    )
     return Mounting(
         key=key,
         name=entry["name"],
@@ -494,7 +513,7 @@ def mounting(key: str):
         assembly_temperature=q("assembly_temperature"),
         fit=fit,
         loop=loop,
-        assembly_preload=q("assembly_preload") if "assembly_preload" in entry else None,
+        assembly_preload=preload,
         provenance=tuple(sorted(prov.items())),
     )
 
@@ -544,6 +563,18 @@ def actuator(key: str, **overrides):
 
 
 @functools.cache
+def mounting_coefficients(key: str):
+    """The friction coefficients that go with mounting ``key``: the set its entry names
+    (``coefficients = ...``; the variants of one gimbal share one calibration), else the set of
+    its own key, else None.
+
+    >>> mounting_coefficients("yu2017_gimbal_rigid") == coefficients("yu2017_gimbal")
+    True
+    """
+    name = mounting_entry(key).get("coefficients", key)
+    return coefficients(name) if name in _table("coefficients") else None
+
+
 def coefficients(key: str):
     """The :class:`friction.FrictionCoefficients` of mounting ``key`` from
     ``data/coefficients.toml``."""

@@ -71,10 +71,19 @@ class BearingPair:
     @classmethod
     def from_catalog(cls, mounting: str, lubricant: str | None = None, **overrides):
         """Pair built from catalogue keys: ``mounting`` (``data/mountings.toml``; it names its
-        bearing) and ``lubricant`` (``data/lubricants.toml``; a dry film gives solid
-        lubrication). Other fields as keyword overrides."""
+        bearing and its friction coefficients, ``data/coefficients.toml``, calibrated where a
+        paper allows) and ``lubricant`` (``data/lubricants.toml``; a dry film gives solid
+        lubrication). Other fields as keyword overrides.
+
+        >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+        >>> round(pair.coefficients.sliding_friction, 4)  # calibrated on Yu 2017 (§3, Fig 8)
+        0.0817
+        """
         mnt = catalog.mounting(mounting)
         kwargs = {"bearing": catalog.bearing(mnt.bearing_key), "mounting": mnt}
+        coefficients = catalog.mounting_coefficients(mounting)
+        if coefficients is not None:
+            kwargs["coefficients"] = coefficients
         if lubricant is not None:
             visc = catalog.lubricant(lubricant)
             kwargs["lubricant"] = visc

@@ -95,37 +95,113 @@ class LoopMember:
 
 
 @dataclass(frozen=True)
+class YokeArm:
+    """A cantilever arm of a yoke (fork) frame that holds one bearing at its tip: the preload
+    bends it along the shaft axis.
+
+    Attributes
+    ----------
+    name : e.g. "arm"
+    length : L from the arm's root to the bearing centre [m]
+    width : section width b, across the bending plane [m]
+    thickness : section depth h, in the bending direction (along the shaft) [m]
+    material : its :class:`Material`
+    count : how many such arms the loop passes through (a yoke: 2)
+    """
+
+    name: str
+    length: float
+    width: float
+    thickness: float
+    material: Material
+    count: int = 1
+
+    def __post_init__(self):
+        check_positive("arm length", self.length, "m")
+        check_positive("arm width", self.width, "m")
+        check_positive("arm thickness", self.thickness, "m")
+        if not (isinstance(self.count, int) and self.count >= 1):
+            raise ValueError(f"arm count = {self.count!r} must be an integer >= 1")
+
+    @property
+    def compliance(self) -> float:
+        """Axial compliance of the arms at their tips [m/N]: count·L³/(3·E·I), I = b·h³/12
+        (Euler–Bernoulli cantilever under a tip load; Roark's Formulas for Stress and Strain,
+        7th ed., Table 8.1 case 1a).
+
+        >>> from servofmu.physics.catalog import material
+        >>> arm = YokeArm("arm", 0.040, 0.036, 0.006, material("cast_aluminium"), count=2)
+        >>> round(1.0 / arm.compliance / 1e6, 2)  # N/µm: the two arms in series
+        1.09
+        """
+        second_moment = self.width * self.thickness**3 / 12.0
+        e = self.material.youngs_modulus
+        return self.count * self.length**3 / (3.0 * e * second_moment)
+
+
+#: How the structure of a preload loop is compliant: the members' axial E·A/L (a tube-like
+#: frame), or a yoke whose arms bend (the frame's members then count for their thermal growth
+#: only; the shaft and the other members with a section stay in series).
+LOOP_MODELS = ("members", "yoke")
+
+
+@dataclass(frozen=True)
 class PreloadLoop:
     """The preload loop of a bearing pair.
 
     Attributes
     ----------
-    members : the parts
+    members : the parts (their thermal growth closes or opens the loop)
     shim : axial interference added after the play is taken up at assembly [m] (Yu's δp)
-    stiffness : structural axial stiffness of the loop [N/m]; None: Σ L/(E·A) of the members
+    stiffness : structural axial stiffness of the loop [N/m]; None: from the model
+    model : :data:`LOOP_MODELS`: "members" (Σ L/(E·A)) or "yoke" (the arms bend)
+    arms : the :class:`YokeArm` s of a yoke
+    spring_stiffness : a preload spring in series with the structure [N/m]; None: no spring
     provenance : ((field, source), ...)
     """
 
     members: tuple[LoopMember, ...]
     shim: float = 0.0
     stiffness: float | None = None
+    model: str = "members"
+    arms: tuple[YokeArm, ...] = ()
+    spring_stiffness: float | None = None
     provenance: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self):
         check_finite("shim", self.shim, "m")
+        check_choice("loop model", self.model, LOOP_MODELS)
         if self.stiffness is not None:
             check_positive("stiffness", self.stiffness, "N/m")
+        if self.model == "yoke" and not self.arms:
+            raise ValueError("loop model = 'yoke' needs at least one arm")
+        if self.spring_stiffness is not None:
+            check_positive("spring_stiffness", self.spring_stiffness, "N/m")
+
+    @property
+    def frame_stiffness(self) -> float:
+        """Stiffness of the structure [N/m]: the override, else 1/(Σ L/(E·A) of the members
+        with a section + Σ arm compliances) (Yu eq 15's C1; in a yoke the frame's own members
+        do not count, its arms do); inf when nothing is compliant (a rigid loop)."""
+        if self.stiffness is not None:
+            return self.stiffness
+        yoke = self.model == "yoke"
+        compliance = sum(
+            m.length / (m.material.youngs_modulus * m.area)
+            for m in self.members
+            if m.area and not (yoke and m.part == "housing")
+        )
+        compliance += sum(a.compliance for a in self.arms) if yoke else 0.0
+        return 1.0 / compliance if compliance > 0 else np.inf
 
     @property
     def structural_stiffness(self) -> float:
-        """k_loop [N/m]: the override, else 1/Σ L/(E·A) (Yu eq 15's C1); inf when no member has
-        a section (rigid loop)."""
-        if self.stiffness is not None:
-            return self.stiffness
-        compliance = sum(
-            m.length / (m.material.youngs_modulus * m.area) for m in self.members if m.area
-        )
-        return 1.0 / compliance if compliance > 0 else np.inf
+        """k_loop [N/m]: the structure (:attr:`frame_stiffness`) in series with the preload
+        spring, if any."""
+        k = self.frame_stiffness
+        if self.spring_stiffness is None:
+            return k
+        return 1.0 / (1.0 / k + 1.0 / self.spring_stiffness)
 
 
 #: Smallest loop stiffness [N/m] accepted: below it the loop carries no preload worth the
