@@ -27,7 +27,9 @@ from .sweep import ModelTask, Uniform, cross, grid_points, run_sweep, sample_poi
 
 TEMPS_C = tuple(float(t) for t in range(-40, 61, 10))
 SPEED = 10.0 * DEG  # rad/s, the speed of the Yu reproduction
-OUTPUTS = ("running_torque", "preload", "max_contact_pressure", "overloaded")
+OUTPUTS = ("running_torque", "preload", "max_contact_pressure", "overloaded", "unloaded")
+#: The flags whose probability the study reports: an overload (ISO 76) and a lost preload.
+FLAGS = ("overloaded", "unloaded")
 
 
 def tolerance_points(mounting: str, samples: int, seed: int) -> list[dict]:
@@ -69,33 +71,32 @@ def run(
     )
     runs_file = sweep.write(out / "runs.csv")
     temps = np.array([p["temperature"] for p in points])
-    torque, overloaded = sweep.column("running_torque"), sweep.column("overloaded")
+    torque = sweep.column("running_torque")
+    flags = {f: sweep.column(f) for f in FLAGS}
     nominal = ModelTask(base, OUTPUTS)(_grid())
     rows = []
     for k, t_c in enumerate(TEMPS_C):
         sel = np.isclose(temps, celsius_to_kelvin(t_c)) & np.isfinite(torque)
         n = int(sel.sum())
-        p_over = float(np.mean(overloaded[sel])) if n else math.nan
-        lo, hi = _wilson(p_over, n)
         q5, q50, q95 = (np.percentile(torque[sel], [5, 50, 95]) / NMM) if n else [math.nan] * 3
-        rows.append(
-            {
-                "temperature [degC]": t_c,
-                "nominal [N.mm]": nominal[k]["running_torque"] / NMM,
-                "p5 [N.mm]": float(q5),
-                "median [N.mm]": float(q50),
-                "p95 [N.mm]": float(q95),
-                "P(overloaded)": p_over,
-                "P low (95%)": lo,
-                "P high (95%)": hi,
-                "runs": n,
-            }
-        )
+        row = {
+            "temperature [degC]": t_c,
+            "nominal [N.mm]": nominal[k]["running_torque"] / NMM,
+            "p5 [N.mm]": float(q5),
+            "median [N.mm]": float(q50),
+            "p95 [N.mm]": float(q95),
+        }
+        for flag, values in flags.items():
+            p = float(np.mean(values[sel])) if n else math.nan
+            lo, hi = _wilson(p, n)
+            row |= {f"P({flag})": p, f"P({flag}) low (95%)": lo, f"P({flag}) high (95%)": hi}
+        rows.append(row | {"runs": n})
     tol = catalog.tolerances(mounting)
     result = ScenarioResult(
         "montecarlo",
         f"Monte-Carlo tolerance study, {mounting}: {samples} draws of fit and shim, running "
-        f"torque at {SPEED / DEG:g} °/s and overload probability versus temperature",
+        f"torque at {SPEED / DEG:g} °/s and the probabilities of an overload and of a lost preload "
+        "versus temperature",
         list(rows[0]),
         rows,
         summary={
@@ -112,7 +113,8 @@ def run(
         ]
         + [
             "P(overloaded): fraction of draws whose largest Hertz pressure exceeds 4200 MPa "
-            "(ISO 76), with its 95 % Wilson interval.",
+            "(ISO 76); P(unloaded): fraction whose preload is lost (a bearing without axial "
+            "load); each with its 95 % Wilson interval.",
         ],
     )
     result.write_table(out / "montecarlo.csv")
@@ -156,12 +158,14 @@ def _plot(rows, path: Path, title: str) -> Path:
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     ax.set_title("\n".join(textwrap.wrap(title, 85)), fontsize=9)
-    p = np.array([r["P(overloaded)"] for r in rows])
-    lo = np.array([r["P low (95%)"] for r in rows])
-    hi = np.array([r["P high (95%)"] for r in rows])
-    yerr = np.clip([p - lo, hi - p], 0.0, None)  # Wilson bounds hold p up to rounding
-    axp.errorbar(t, p, yerr=yerr, fmt="o-", ms=4, capsize=3)
-    axp.set_ylabel("P(overloaded)")
+    for flag in FLAGS:
+        p = np.array([r[f"P({flag})"] for r in rows])
+        lo = np.array([r[f"P({flag}) low (95%)"] for r in rows])
+        hi = np.array([r[f"P({flag}) high (95%)"] for r in rows])
+        yerr = np.clip([p - lo, hi - p], 0.0, None)  # Wilson bounds hold p up to rounding
+        axp.errorbar(t, p, yerr=yerr, fmt="o-", ms=4, capsize=3, label=flag)
+    axp.set_ylabel("probability [-]")
+    axp.legend(fontsize=8)
     axp.set_ylim(-0.05, 1.05)
     axp.set_xlabel("temperature [°C]")
     axp.grid(True, alpha=0.3)

@@ -11,7 +11,9 @@ def b71803():
 
 @pytest.fixture(scope="session")
 def yu_pair():
-    return BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    """Yu's stated data read literally: the frame a rigid E·A/L tube (overloaded at −40 °C,
+    unloaded when warm)."""
+    return BearingPair.from_catalog("yu2017_gimbal_rigid", "krytox_143aa")
 
 
 @pytest.fixture(scope="session")

@@ -65,7 +65,7 @@ def _trajectory(seed, n, radial):
 
 PAIRS = {
     # stated reading, rigid E·A/L loop: overloaded cold, preload lost warm
-    "yu_stated": lambda: BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"),
+    "yu_stated": lambda: BearingPair.from_catalog("yu2017_gimbal_rigid", "krytox_143aa"),
     "yu_printed": lambda: BearingPair.from_catalog("yu2017_gimbal_printed", "krytox_143aa"),
     "yu_yoke": lambda: with_mounting(
         BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"), loop_stiffness=1e6
@@ -73,7 +73,7 @@ PAIRS = {
     "ning_solid": lambda: BearingPair.from_catalog("ning_space_shaft", "mos2_film"),
     # a tight outer fit: the clearance closes when cold (locked)
     "yu_tight": lambda: with_mounting(
-        BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"),
+        BearingPair.from_catalog("yu2017_gimbal_rigid", "krytox_143aa"),
         outer_interference=16e-6,
         loop_stiffness=1e6,
     ),

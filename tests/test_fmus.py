@@ -173,7 +173,7 @@ def test_instances_are_independent_and_all_five_share_a_process(fmus):
     cold = Fmu(fmus["BearingFriction"], "cold").init(temperature=253.15, shim=0.05e-3)
     others = [Fmu(fmus[n], n).init() for n in NAMES[1:]]
     assert hot.get("preload") == 0.0  # play open when hot with no shim
-    assert cold.get("preload") > 100.0
+    assert cold.get("preload") > 30.0  # the 0.05 mm shim squeezed by the cold yoke
     for f in others:
         f.slave.doStep(0.0, 1e-3)
     hot.set(temperature=253.15)

@@ -151,11 +151,18 @@ def test_tolerance_study(tmp_path):
     result = run(tmp_path, samples=40, seed=5, workers=1, progress=False)
     rows = {r["temperature [degC]"]: r for r in result.rows}
     assert len(rows) == len(TEMPS_C) and result.summary["failed runs"] == 0
-    assert rows[-40.0]["P(overloaded)"] == 1.0 and rows[20.0]["P(overloaded)"] == 0.0
+    # the default yoke mounting: never overloaded; the washer's preload is lost when warm
+    # (above about 35 °C for the nominal parts) whatever the tolerances, and held when cold
+    assert all(r["P(overloaded)"] == 0.0 for r in result.rows)
+    assert rows[60.0]["P(unloaded)"] == 1.0 and rows[-40.0]["P(unloaded)"] == 0.0
     for r in result.rows:
         assert r["p5 [N.mm]"] <= r["median [N.mm]"] <= r["p95 [N.mm]"]
-        assert r["P low (95%)"] <= r["P(overloaded)"] <= r["P high (95%)"] + 1e-12
-    assert rows[0.0]["p95 [N.mm]"] > 1.1 * rows[0.0]["p5 [N.mm]"]  # the tolerances matter
+        for flag in ("overloaded", "unloaded"):
+            low, high = r[f"P({flag}) low (95%)"], r[f"P({flag}) high (95%)"]
+            assert low <= r[f"P({flag})"] <= high + 1e-12
+    # the tolerances matter, if less than in a rigid frame: the compliant yoke absorbs part of
+    # a fit or washer deviation (8 % between p5 and p95 at 0 °C)
+    assert rows[0.0]["p95 [N.mm]"] > 1.05 * rows[0.0]["p5 [N.mm]"]
     assert {f.suffix for f in result.files} == {".csv", ".png"}
 
 
