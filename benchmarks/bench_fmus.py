@@ -39,6 +39,13 @@ class Empty(Fmi2Slave):
         return True
 """
 
+
+def _ramp(k: int) -> float:
+    """−60 → +80 °C over 1000 steps and back (a triangle of period 2000 steps) [K]."""
+    phase = (k % 2000) / 1000.0
+    return 213.15 + 140.0 * (phase if phase <= 1.0 else 2.0 - phase)
+
+
 # inputs changed every step (value at step k) and the output read back
 LOOPS = {
     "Empty": (("a", "b", "c", "d"), lambda k: (1.0 + 1e-3 * k, 2.0, 3.0, 4.0), "y"),
@@ -50,6 +57,21 @@ LOOPS = {
     "BearingFriction (speed and axial load change)": (
         ("temperature", "speed", "axial_load", "radial_load"),
         lambda k: (253.15, 0.2 * math.sin(1e-3 * k), 5.0 + math.sin(2e-3 * k), 0.0),
+        "friction_torque",
+    ),
+    "BearingFriction (ramp -60..+80 degC, 20 N axial)": (
+        ("temperature", "speed", "axial_load", "radial_load"),
+        lambda k: (_ramp(k), 0.2 * math.sin(1e-3 * k), 20.0, 0.0),
+        "friction_torque",
+    ),
+    "BearingFriction (ramp, axial 10-30 N, radial 0-20 N)": (
+        ("temperature", "speed", "axial_load", "radial_load"),
+        lambda k: (
+            _ramp(k),
+            0.2 * math.sin(1e-3 * k),
+            20.0 + 10.0 * math.sin(7e-3 * k),
+            10.0 + 10.0 * math.sin(1.1e-2 * k),
+        ),
         "friction_torque",
     ),
     "ActuatorStiffness": (
