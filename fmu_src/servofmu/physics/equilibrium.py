@@ -22,13 +22,16 @@ The tilt arm R is a choice (:func:`tilt_arm_radius`, keyword ``tilt_arm``):
   both the exact first-order axial travel of the centre under a rigid tilt of the inner ring
   and the exact arm of the contact force about the ring centre (both taken in the plane of the
   inner groove centres, as Harris does): the consistent choice for this groove-centre model.
-- ``"pitch"``: R = d_m/2, the pitch radius used by the ISO/TS 16281 reference-life method and
-  the commercial tools built on it (MASTA), for comparing with their tilts. It moves the
+- ``"pitch"``: R = d_m/2 (D_pw/2), the pitch radius, the arm that tools built on the
+  ISO/TS 16281:2008 load distribution (e.g. MASTA) are reported to use; offered to compare
+  with their tilts (not checked here against the standard's own text). It moves the
   kinematics and the moment arm together, so the stiffness stays the exact derivative.
 
-For the same ball loads the two tilts differ by R_i/(d_m/2) (0.5–3.3 % for the catalogue
-bearings); under the same moment by about that ratio squared where the bearing is linear
-(preloaded, small moment), because the tilting stiffness grows as R².
+For the same ball loads the two tilts differ exactly by R_i/(d_m/2) (0.5–3.3 % for the
+catalogue bearings, 1.29 % for the 71803). Under the same moment they differ by that ratio
+squared where the bearing is linear (preloaded, small moment: the tilting stiffness grows as
+R²; 2.6 % for the 71803 at 50 N and 0.1 N·mm), and by about the ratio itself where the tilt
+mostly takes up axial play (no preload, positive clearance: 1.3 % at a pure 10 N·mm).
 
 A single bearing under a moment with no radial constraint (Fr prescribed) tilts mainly about
 its pressure centre, the point on the axis where the contact lines meet: the balls' normal
@@ -96,7 +99,7 @@ def tilt_arm_radius(geom: RaceGeometry, tilt_arm: str = "groove"):
     tilt_arm : {"groove", "pitch"}
         ``"groove"``: R_i = d_i/2 + r_i [m], the locus of inner-groove curvature centres
         (Jones 1960; Harris & Kotzalas 2007, Advanced Concepts ch. 1), the default.
-        ``"pitch"``: d_m/2 [m], the pitch radius of ISO/TS 16281-based tools.
+        ``"pitch"``: d_m/2 [m], the pitch radius, as in ISO/TS 16281-based tools.
 
     Returns
     -------
