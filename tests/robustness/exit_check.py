@@ -25,12 +25,13 @@ import subprocess
 import sys
 from pathlib import Path
 
-NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController")
+NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
 INPUTS = {  # FMU: (a good input set, the input that gets a NaN)
     "BearingFriction": ({"temperature": 253.15, "speed": 0.2, "axial_load": 5.0}, "speed"),
     "ActuatorStiffness": ({"angle": 0.17, "load_torque": 150.0, "temperature": 263.15}, "angle"),
     "DCMotor": ({"voltage": 6.0, "load_torque": 2e-3}, "voltage"),
     "ServoController": ({"reference": 1.0, "measurement": 0.25}, "measurement"),
+    "ThermalNetwork": ({"ambient_temperature": 253.15, "power_loss": 0.05}, "power_loss"),
 }
 
 
