@@ -46,7 +46,18 @@ def test_astm_d1478_record():
     assert t.speed_rpm == pytest.approx(1.0)
     assert t.radial_load == pytest.approx(0.454 * 9.80665)
     assert t.source("speed").startswith("handbook: ASTM D1478 §4.1")
-    assert gt.torque_test("jis_k2220").source("bore").startswith("assumed")
+    jis = gt.torque_test("jis_k2220")
+    assert (jis.bore, jis.outer_diameter, jis.speed_rpm) == (
+        pytest.approx(0.020),
+        pytest.approx(0.047),
+        pytest.approx(1.0),
+    )
+    # bearing and speed as described by JALOS; the housing load is still ASTM's, assumed
+    assert jis.source("bore").startswith("handbook: JALOS Q&A ID-207")
+    assert jis.source("speed").startswith("handbook: JALOS")
+    assert jis.source("housing_mass").startswith("assumed")
+    # the two tests read the running torque after different times
+    assert "10 min" in catalog._table("grease_torques")["tests"]["jis_k2220"]["torques"]
     with pytest.raises(ValueError, match="'astm_d9999' is not one of"):
         gt.torque_test("astm_d9999")
 

@@ -8,8 +8,12 @@ The datasheet tests (records with provenance in ``data/grease_torques.toml``, ``
   temperature, inner ring turned at 1 ± 0.05 r/min; the restraining torque on the outer ring
   is the starting torque and, after 60 min, the running torque (§4.1); housing mass
   454 ± 3 g (§6.1.3); torque [g·cm] = 6.50 × scale reading [g] (§9.1.1).
-- JIS K 2220, low-temperature torque: the stored copy lists the method but not its test
-  conditions; the 6204 bearing and 1 r/min of ASTM D1478 are assumed.
+- JIS K 2220, low-temperature torque (5.14; §18 in the current edition), as described by the
+  Japan Lubricating Oil Society (JALOS Q&A ID-207): a 6204 open ball bearing filled 100 %,
+  held 2 h at the test temperature, inner ring turned at 1 r/min; the starting torque is the
+  largest reading on starting, the running torque the reading after 10 min (not ASTM's 60 min,
+  so the two tests' running torques are not the same quantity). The housing mass is not in
+  the stored description; ASTM D1478's 454 g is assumed.
 
 Running torque: Palmgren's load-independent torque (Palmgren 1959, *Ball and Roller Bearing
 Engineering*; the form of Yu 2017 eq 8, :func:`friction.palmgren_viscous_torque`)
@@ -33,6 +37,8 @@ Limits (stated, not modelled):
 - ks constant in temperature and size is an assumption without a cited law.
 - Only where ν·n of the user's bearing lies near the test's (1 r/min, cold): at high speed
   the grease channels and Palmgren's oil-bath correlation no longer describes it.
+- The running torque is read after different times in the two tests (JIS 10 min, ASTM
+  60 min), while the fill is still being worked; f0 holds for the test it was calibrated on.
 """
 
 from __future__ import annotations
