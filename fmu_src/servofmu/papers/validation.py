@@ -15,6 +15,11 @@ Sources (data with provenance in ``physics/data/friction_measurements.toml`` and
    model (:mod:`physics.rolling_friction`, catalogue constants of series 62) as a
    prediction; the grease term (:mod:`physics.grease_torque`) is calibrated on this point, so
    its rows are "calibrated", and its prediction is untested for want of a second point.
+
+Issue 17 asks for at least two independent oil-lubricated sources. The candidates searched for a
+second one, and why none could be used, are data (``[[searched]]`` in
+``friction_measurements.toml``); the row ``validation.second_oil_source`` counts the sources
+recorded and lists the candidates while there is only one.
 """
 
 from __future__ import annotations
@@ -224,6 +229,7 @@ def _balan_files(out_dir: Path, series, cols) -> list[str]:
 
 def _grease_rows() -> tuple[list[Row], list[Parameter]]:
     key = "molykote_g1074"
+    label = "Molykote G-1074"
     rows, params = [], []
     nu_model = base_oil_viscosity(key)
     consts = skf_constants("62")
@@ -243,12 +249,14 @@ def _grease_rows() -> tuple[list[Row], list[Parameter]]:
             mu_bl=MU_BOUNDARY,
             mu_ehl=MU_EHL["synthetic"],
         )
-        where = f"{key}, {test.name} at {t_c:.0f} °C, {pt.source('temperature')}."
+        where = f"{label}, {test.name} at {t_c:.0f} °C, {pt.source('temperature')}."
         skf_miss = (
-            "The test bearing (open 6204 with its cage, no seals) is packed completely full; "
-            "the SKF model has no term for a bearing packed completely full of cold grease: "
-            "no churning of the fill, no thickener yield. Its sliding and rolling terms see "
-            "only the base oil's viscosity and the 4.45 N housing load."
+            "The test bearing (open 6204 with its cage, no seals) is packed completely full and "
+            "turned at 1 r/min, the running torque read after 10 min (JIS K 2220 as described "
+            "by JALOS); the SKF model has no term for a bearing packed completely full of cold "
+            "grease: no churning of the fill, no thickener yield. Its sliding and rolling terms "
+            "see only the base oil's viscosity and the 4.45 N housing load (assumed as ASTM "
+            "D1478's)."
         )
         for which, what, published, computed in (
             ("running", "running torque, SKF model (series 62 constants, literature μ)",
@@ -316,8 +324,12 @@ def _grease_rows() -> tuple[list[Row], list[Parameter]]:
             f"{n_points} published point(s) of {key} found",
             miss_note=(
                 "Untested: no second low-temperature torque of the same grease was readable in "
-                "the stored sources (Krytox 240AC, Braycote 601EF, Mobil 28, AeroShell 33 and "
-                "Rheolube 2000 datasheets were searched for and not found)."
+                "the stored sources. Searched: the G-1074 TDS (only its −40 °C JIS value is "
+                "stored); ASTM D1478 / IP 186 torques in the datasheets of Mobilgrease 28, "
+                "AeroShell Grease 33, Krytox GPL 205/240AC, Braycote 601EF, Rheolube 2000, "
+                "Molykote 33 and Klüber Isoflex; ASTM F2489 (first page only); Japanese grease "
+                "patents with JIS K 2220 examples (headers only). MIL-PRF-23827/81322 give "
+                "torque limits, not measurements (list in data/grease_torques.toml)."
             ),
         )
     )
@@ -335,6 +347,28 @@ def _grease_rows() -> tuple[list[Row], list[Parameter]]:
         Parameter("skf.krs", 6e-8, "", "catalogue: SKF 10000 EN, grease and oil-air lubrication"),
     ]
     return rows, params
+
+
+def _second_source_row() -> Row:
+    """The trend row for issue 17's "at least two independent sources": the number of sources
+    recorded in ``friction_measurements.toml`` and, while it is one, the candidates that were
+    searched for and why none is used (its ``[[searched]]`` entries)."""
+    data = catalog._table("friction_measurements")
+    sources = [k for k, v in data.items() if isinstance(v, dict)]
+    searched = data.get("searched", [])
+    listed = "; ".join(f"{c['cite']} ({c['why']})" for c in searched)
+    return trend(
+        "validation.second_oil_source",
+        "a second independent oil-lubricated torque measurement (issue 17: two sources)",
+        "bearing geometry, load, speed, lubricant and its viscosity, from another laboratory",
+        len(sources) >= 2,
+        f"{len(sources)} source(s) recorded: {', '.join(sources)}",
+        miss_note=(
+            "Untested on a second source: none readable in the stored copies gives all of "
+            f"them for a ball bearing. Searched ({len(searched)}; references and what each "
+            f"stored copy holds in data/friction_measurements.toml): {listed}."
+        ),
+    )
 
 
 def reproduce(out_dir) -> Report:
@@ -360,7 +394,7 @@ def reproduce(out_dir) -> Report:
     )
     rows, params, files = _balan_rows(out_dir)
     g_rows, g_params = _grease_rows()
-    rep.rows = rows + g_rows
+    rep.rows = [*rows, _second_source_row(), *g_rows]
     rep.parameters = params + g_params
     rep.files = files
     return rep
