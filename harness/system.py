@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 import tempfile
 from dataclasses import dataclass, field
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 
 from servofmu.build.archive import read_member, safe_extract
 from servofmu.build.choices import choice_items
@@ -181,6 +181,21 @@ def _model_variables(fmu: Path) -> tuple[str, str, dict[str, Variable], bool]:
     return md.coSimulation.modelIdentifier, md.guid, variables, feedthrough
 
 
+def _outside(root: Path, source: str) -> str:
+    """Why ``source`` (a component's FMU or parameter set, relative to the system folder
+    ``root``) is refused, or "" when it lies inside the folder (the archive): an absolute
+    path, a URI, a drive, ``..`` or a link that resolves elsewhere would load a file from
+    outside the system."""
+    rel = PurePosixPath(source)
+    if rel.is_absolute() or "\\" in source or (rel.parts and ":" in rel.parts[0]):
+        return "is an absolute path or URI: it must be a path inside the system folder"
+    if ".." in rel.parts:
+        return "leaves the system folder ('..'): it must be a path inside it"
+    if not (root / source).resolve().is_relative_to(root.resolve()):
+        return "resolves outside the system folder (a link): it must lie inside it"
+    return ""
+
+
 def load_system(path, fmu_dir=None) -> System:
     """Read and check the system at ``path`` (``.ssp`` archive, folder, or its
     ``SystemStructure.ssd``). Component sources are resolved relative to the system folder;
@@ -228,17 +243,23 @@ def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
             ctype = None if kind_elem is None else kind_elem.tag.split("}")[1]
             unit = None if kind_elem is None else kind_elem.get("unit")
             connectors[c.get("name")] = (c.get("kind"), ctype, unit)
+        if source and (outside := _outside(root, source)):
+            problems.append(f"component {name!r}: FMU source {source!r} {outside}")
+            source = None
         fmu = (root / source) if source else None
         if fmu is not None and not fmu.is_file() and fmu_dir is not None:
             fmu = Path(fmu_dir) / Path(source).name
         comp = Component(name, source, fmu if fmu and fmu.is_file() else None, connectors)
-        if comp.fmu is None:
+        if comp.fmu is None and source is not None:
             hint = " (build it with `servofmu build`)" if fmu_dir is None else f" or in {fmu_dir}"
             problems.append(f"component {name!r}: FMU {source!r} not found in {root}{hint}")
         for binding in elem.findall("ssd:ParameterBindings/ssd:ParameterBinding", NS):
             src = binding.get("source")
             if src is None:
                 problems.append(f"component {name!r}: only .ssv parameter bindings are supported")
+                continue
+            if outside := _outside(root, src):
+                problems.append(f"component {name!r}: parameter set {src!r} {outside}")
                 continue
             ssv_file = root / src
             if not ssv_file.is_file():
