@@ -297,6 +297,7 @@ def _sweep(args) -> int:
     from servofmu.harness.sweep import (
         ModelTask,
         SystemTask,
+        check_table_path,
         cross,
         grid_points,
         run_sweep,
@@ -304,6 +305,8 @@ def _sweep(args) -> int:
     )
     from servofmu.physics.bearing_parameters import default_parameters
 
+    out = Path(args.out or "out/sweep/results.csv")
+    check_table_path(out)
     axes = dict(_axis(g) for g in args.grid)
     dists = dict(_distribution(s) for s in args.sample)
     samples = sample_points(dists, args.samples, args.seed) if dists else []
@@ -328,8 +331,15 @@ def _sweep(args) -> int:
     result = run_sweep(
         task, points, workers=args.workers, scheduler=args.scheduler, chunk_size=args.chunk
     )
-    out = Path(args.out or "out/sweep/results.csv")
     result.write(out)
+    if result.interrupted:
+        done = len(result.rows) - len(result.failed)
+        print(
+            f"servofmu: interrupted: {done} of {len(result.rows)} runs finished; the others are "
+            f"marked 'interrupted' in {out}",
+            file=sys.stderr,
+        )
+        return 130
     print(
         f"{len(result.rows)} runs on {result.workers} worker(s) in {result.wall_time:.3g} s; "
         f"{len(result.failed)} failed; table: {out}"
