@@ -194,21 +194,29 @@ def _scenario(args) -> int:
 
 
 def _mounting_for(bearing: str) -> str:
-    """The catalogue mounting of ``bearing``: one with calibrated coefficients first."""
+    """The catalogue mounting of ``bearing`` when it has exactly one; otherwise the user must
+    name it (the mounting decides fits, preload loop and materials: a wrong default fits
+    nothing, or fits wrong coefficients)."""
     from .physics import catalog
 
     keys = [k for k in catalog.keys("mountings") if catalog.mounting(k).bearing_key == bearing]
+    if len(keys) == 1:
+        return keys[0]
     if not keys:
         raise ValueError(
             f"bearing = {bearing!r}: no catalogue mounting for it; name one with --mounting "
             f"({catalog.keys('mountings')})"
         )
-    with_coefficients = set(catalog.keys("coefficients"))
-    return sorted(keys, key=lambda k: (k not in with_coefficients, k))[0]
+    raise ValueError(
+        f"--mounting is required: bearing {bearing} has {len(keys)} catalogue mountings, and "
+        f"the one the data were measured on decides fits, preload loop and materials; name "
+        f"one of {keys} (physics/data/mountings.toml describes each)"
+    )
 
 
 def _calibrate(args) -> int:
     from .calibration import (
+        UNKNOWNS,
         calibrate,
         parse_quantity,
         plot,
@@ -217,16 +225,17 @@ def _calibrate(args) -> int:
         write_residuals,
         write_ssv,
     )
-    from .physics.bearing_parameters import default_parameters
+    from .physics.bearing_parameters import default_parameters, pair_from_parameters
 
-    data = read_measurements(args.data)
-    mounting = args.mounting or _mounting_for(args.bearing)
+    # every argument first: nothing is read or fitted with a bad one
+    mounting = args.mounting or _mounting_for(args.bearing or "71803")
     params = default_parameters(mounting, args.lubrication)
-    if args.bearing:
+    if args.bearing:  # another bearing in the mounting (default: the mounting's own)
         params["bearing"] = args.bearing
     if args.lubricant:
         params["lubricant"] = args.lubricant
     _set_known(params, args.set)
+    pair_from_parameters(params)  # a catalogue key or value that does not fit: exit 2
     speed = parse_quantity(args.speed, "speed") if args.speed else None
     unknowns = (
         [u.strip() for u in args.fit.split(",") if u.strip()]
@@ -237,13 +246,18 @@ def _calibrate(args) -> int:
             else ["sliding_friction"]
         )
     )
+    for name in unknowns:
+        if name not in UNKNOWNS:
+            raise ValueError(f"--fit {args.fit}: {name!r} is not one of {list(UNKNOWNS)}")
+    data = read_measurements(args.data)
     cal = calibrate(data, params, unknowns, speed=speed, residual=args.residual)
     out = Path(args.out or f"out/calibration/{Path(args.data).stem}")
-    files = [
-        write_residuals(cal, out / "residuals.csv"),
-        plot(cal, out / "calibration.png"),
-        write_ssv(cal.parameters, out / "calibrated.ssv", component=args.component),
-    ]
+    files = [write_residuals(cal, out / "residuals.csv"), plot(cal, out / "calibration.png")]
+    ssv = out / "calibrated.ssv"
+    if cal.poor and not args.allow_poor_fit:
+        ssv.unlink(missing_ok=True)  # no parameter set of an earlier run passes for this one
+    else:
+        files.append(write_ssv(cal.parameters, ssv, component=args.component))
     text = to_text(cal)
     (out / "report.txt").write_text(text + "\n")
     if args.json:
@@ -253,6 +267,18 @@ def _calibrate(args) -> int:
     else:
         print(text)
         print("\n".join(f"file: {f}" for f in [out / "report.txt", *files]))
+    if cal.poor:
+        what = f"{cal.problems[0]}" + (
+            f" (and {len(cal.problems) - 1} more)" if len(cal.problems) > 1 else ""
+        )
+        if not args.allow_poor_fit:
+            print(
+                f"servofmu: calibration failed: {what}; no calibrated.ssv written (report in "
+                f"{out / 'report.txt'}; --allow-poor-fit writes it anyway)",
+                file=sys.stderr,
+            )
+            return 1
+        print(f"servofmu: warning: poor fit accepted (--allow-poor-fit): {what}", file=sys.stderr)
     return 0
 
 
@@ -539,8 +565,14 @@ def build_parser() -> argparse.ArgumentParser:
         "are comments.",
     )
     c.add_argument("data", help="CSV file of measured friction torque")
-    c.add_argument("--bearing", default="71803", help="bearing designation (default 71803)")
-    c.add_argument("--mounting", help="catalogue mounting (default: the bearing's)")
+    c.add_argument(
+        "--bearing", help="bearing designation (default: the mounting's; 71803 without one)"
+    )
+    c.add_argument(
+        "--mounting",
+        help="catalogue mounting the data were measured on (required when the bearing has "
+        "more than one, as the 71803: yu2017_gimbal, yu2017_gimbal_printed, …)",
+    )
     c.add_argument("--lubrication", choices=("grease", "solid"), default="grease")
     c.add_argument("--lubricant", help="catalogue lubricant (default: the lubrication's)")
     c.add_argument(
@@ -563,6 +595,12 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument(
         "--component",
         help="write component.name parameters (an SSP variant) instead of bare names",
+    )
+    c.add_argument(
+        "--allow-poor-fit",
+        action="store_true",
+        help="accept a fit at a bound or missing the data beyond their scatter: write "
+        "calibrated.ssv and exit 0 (the report still says POOR FIT)",
     )
     c.add_argument("--json", action="store_true", help="print the result as JSON")
     c.add_argument("--out", help="output directory (default out/calibration/DATA)")
