@@ -12,12 +12,13 @@ Lines starting with ``#`` are comments (provenance of the data); blank lines are
 other columns are ignored and listed. Every problem is a :class:`DataError` naming the file,
 the line and the column (the first problem in the file).
 
-The file is read in blocks of :data:`BLOCK_LINES` lines, and each block is reduced at once to
-per-group statistics: points of one temperature, speed and direction form a group, which keeps
-its count, the mean and the sum of squared deviations of the torque and of its reciprocal
-(Welford/Chan, exact to rounding), and its first line. The memory a file needs grows with its
-number of distinct operating points, not with its length; least squares on these statistics
-is the same as on the points (see :mod:`.fit`).
+The file is read in blocks of :data:`BLOCK_CHARS` characters, parsed by numpy's C reader
+(``numpy.loadtxt``; a block with a problem is read again line by line for the message), and
+each block is reduced at once to per-group statistics: points of one temperature, speed and
+direction form a group, which keeps its count, the mean and the sum of squared deviations of
+the torque and of its reciprocal (Welford/Chan, exact to rounding), and its first line. The
+memory a file needs grows with its number of distinct operating points, not with its length;
+least squares on these statistics is the same as on the points (see :mod:`.fit`).
 """
 
 from __future__ import annotations
@@ -26,7 +27,6 @@ import csv
 import math
 import re
 from dataclasses import dataclass, field
-from itertools import islice
 from pathlib import Path
 
 import numpy as np
@@ -50,8 +50,9 @@ class DataError(ValueError):
     """Measured data that cannot be used; the message names file, line and column."""
 
 
-#: Lines read and reduced at once (bounds the memory of a long file).
-BLOCK_LINES = 1 << 16
+#: Characters read and reduced at once (bounds the memory of a long file: about 10 times
+#: this while a block is parsed).
+BLOCK_CHARS = 1 << 22
 
 
 @dataclass(frozen=True)
@@ -166,7 +167,7 @@ def read_measurements(path) -> FrictionMeasurements:
     path = Path(path)
     name = path.name
     try:
-        fh = path.open(newline="")
+        fh = path.open()
     except OSError as exc:
         raise DataError(f"{path}: cannot read ({exc.strerror})") from None
     groups = _Groups()
@@ -174,16 +175,19 @@ def read_measurements(path) -> FrictionMeasurements:
         try:
             header_line, header = _header(fh, name)
             cols, ignored = _columns(header, f"{name} line {header_line}")
-            line = header_line
-            while block := list(islice(fh, BLOCK_LINES)):
-                rows = [
-                    (n, text)
-                    for n, text in enumerate(block, start=line + 1)
-                    if text.strip() and not text.lstrip().startswith("#")
-                ]
-                line += len(block)
-                if rows:
-                    groups.add(*_parse(rows, header, cols, name))
+            line, pending = header_line, ""
+            while True:
+                chunk = fh.read(BLOCK_CHARS)
+                text, pending = pending + chunk, ""
+                cut = text.rfind("\n")
+                if chunk and cut < len(text) - 1:  # keep a partial last line for the next block
+                    text, pending = text[: cut + 1], text[cut + 1 :]
+                if text:
+                    block = _block(text, line + 1, header, cols, name)
+                    groups.add(*block[:5])
+                    line += block[5]
+                if not chunk:
+                    break
         except UnicodeDecodeError as exc:
             raise DataError(f"{name}: not a text file ({exc.reason})") from None
     if not groups.keys:
@@ -193,10 +197,83 @@ def read_measurements(path) -> FrictionMeasurements:
 
 def _header(fh, name: str) -> tuple[int, list[str]]:
     """(line number, cells) of the first line that is neither blank nor a comment."""
-    for n, text in enumerate(fh, start=1):
+    n = 0
+    while text := fh.readline():
+        n += 1
         if text.strip() and not text.lstrip().startswith("#"):
             return n, next(csv.reader([text]))
     raise DataError(f"{name}: no header and no data")
+
+
+_BLANK = re.compile(r"^[ \t\r\f\v]*$", re.MULTILINE)
+
+
+def _block(text: str, first: int, header, cols, name):
+    """The arrays of :func:`_parse` for the lines of ``text`` (numbered from ``first``) and
+    their number: numpy's C reader when the block is clean, else line by line (which raises
+    the first problem)."""
+    lines = text.split("\n")
+    if lines[-1] == "":
+        lines.pop()
+    numbers = np.arange(first, first + len(lines))
+    if "#" not in text and not _BLANK.search(text.rstrip("\n")):  # no comment, blank line
+        fast = _fast(lines, numbers, header, cols)
+        if fast is not None:
+            return (*fast, len(lines))
+    return (*_slow(lines, numbers, header, cols, name), len(lines))
+
+
+def _slow(lines, numbers, header, cols, name):
+    rows = [
+        (n, x) for n, x in zip(numbers.tolist(), lines, strict=True)
+        if x.strip() and not x.lstrip().startswith("#")
+    ]  # fmt: skip
+    if not rows:
+        return (np.zeros(0, int), np.zeros(0), np.zeros(0), np.zeros(0), np.zeros(0, int))
+    fast = _fast([x for _, x in rows], np.array([n for n, _ in rows]), header, cols)
+    return fast if fast is not None else _parse(rows, header, cols, name)
+
+
+def _fast(lines, numbers, header, cols):
+    """:func:`_parse` by ``numpy.loadtxt`` (every row must have the header's cells), or None
+    when any value is missing, not a number, out of range or the direction unknown (then
+    :func:`_parse` finds and names it)."""
+    quantities = {cols[q][0]: q for q in UNITS if q in cols}
+    i_dir = cols["direction"][0] if "direction" in cols else None
+    dtype = [
+        (f"c{i}", float if i in quantities else "U16" if i == i_dir else "U1")
+        for i in range(len(header))
+    ]
+    try:
+        table = np.loadtxt(lines, delimiter=",", dtype=dtype, comments=None, quotechar='"', ndmin=1)
+    except ValueError:
+        return None
+    if len(table) != len(lines):
+        return None
+    values = {}
+    for i, q in quantities.items():
+        factor, offset = UNITS[q][cols[q][2]]
+        values[q] = factor * table[f"c{i}"] + offset
+        if not np.all(np.isfinite(values[q])):
+            return None
+    t, m = values["temperature"], values["torque"]
+    lo, hi = TEMPERATURE_RANGE
+    if not (np.all((t >= lo) & (t <= hi)) and np.all(m != 0.0)):
+        return None
+    w = values.get("speed", np.zeros(len(lines)))
+    direction = np.where(w > 0, 1, np.where(w < 0, 2, 0))
+    if i_dir is not None:
+        text = table[f"c{i_dir}"]
+        direction = np.where(text == DIRECTIONS[0], 1, np.where(text == DIRECTIONS[1], 2, -1))
+        odd = direction < 0
+        if np.any(odd):  # spaces or capitals: normalise those few
+            norm = np.char.lower(np.char.strip(text[odd]))
+            direction[odd] = np.where(
+                norm == DIRECTIONS[0], 1, np.where(norm == DIRECTIONS[1], 2, -1)
+            )
+            if np.any(direction < 0):
+                return None
+    return numbers, t, np.abs(m), np.abs(w), direction
 
 
 def _parse(rows, header, cols, name):
@@ -290,9 +367,13 @@ class _Groups:
         self.stats: list[list] = []  # n, mean M, ss M, mean 1/M, ss 1/M, first line
 
     def add(self, numbers, t, m, w, direction):
-        keys = np.column_stack([t, w, direction.astype(float)])
-        uniq, first, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
+        if not len(numbers):
+            return
+        codes = [np.unique(x, return_inverse=True)[1].ravel() for x in (t, w)]
+        key = (codes[0] * (codes[1].max() + 1) + codes[1]) * 3 + direction
+        _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
         inverse = inverse.ravel()
+        uniq = np.column_stack([t[first], w[first], direction[first]])
         n = np.bincount(inverse)
         stats = [n]
         for y in (m, 1.0 / m):
