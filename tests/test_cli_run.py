@@ -164,3 +164,40 @@ def test_ctrl_c_stops_at_a_step_boundary_and_keeps_the_results(ssp, tmp_path):
     assert len(data) == round(t_stop / 1e-3) + 1 and units["motor.speed"] == "rad/s"
     assert np.all(np.isfinite(data["motor.speed"]))
     assert "interrupted at t =" in (out / "failure.log").read_text()
+
+
+class _Stream:
+    """A stderr stand-in that says whether it is a terminal and counts what is written."""
+
+    def __init__(self, tty: bool):
+        self.tty, self.text = tty, ""
+
+    def isatty(self):
+        return self.tty
+
+    def write(self, text):
+        self.text += text
+
+    def flush(self):
+        pass
+
+
+@pytest.mark.parametrize("tty", [True, False])
+def test_progress_bar_is_live_on_a_terminal_and_quiet_otherwise(monkeypatch, tty):
+    import time
+
+    from servofmu.harness import progress
+
+    stream = _Stream(tty)
+    monkeypatch.setattr(sys, "stderr", stream)
+    bar = progress.progress_bar(200, desc="run", unit="step", delay=0.0)
+    for _ in range(200):
+        time.sleep(0.002)  # 0.4 s: several refreshes on a terminal, none in a log
+        bar.update()
+    bar.close()
+    redraws = stream.text.count("\r")
+    if tty:
+        assert redraws >= 3, stream.text
+    else:  # at most its first and last status, each a line of its own at the end
+        assert redraws <= 2 and stream.text.endswith("\n"), stream.text
+        assert "200/200" in stream.text

@@ -625,8 +625,8 @@ def main(argv: list[str] | None = None) -> int:
     except Interrupted as exc:
         print(f"servofmu: {exc}", file=sys.stderr)
         return 130
-    except KeyboardInterrupt:
-        print("servofmu: interrupted", file=sys.stderr)
+    except KeyboardInterrupt as exc:
+        print(f"servofmu: interrupted{f'; {exc}' if str(exc) else ''}", file=sys.stderr)
         return 130
     except HarnessError as exc:
         print(f"servofmu: run failed: {exc}", file=sys.stderr)
