@@ -374,3 +374,39 @@ def test_without_repeated_points_a_fit_is_judged_against_an_assumed_scatter():
     yoke = default_parameters("yu2017_gimbal")
     bad = calibrate(one_direction, yoke, ["palmgren_s0", "sliding_friction"])
     assert bad.poor and "rms relative residual" in bad.problems[0]
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["--fit", "mu"], "--fit mu: 'mu' is not one of"),
+        (["--speed", "10 furlongs"], "speed = '10 furlongs': write a number and one of the units"),
+        (["--speed", "nan deg/s"], "--speed 'nan deg/s': the test speed must be finite and ≥ 0"),
+        (["--speed", "-5 deg/s"], "--speed '-5 deg/s': the test speed must be finite and ≥ 0"),
+        (["--set", "shim=abc"], "--set 'shim=abc': shim takes a number"),
+        (["--set", "nope=1"], "--set 'nope=1': write NAME=VALUE"),
+        (["--lubricant", "honey"], "lubricant key = 'honey' is not one of"),
+        (["--bearing", "9999"], "bearing key = '9999' is not one of"),
+        (["--mounting", "nowhere"], "mounting key = 'nowhere' is not one of"),
+        (["--residual", "cubic"], "argument --residual: invalid choice: 'cubic'"),
+    ],
+)
+def test_cli_calibrate_refuses_bad_arguments_before_reading_the_data(
+    tmp_path, capsys, monkeypatch, args, message
+):
+    from servofmu import calibration
+    from servofmu.cli import main
+
+    def unread(path):
+        raise AssertionError("the data were read")
+
+    monkeypatch.setattr(calibration, "read_measurements", unread)
+    base = ["calibrate", _example(), "--mounting", "yu2017_gimbal_printed", "--speed", "10 deg/s"]
+    out = tmp_path / "cal"
+    try:
+        rc = main([*base, *args, "--out", str(out)])
+    except SystemExit as exc:  # argparse's own checks
+        rc = exc.code
+    err = capsys.readouterr().err
+    assert rc == 2 and message in err, err
+    assert len(err.strip().splitlines()) == 1 and not out.exists()

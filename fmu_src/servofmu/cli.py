@@ -237,6 +237,8 @@ def _calibrate(args) -> int:
     _set_known(params, args.set)
     pair_from_parameters(params)  # a catalogue key or value that does not fit: exit 2
     speed = parse_quantity(args.speed, "speed") if args.speed else None
+    if speed is not None and not (np.isfinite(speed) and speed >= 0.0):
+        raise ValueError(f"--speed {args.speed!r}: the test speed must be finite and ≥ 0")
     unknowns = (
         [u.strip() for u in args.fit.split(",") if u.strip()]
         if args.fit
