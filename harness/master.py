@@ -612,14 +612,8 @@ def _simulate(system, units, order, plan: RunPlan, signals, settings, t0_wall, s
             res.csv = res.to_csv(Path(out_dir) / "results.csv")
         return res
 
-    def fail(name, what, status, t):
-        u = units[name]
-        label = STATUS[status] if 0 <= status < 6 else str(status)
-        log = " | ".join(list(u.log)[-5:]) or "(no log message)"
-        message = (
-            f"component {name!r} ({u.comp.model_identifier}) returned fmi2{label} from {what} at "
-            f"t = {t:.6g} s: {log}"
-        )
+    def stop(message, error=HarnessError, **kw):
+        """End the run: the rows so far (on disk too), the FMUs' log in failure.log."""
         res = result(stored[0], True, message)
         details = "\n".join(
             [message, ""] + [f"[{n}] {line}" for n, unit in units.items() for line in unit.log]
@@ -631,21 +625,19 @@ def _simulate(system, units, order, plan: RunPlan, signals, settings, t0_wall, s
             where = f"; the FMUs' log in {log_file}"
         if res.csv and len(res.data):
             where += f"; results up to t = {res.data['time'][-1]:.6g} s in {res.csv}"
-        raise HarnessError(message + where, result=res, details=details)
+        raise error(message + where, result=res, details=details, **kw)
+
+    def fail(name, what, status, t):
+        u = units[name]
+        label = STATUS[status] if 0 <= status < 6 else str(status)
+        log = " | ".join(list(u.log)[-5:]) or "(no log message)"
+        stop(
+            f"component {name!r} ({u.comp.model_identifier}) returned fmi2{label} from {what} at "
+            f"t = {t:.6g} s: {log}"
+        )
 
     def interrupted(t):
-        res = result(stored[0], True, f"interrupted at t = {t:.6g} s")
-        details = "\n".join(
-            [res.message, ""] + [f"[{n}] {line}" for n, unit in units.items() for line in unit.log]
-        )
-        where = ""
-        if out_dir is not None:
-            log_file = Path(out_dir) / "failure.log"
-            log_file.write_text(details + "\n")
-            where = f"; the FMUs' log in {log_file}"
-        if res.csv and len(res.data):
-            where += f"; results up to t = {res.data['time'][-1]:.6g} s in {res.csv}"
-        raise Interrupted(res.message + where, result=res, details=details, time=t)
+        stop(f"interrupted at t = {t:.6g} s", Interrupted, time=t)
 
     def read(name):
         u = units[name]
