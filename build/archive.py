@@ -1,9 +1,10 @@
 """Safe unpacking of .ssp and .fmu archives (zip), for the build's validation and the harness.
 
 Refused: entries with absolute paths, drive letters, backslashes or ``..`` components, links
-(symbolic links stored in the zip), more than ``max_entries`` entries, or more than
-``max_bytes`` unpacked in total — counted while unpacking, not trusted from the headers
-(zip bombs lie about sizes)."""
+(symbolic links stored in the zip), two entries of one name (a reader would take either),
+more than ``max_entries`` entries, or more than ``max_bytes`` unpacked in total — the sizes
+the headers declare are checked before anything is written (a zip bomb is refused at once),
+and the bytes are counted again while unpacking (a header may lie)."""
 
 from __future__ import annotations
 
@@ -38,6 +39,30 @@ def check_member(info: zipfile.ZipInfo, archive: Path) -> PurePosixPath:
     return path
 
 
+def check_members(infos, archive: Path, max_bytes: int) -> list[PurePosixPath]:
+    """The safe relative paths of all entries (:func:`check_member`), or ArchiveError for the
+    first unsafe entry, a name that occurs twice (also after normalisation: ``a//b``,
+    ``./a/b``), or declared uncompressed sizes above ``max_bytes`` in total."""
+    paths, seen = [], {}
+    for info in infos:
+        path = check_member(info, archive)
+        key = path.as_posix().rstrip("/")
+        if key in seen:
+            raise ArchiveError(
+                f"{archive.name}: entry {info.filename!r} occurs twice (also as "
+                f"{seen[key]!r}): a reader would take either"
+            )
+        seen[key] = info.filename
+        paths.append(path)
+    declared = sum(info.file_size for info in infos)
+    if declared > max_bytes:
+        raise ArchiveError(
+            f"{archive.name}: its entries declare {declared} bytes unpacked, more than "
+            f"{max_bytes}; refusing a possible zip bomb (nothing unpacked)"
+        )
+    return paths
+
+
 def safe_extract(archive, dest, max_entries: int | None = None, max_bytes: int | None = None):
     """Unpack ``archive`` into ``dest`` (created) after checking every entry; returns dest.
     Limits default to :data:`MAX_ENTRIES` and :data:`MAX_BYTES` (read at call time). On a
@@ -53,7 +78,7 @@ def safe_extract(archive, dest, max_entries: int | None = None, max_bytes: int |
         infos = zf.infolist()
         if len(infos) > max_entries:
             raise ArchiveError(f"{archive.name}: {len(infos)} entries, more than {max_entries}")
-        members = [(info, check_member(info, archive)) for info in infos]
+        members = list(zip(infos, check_members(infos, archive, max_bytes), strict=True))
         created = not dest.exists()
         dest.mkdir(parents=True, exist_ok=True)
         root = dest.resolve()
@@ -96,11 +121,17 @@ def read_member(archive, name: str, max_bytes: int = 64 * 1024**2) -> bytes:
     archive = Path(archive)
     try:
         with zipfile.ZipFile(archive) as zf:
-            try:
-                info = zf.getinfo(name)
-            except KeyError:
-                raise ArchiveError(f"{archive.name}: no {name}") from None
-            check_member(info, archive)
+            infos = zf.infolist()
+            check_members(infos, archive, MAX_BYTES)  # one entry of each name, sizes declared
+            matches = [i for i in infos if i.filename == name]
+            if not matches:
+                raise ArchiveError(f"{archive.name}: no {name}")
+            info = matches[0]
+            if info.file_size > max_bytes:
+                raise ArchiveError(
+                    f"{archive.name}: entry {name!r} declares {info.file_size} bytes, more "
+                    f"than {max_bytes}"
+                )
             data = bytearray()
             with zf.open(info) as src:
                 while chunk := src.read(_CHUNK):
@@ -129,6 +160,11 @@ def check_archive(archive) -> list[str]:
     for info in infos:
         try:
             check_member(info, archive)
+        except ArchiveError as exc:
+            problems.append(str(exc))
+    if not problems:
+        try:
+            check_members(infos, archive, MAX_BYTES)
         except ArchiveError as exc:
             problems.append(str(exc))
     return problems

@@ -33,9 +33,24 @@ class SystemError_(HarnessError):
         return super().__str__() + ":\n  - " + "\n  - ".join(self.problems)
 
 
-class ParameterError(HarnessError, ValueError):
+class ArgumentError(HarnessError, ValueError):
+    """An argument of a run (times, overrides, signals, names to record) is unusable; raised
+    before any FMU is instantiated (bad input: the command line exits 2)."""
+
+
+class ParameterError(ArgumentError):
     """A parameter value or variant given to a run does not fit its variable; raised before
     any FMU is instantiated (bad input: the command line exits 2)."""
+
+
+class Interrupted(HarnessError):
+    """A run stopped at a step boundary on request (Ctrl-C): ``result`` holds the rows up to
+    that step (written to disk too when the run had an output folder), ``time`` the time [s]
+    it stopped at. The command line exits 130."""
+
+    def __init__(self, message: str, result=None, details: str = "", time: float = 0.0):
+        super().__init__(message, result=result, details=details)
+        self.time = time
 
 
 class ArchiveRefused(HarnessError, ArchiveError):

@@ -16,21 +16,29 @@ propagate the connections, exit initialization mode, propagate again and record 
 
 A component that answers fmi2Discard or worse ends the run: :class:`~.errors.HarnessError`
 names the component, the time and the FMU's last log messages, and carries the results up
-to the failure (written to disk too when the run has an output folder).
+to the failure (written to disk too when the run has an output folder). Ctrl-C stops the run
+at the next step boundary (:mod:`.interrupt`) the same way, with :class:`~.errors.Interrupted`.
+
+Every argument (times, overrides against their variables' type and range, signals, names to
+record) is checked before any FMU is instantiated: :class:`~.errors.ArgumentError`.
 """
 
 from __future__ import annotations
 
 import ctypes
+import math
 import time as _time
 from collections import deque
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
-from .errors import HarnessError, ParameterError
-from .system import System, describe_items, load_system
+from .errors import ArgumentError, HarnessError, Interrupted, ParameterError
+from .interrupt import interruptible
+from .progress import progress_bar
+from .system import System, describe_items, load_system, out_of_range
+from .units import TIME, Scale, header, label
 
 STATUS = ("OK", "Warning", "Discard", "Error", "Fatal", "Pending")
 ALGORITHMS = ("gauss-seidel", "jacobi")
@@ -47,6 +55,7 @@ class RunResult:
     message: str = ""
     csv: Path | None = None
     wall_time: float = 0.0
+    units: dict[str, Scale] = field(default_factory=dict)  # field name → unit and display
 
     @property
     def names(self) -> tuple[str, ...]:
@@ -55,8 +64,13 @@ class RunResult:
     def __getitem__(self, name: str) -> np.ndarray:
         return self.data[name]
 
+    def scale(self, name: str) -> Scale:
+        """Unit and display unit of field ``name`` (``time``: s)."""
+        return TIME if name == "time" else self.units.get(name, Scale(None))
+
     def to_csv(self, path) -> Path:
-        """Write the results as CSV (header: field names)."""
+        """Write the results as CSV in the FMUs' SI units, headers ``name [unit]``
+        (:func:`~.units.read_results` reads it back by name)."""
         path = Path(path)
         path.parent.mkdir(parents=True, exist_ok=True)
         np.savetxt(
@@ -65,14 +79,15 @@ class RunResult:
             if len(self.data)
             else np.empty((0, len(self.names))),
             delimiter=",",
-            header=",".join(self.names),
+            header=",".join(header(n, self.scale(n)) for n in self.names),
             comments="",
             fmt="%.12g",
         )
         return path
 
     def plot(self, path, names, title: str = "") -> Path:
-        """Plot the fields ``names`` against time to a PNG (one axis each)."""
+        """Plot the fields ``names`` against time to a PNG (one axis each), in the display
+        units the FMUs declare (N·mm, °C, …), each axis labelled with its unit."""
         import matplotlib
 
         matplotlib.use("Agg")
@@ -84,8 +99,12 @@ class RunResult:
             len(names), 1, sharex=True, figsize=(7, 1.8 + 1.6 * len(names)), squeeze=False
         )
         for ax, name in zip(axes[:, 0], names, strict=True):
-            ax.plot(self.data["time"], self.data[name])
-            ax.set_ylabel(name, fontsize=8)
+            scale = self.scale(name)
+            ax.plot(self.data["time"], scale.shown(self.data[name]))
+            ax.set_ylabel(label(name, scale).replace(" [", "\n["), fontsize=8)
+            if scale.boolean:
+                ax.set_ylim(-0.15, 1.15)
+                ax.set_yticks([0, 1], ["false", "true"])
             ax.grid(True, alpha=0.3)
         axes[-1, 0].set_xlabel("time [s]")
         fig.suptitle(title or self.system, fontsize=10)
@@ -230,20 +249,180 @@ def run(
     progress : show a progress bar when the run takes longer than two seconds
     output_interval : keep a row every this many seconds (a multiple of the step; default
         every step), and always the last one
+
+    Raises
+    ------
+    ArgumentError : an unusable argument (:func:`check_run`), before any FMU is instantiated
+    HarnessError : a component failed; ``result`` holds the rows up to the failure
+    Interrupted : Ctrl-C (SIGINT to the main thread): stopped at the next step boundary, FMUs
+        freed, ``result`` holding the rows so far
     """
     own = not isinstance(system, System)
     sys_ = load_system(system, fmu_dir=fmu_dir) if own else system
     try:
-        settings = _Settings(algorithm, record, out_dir, progress, output_interval)
-        return _run(sys_, parameters, signals or {}, start, stop, step, settings)
+        plan = check_run(
+            sys_,
+            parameters=parameters,
+            signals=signals,
+            start=start,
+            stop=stop,
+            step=step,
+            algorithm=algorithm,
+            record=record,
+            output_interval=output_interval,
+        )
+        settings = _Settings(algorithm, plan.record, out_dir, progress, output_interval)
+        with interruptible() as stop_request:
+            return _run(sys_, plan, signals or {}, settings, stop_request)
     finally:
         if own:
             sys_.close()
 
 
-def _overrides(system: System, parameters) -> dict[str, object]:
+@dataclass(frozen=True)
+class RunPlan:
+    """The checked arguments of a run (:func:`check_run`): times [s], the number of steps,
+    the rows kept (every ``every``-th step and the last), the typed overrides and the names
+    recorded."""
+
+    start: float
+    stop: float
+    step: float
+    n_steps: int
+    every: int
+    overrides: dict
+    record: list
+
+
+def check_run(
+    system: System,
+    *,
+    parameters=None,
+    signals=None,
+    start=None,
+    stop=None,
+    step=None,
+    algorithm: str = "gauss-seidel",
+    record=None,
+    output_interval=None,
+) -> RunPlan:
+    """Every argument of :func:`run` checked against ``system`` without instantiating
+    anything: :class:`~.errors.ArgumentError` naming the argument, its value and what is
+    valid (times finite, a positive step no longer than the run and dividing it; overrides
+    naming a parameter or an unconnected input, of its type and within its range; signals on
+    unconnected inputs; recorded names that are outputs or signal-driven inputs)."""
+    if algorithm not in ALGORITHMS:
+        raise ArgumentError(f"algorithm = {algorithm!r} is not one of {list(ALGORITHMS)}")
+    t0 = _seconds("start", start, system.start_time)
+    t1 = _seconds("stop", stop, system.stop_time)
+    if step is None and system.step_size is None:
+        raise ArgumentError(
+            "step: the system declares no communication step (osp:FixedStepAlgorithm "
+            "baseStepSize); give one"
+        )
+    h = _seconds("step", step, system.step_size)
+    if not h > 0:
+        raise ArgumentError(f"step = {h!r} s must be > 0")
+    if not t1 > t0:
+        raise ArgumentError(f"stop = {t1!r} s must be after start = {t0!r} s")
+    span = t1 - t0
+    if h > span * (1.0 + 1e-9):
+        raise ArgumentError(
+            f"step = {h!r} s is longer than the run (start = {t0!r} s to stop = {t1!r} s)"
+        )
+    n_steps = round(span / h)
+    if abs(n_steps * h - span) > 1e-6 * h:
+        raise ArgumentError(
+            f"stop − start = {span!r} s is not a whole number of steps of {h!r} s (the run "
+            f"would end at t = {t0 + n_steps * h:.9g} s): change stop or step"
+        )
+    every = 1
+    if output_interval is not None:
+        oi = _seconds("output_interval", output_interval, None)
+        every = round(oi / h)
+        if not oi > 0 or every < 1 or abs(every * h - oi) > 1e-6 * h:
+            raise ArgumentError(
+                f"output_interval = {oi!r} s must be a positive multiple of the step {h!r} s"
+            )
+    connected = {c.end: c.start for c in system.connections}
+    overrides = _overrides(system, parameters, connected)
+    signals = signals or {}
+    for target, sig in signals.items():
+        comp, var = _variable(system, target, "signal")
+        if var.causality != "input" or (comp.name, var.name) in connected:
+            raise ArgumentError(f"signal {target!r}: only unconnected inputs can be driven")
+        if not callable(sig):
+            raise ArgumentError(f"signal {target!r} is not a function of time")
+    if record is None:
+        record = [
+            f"{c.name}.{v.name}"
+            for c in system.components.values()
+            for v in c.variables.values()
+            if v.causality == "output" and v.type in ("Real", "Boolean")
+        ]
+        record += [t for t in signals if t not in record]
+    record = list(dict.fromkeys(record))  # each name once, in order
+    for target in record:
+        _, var = _variable(system, target, "record")
+        recordable = var.causality == "output" and var.type in ("Real", "Boolean")
+        if not recordable and target not in signals:
+            raise ArgumentError(
+                f"record {target!r}: it is {_causality(var)}; only Real and Boolean outputs "
+                "and signal-driven inputs can be recorded"
+            )
+    n_rows = n_steps // every + 1 + (1 if n_steps % every else 0)
+    _check_table_size(n_rows, 1 + len(record))
+    return RunPlan(t0, t1, h, n_steps, every, overrides, record)
+
+
+def _seconds(name: str, value, default) -> float:
+    """A time argument [s] as a finite float (``default`` when None)."""
+    raw = default if value is None else value
+    try:
+        x = float(raw)
+    except (TypeError, ValueError):
+        raise ArgumentError(f"{name} = {raw!r} is not a number of seconds") from None
+    if not math.isfinite(x):
+        raise ArgumentError(f"{name} = {x!r} s must be finite")
+    return x
+
+
+def _check_table_size(n_rows: int, n_columns: int) -> None:
+    """Refuse a results table larger than half of the machine's memory (it is allocated
+    before the first step)."""
+    import os
+
+    try:
+        memory = os.sysconf("SC_PHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
+    except (AttributeError, OSError, ValueError):  # pragma: no cover - not POSIX
+        return
+    size = 8 * n_rows * n_columns
+    if size > memory / 2:
+        raise ArgumentError(
+            f"the results would take {n_rows} rows × {n_columns} columns = {size / 2**30:.3g} "
+            f"GiB, more than half of this machine's {memory / 2**30:.3g} GiB: record fewer "
+            "variables, keep fewer rows (output_interval) or run shorter (stop)"
+        )
+
+
+def _variable(system: System, target: str, what: str):
+    """(component, variable) of ``target``, or ArgumentError starting with ``what``."""
+    try:
+        return system.variable(target)
+    except HarnessError as exc:
+        raise ArgumentError(f"{what} {exc}") from None
+
+
+def _causality(var) -> str:
+    return {"output": "an output", "input": "an input", "parameter": "a parameter"}.get(
+        var.causality, f"a {var.causality} variable"
+    )
+
+
+def _overrides(system: System, parameters, connected=None) -> dict[str, object]:
     if parameters is None:
         return {}
+    connected = {} if connected is None else connected
     items = parameters if isinstance(parameters, list) else [parameters]
     out: dict[str, object] = {}
     for item in items:
@@ -257,10 +436,23 @@ def _overrides(system: System, parameters) -> dict[str, object]:
             out.update(item)
     for target, value in out.items():
         try:
-            _, var = system.variable(target)
+            comp, var = system.variable(target)
         except HarnessError as exc:
             raise ParameterError(str(exc)) from None
+        if var.causality not in ("parameter", "input") or var.variability == "constant":
+            raise ParameterError(
+                f"parameter {target}: it is {_causality(var)}; only parameters and unconnected "
+                "inputs can be set"
+            )
+        source = connected.get((comp.name, var.name))
+        if source is not None:
+            raise ParameterError(
+                f"parameter {target}: the input is driven by the connection from "
+                f"{'.'.join(source)}, which would overwrite the value"
+            )
         out[target] = _typed(target, var, value)
+        if problem := out_of_range(var, out[target]):
+            raise ParameterError(f"parameter {target} {problem}")
     return out
 
 
@@ -322,56 +514,24 @@ class _Settings:
     output_interval: float | None
 
 
-def _run(system, parameters, signals, start, stop, step, settings: _Settings):
-    algorithm = settings.algorithm
-    if algorithm not in ALGORITHMS:
-        raise HarnessError(f"algorithm = {algorithm!r} is not one of {list(ALGORITHMS)}")
-    start = system.start_time if start is None else float(start)
-    stop = system.stop_time if stop is None else float(stop)
-    h = system.step_size if step is None else float(step)
-    if h is None or not h > 0:
-        raise HarnessError(f"step = {h!r}: give a positive communication step (none in the SSD)")
-    if not stop > start:
-        raise HarnessError(f"stop = {stop!r} s must be after start = {start!r} s")
-    if settings.output_interval is not None and not settings.output_interval > 0:
-        raise HarnessError(f"output_interval = {settings.output_interval!r} s must be > 0")
-    overrides = _overrides(system, parameters)
-    connected = {c.end for c in system.connections}
-    for target, sig in signals.items():
-        comp, var = system.variable(target)
-        if var.causality != "input" or (comp.name, var.name) in connected:
-            raise HarnessError(f"signal {target!r}: only unconnected inputs can be driven")
-        if not callable(sig):
-            raise HarnessError(f"signal {target!r} is not a function of time")
+def _run(system, plan: RunPlan, signals, settings: _Settings, stop_request):
     order = order_components(system)
-    n_steps = round((stop - start) / h)
     units: dict[str, _Unit] = {}
     t0_wall = _time.perf_counter()
     try:
         for comp in system.components.values():  # FMUs unpacked once per loaded system
             units[comp.name] = _Unit(comp, system.unpacked(comp.fmu))
-        return _simulate(
-            system, units, order, overrides, signals, start, h, n_steps, settings, t0_wall
-        )
+        return _simulate(system, units, order, plan, signals, settings, t0_wall, stop_request)
     finally:
         for u in units.values():
             u.close()
 
 
-def _simulate(system, units, order, overrides, signals, start, h, n_steps, settings, t0_wall):
-    algorithm, record, out_dir = settings.algorithm, settings.record, settings.out_dir
-    progress, output_interval = settings.progress, settings.output_interval
-    # --- what to record -----------------------------------------------------------------
-    if record is None:
-        record = [
-            f"{c.name}.{v.name}"
-            for c in system.components.values()
-            for v in c.variables.values()
-            if v.causality == "output" and v.type in ("Real", "Boolean")
-        ]
-        record += [t for t in signals if t not in record]
-    for target in record:
-        system.variable(target)
+def _simulate(system, units, order, plan: RunPlan, signals, settings, t0_wall, stop_request):
+    algorithm, record, out_dir = settings.algorithm, plan.record, settings.out_dir
+    overrides, start, h, n_steps = plan.overrides, plan.start, plan.step, plan.n_steps
+    progress, every = settings.progress, plan.every
+    scales = {t: system.scale(t) for t in record}
     # --- outputs read after each step (connected or recorded), as one flat list "latest" --
     needed = {c.start for c in system.connections} | {tuple(r.split(".", 1)) for r in record}
     out_index: dict[tuple[str, str], int] = {}
@@ -425,11 +585,10 @@ def _simulate(system, units, order, overrides, signals, start, h, n_steps, setti
             getters.append(("b", bool_index[key]))
         elif target in signals:  # the value the input holds (set at the step's start)
             getters.append(("s", (units[comp.name].in_val, signal_slot[target])))
-        else:
-            raise HarnessError(
+        else:  # pragma: no cover - check_run refused it
+            raise ArgumentError(
                 f"record {target!r}: only outputs and signal-driven inputs can be recorded"
             )
-    every = max(1, round(output_interval / h)) if output_interval else 1
     n_rows = n_steps // every + 1 + (1 if n_steps % every else 0)
     rows = np.empty((n_rows, 1 + len(getters)))
     stored = [-1]  # index of the last row written
@@ -442,20 +601,19 @@ def _simulate(system, units, order, overrides, signals, start, h, n_steps, setti
             else np.empty(0, dtype=dtype)
         )
         res = RunResult(
-            system.name, data, failed, message, wall_time=_time.perf_counter() - t0_wall
+            system.name,
+            data,
+            failed,
+            message,
+            wall_time=_time.perf_counter() - t0_wall,
+            units=scales,
         )
         if out_dir is not None:
             res.csv = res.to_csv(Path(out_dir) / "results.csv")
         return res
 
-    def fail(name, what, status, t):
-        u = units[name]
-        label = STATUS[status] if 0 <= status < 6 else str(status)
-        log = " | ".join(list(u.log)[-5:]) or "(no log message)"
-        message = (
-            f"component {name!r} ({u.comp.model_identifier}) returned fmi2{label} from {what} at "
-            f"t = {t:.6g} s: {log}"
-        )
+    def stop(message, error=HarnessError, **kw):
+        """End the run: the rows so far (on disk too), the FMUs' log in failure.log."""
         res = result(stored[0], True, message)
         details = "\n".join(
             [message, ""] + [f"[{n}] {line}" for n, unit in units.items() for line in unit.log]
@@ -467,7 +625,19 @@ def _simulate(system, units, order, overrides, signals, start, h, n_steps, setti
             where = f"; the FMUs' log in {log_file}"
         if res.csv and len(res.data):
             where += f"; results up to t = {res.data['time'][-1]:.6g} s in {res.csv}"
-        raise HarnessError(message + where, result=res, details=details)
+        raise error(message + where, result=res, details=details, **kw)
+
+    def fail(name, what, status, t):
+        u = units[name]
+        label = STATUS[status] if 0 <= status < 6 else str(status)
+        log = " | ".join(list(u.log)[-5:]) or "(no log message)"
+        stop(
+            f"component {name!r} ({u.comp.model_identifier}) returned fmi2{label} from {what} at "
+            f"t = {t:.6g} s: {log}"
+        )
+
+    def interrupted(t):
+        stop(f"interrupted at t = {t:.6g} s", Interrupted, time=t)
 
     def read(name):
         u = units[name]
@@ -545,15 +715,13 @@ def _simulate(system, units, order, overrides, signals, start, h, n_steps, setti
             fail(name, "fmi2GetReal", status, start)
     store(start)
     # --- stepping -------------------------------------------------------------------------
-    from tqdm import tqdm
-
-    bar = tqdm(
-        total=n_steps, delay=2.0, disable=not progress, unit="step", desc=system.name, leave=False
-    )
+    bar = progress_bar(n_steps, desc=system.name, unit="step", enabled=progress)
     jacobi = algorithm == "jacobi"
     try:
         for k in range(n_steps):
             t = start + k * h
+            if stop_request is not None and stop_request.requested:  # Ctrl-C: stop here
+                interrupted(t)
             if jacobi:
                 for name in order:
                     if (status := write_inputs(name, t)) > 1:

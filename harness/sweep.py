@@ -16,6 +16,11 @@ default, an existing scheduler with ``scheduler=ADDRESS``. Each task instantiate
 its worker process (the ``.ssp`` archive is sent to every worker once and unpacked there). A
 point that fails becomes a row with its parameters and the error, and a chunk whose worker
 fails marks its points so; the other results are kept. Rows come back in point order.
+
+Before anything is submitted, every point is checked (``task.check``): each name is a
+parameter or input of the model or system, each value has its type and lies in the range
+the model or the FMU declares, each recorded name exists. Ctrl-C keeps the finished rows and
+marks the others ``interrupted``.
 """
 
 from __future__ import annotations
@@ -138,7 +143,13 @@ class ModelTask:
     )
 
     def check(self, points: Sequence[dict]) -> None:
-        """Refuse unknown names before anything is sent to the cluster."""
+        """Refuse, before anything is sent to the cluster, an unknown name, a value outside
+        the range of its parameter (:mod:`~servofmu.physics.bearing_parameters`) or input (the
+        BearingFriction FMU's), and an output that the model does not have."""
+        from dataclasses import fields
+
+        from servofmu.physics.bearing import BearingOutputs
+
         known = set(self.base) | set(INPUTS) | {"sample"}
         for name in {k for p in points for k in p}:
             if name not in known:
@@ -146,6 +157,34 @@ class ModelTask:
                     f"sweep parameter {name!r} is neither a bearing parameter nor an input "
                     f"({sorted(set(self.base) | set(INPUTS))})"
                 )
+        outputs = [f.name for f in fields(BearingOutputs)]
+        for name in self.outputs:
+            if name not in outputs:
+                raise ValueError(f"record {name!r} is not an output of the model ({outputs})")
+        seen = set()
+        for i, p in enumerate(points):
+            for name, value in p.items():
+                if name == "sample" or (name, repr(value)) in seen:
+                    continue
+                seen.add((name, repr(value)))
+                if problem := _model_value_problem(name, value):
+                    raise ValueError(f"sweep point {i} ({_describe(p)}): {name} {problem}")
+
+    def units(self) -> dict[str, str]:
+        """Unit of each column this task writes (parameters, inputs, outputs)."""
+        from servofmu.physics.bearing_parameters import PARAMETERS
+
+        fmu = _fmu_variables()
+        units = {}
+        for name in self.outputs:
+            v = fmu.get(name)
+            if v is not None and v.causality == "output":
+                units[name] = "0/1" if v.type == "Boolean" else v.unit or ""
+            else:
+                units[name] = OUTPUT_UNITS.get(name, "")
+        units.update({spec.name: spec.unit or "" for spec in PARAMETERS if spec.type == "Real"})
+        units.update({n: unit for n, (_, _, unit) in input_ranges().items()})
+        return {n: "-" if u == "1" else u for n, u in units.items() if u}
 
     def __call__(self, points: Sequence[dict]) -> list[dict]:
         from servofmu.physics.bearing import operating_outputs
@@ -198,6 +237,60 @@ class ModelTask:
             return _failed(point, exc)
 
 
+#: Units of the model's outputs that the BearingFriction FMU does not export (SI).
+OUTPUT_UNITS = {
+    "inner_ring_torque": "N.m",
+    "outer_ring_torque": "N.m",
+    "outer_fit_pressure": "Pa",
+    "inner_fit_pressure": "Pa",
+    "outer_interference": "m",
+    "inner_interference": "m",
+    "force_a": "N",
+    "force_b": "N",
+    "axial_displacement": "m",
+}
+
+
+def _fmu_variables() -> dict:
+    """The BearingFriction FMU's variables (its inputs' ranges and outputs' units: one
+    definition for the model and the FMU)."""
+    from servofmu.fmus.BearingFriction import BearingFriction
+
+    return {v.name: v for v in BearingFriction.VARIABLES}
+
+
+def input_ranges() -> dict[str, tuple[float, float, str]]:
+    """(min, max, unit) of the model's inputs, as the BearingFriction FMU declares them."""
+    variables = _fmu_variables()
+    return {n: (variables[n].min, variables[n].max, variables[n].unit) for n in INPUTS}
+
+
+def _model_value_problem(name: str, value) -> str:
+    """Why ``value`` cannot be given to model parameter or input ``name``, or ""."""
+    from servofmu.physics.bearing_parameters import parameter
+
+    if name in INPUTS:
+        lo, hi, unit = input_ranges()[name]
+    else:
+        spec = parameter(name)
+        if spec.choices:
+            keys = [c.key for c in spec.choices]
+            key = _as_key(name, value)
+            return "" if key in keys else f"= {value!r} is not one of {[k for k in keys if k]}"
+        lo, hi, unit = spec.min, spec.max, spec.unit
+    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+        return f"= {value!r} is not a finite number"
+    lo = -math.inf if lo is None else lo
+    hi = math.inf if hi is None else hi
+    if not lo <= value <= hi:
+        return f"= {value!r} is outside the valid range [{lo:g}, {hi:g}] {unit or ''}".rstrip()
+    return ""
+
+
+def _describe(point: dict) -> str:
+    return ", ".join(f"{k}={v!r}" for k, v in point.items())
+
+
 def _as_key(name: str, value):
     """A choice's catalogue key as text: a key that reads as a number (the bearing "71803",
     parsed from a command line as 71803.0) comes back as "71803"."""
@@ -226,12 +319,34 @@ class SystemTask:
         return hashlib.sha256(self.ssp).hexdigest()[:16]
 
     def check(self, points: Sequence[dict]) -> None:
-        """Load the system here once: a bad description or override fails before the sweep."""
+        """Load the system here once and check, before the sweep, the times, the recorded
+        names and every point's values against their FMU variables (settable, typed, within
+        range): :func:`~.master.check_run`."""
+        from .master import check_run
+
         system = _system(self.digest, self.ssp)
-        for name in {k for p in points for k in p if k != "sample"}:
-            system.variable(name)
-        for name in self.record:
-            system.variable(name)
+        check_run(
+            system, stop=self.stop, step=self.step, algorithm=self.algorithm, record=self.record
+        )
+        seen = set()
+        for i, p in enumerate(points):
+            values = {k: v for k, v in p.items() if k != "sample"}
+            key = repr(sorted(values.items()))
+            if key in seen:
+                continue
+            seen.add(key)
+            try:
+                check_run(system, parameters=values, stop=self.stop, step=self.step, record=[])
+            except ValueError as exc:
+                raise type(exc)(f"sweep point {i} ({_describe(p)}): {exc}") from None
+
+    def units(self) -> dict[str, str]:
+        """Unit of each column this task writes (the FMU variables' SI units)."""
+        system = _system(self.digest, self.ssp)
+        names = list(self.record) + [
+            f"{c.name}.{v.name}" for c in system.components.values() for v in c.variables.values()
+        ]
+        return {n: system.scale(n).csv_unit for n in names}
 
     def __call__(self, points: Sequence[dict]) -> list[dict]:
         from servofmu.harness import run as run_system
@@ -289,6 +404,8 @@ class SweepResult:
     rows: list[dict]
     workers: int
     wall_time: float
+    interrupted: bool = False  # Ctrl-C: the rows not finished carry the error "interrupted"
+    units: dict[str, str] = field(default_factory=dict)  # column → SI unit
 
     @property
     def failed(self) -> list[dict]:
@@ -307,9 +424,16 @@ class SweepResult:
         """One column as a float array (NaN where a row lacks it)."""
         return np.array([float(r.get(name, math.nan)) for r in self.rows])
 
+    def header(self, column: str) -> str:
+        """``column [unit]`` for a quantity with a known unit, else the bare name."""
+        unit = self.units.get(column)
+        return f"{column} [{unit}]" if unit else column
+
     def write(self, path) -> Path:
-        """The table as CSV, or Parquet when ``path`` ends in ``.parquet``."""
+        """The table as CSV (headers ``name [unit]``), or Parquet when ``path`` ends in
+        ``.parquet`` (bare names, the unit in each field's metadata)."""
         path = Path(path)
+        check_table_path(path)
         path.parent.mkdir(parents=True, exist_ok=True)
         cols = self.columns
         table = {c: [r.get(c, i if c == "run" else None) for i, r in enumerate(self.rows)]
@@ -319,16 +443,37 @@ class SweepResult:
             import pyarrow as pa
             import pyarrow.parquet as pq
 
-            pq.write_table(pa.table({c: _arrow_column(v) for c, v in table.items()}), path)
+            arrays = {c: _arrow_column(v) for c, v in table.items()}
+            schema = pa.schema(
+                [
+                    pa.field(
+                        c, a.type, metadata={"unit": self.units[c]} if c in self.units else None
+                    )
+                    for c, a in arrays.items()
+                ]
+            )
+            pq.write_table(pa.table(arrays, schema=schema), path)
             return path
         import csv
 
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)
-            w.writerow(cols)
+            w.writerow([self.header(c) for c in cols])
             for i in range(len(self.rows)):
                 w.writerow(["" if table[c][i] is None else _cell(table[c][i]) for c in cols])
         return path
+
+
+TABLE_SUFFIXES = (".csv", ".parquet")
+
+
+def check_table_path(path) -> None:
+    """ValueError unless ``path`` ends in one of :data:`TABLE_SUFFIXES`."""
+    if Path(path).suffix not in TABLE_SUFFIXES:
+        raise ValueError(
+            f"out = {str(path)!r}: a sweep table is written as {' or '.join(TABLE_SUFFIXES)}; "
+            "name the file so"
+        )
 
 
 def _cell(v):
@@ -366,12 +511,18 @@ def run_sweep(
     ``client`` (kept open). Points go in chunks of ``chunk_size`` (default: about four chunks
     per worker)."""
     from dask.distributed import Client, as_completed
-    from tqdm import tqdm
+
+    from .progress import progress_bar
 
     points = [dict(p) for p in points]
     if not points:
         raise ValueError("a sweep needs at least one point")
+    if chunk_size is not None and chunk_size < 1:
+        raise ValueError(f"chunk_size = {chunk_size!r} must be ≥ 1")
+    if workers is not None and workers < 1:
+        raise ValueError(f"workers = {workers!r} must be ≥ 1")
     task.check(points)
+    units = task.units() if hasattr(task, "units") else {}
     t0 = time.perf_counter()
     cluster, own = None, client is None
     if client is not None:
@@ -390,7 +541,8 @@ def run_sweep(
             client.submit(_run_chunk, shared, [points[i] for i in c], pure=False): c for c in chunks
         }
         rows: list[dict | None] = [None] * len(points)
-        bar = tqdm(total=len(points), unit="run", disable=not progress, desc="sweep", delay=1.0)
+        bar = progress_bar(len(points), desc="sweep", unit="run", enabled=progress, delay=1.0)
+        interrupted = False
         try:
             for fut in as_completed(futures):
                 idx = futures[fut]
@@ -401,6 +553,11 @@ def run_sweep(
                 for i, row in zip(idx, out, strict=True):
                     rows[i] = row
                 bar.update(len(idx))
+        except KeyboardInterrupt:  # Ctrl-C: keep what is done, mark the rest
+            interrupted = True
+            client.cancel(list(futures))
+            rows = [r if r is not None else {**p, "error": "interrupted"}
+                    for r, p in zip(rows, points, strict=True)]  # fmt: skip
         finally:
             bar.close()
     finally:
@@ -408,7 +565,7 @@ def run_sweep(
             client.close()
         if cluster is not None:
             cluster.close()
-    return SweepResult(rows, n_workers, time.perf_counter() - t0)
+    return SweepResult(rows, n_workers, time.perf_counter() - t0, interrupted, units)
 
 
 #: Dask settings of servofmu's LocalCluster: the worker's statistical profiler (a 10 ms stack
@@ -433,7 +590,7 @@ def local_cluster(workers: int | None = None):
     import dask
     from dask.distributed import LocalCluster
 
-    n = workers or os.cpu_count() or 1
+    n = (os.cpu_count() or 1) if workers is None else workers
     if n < 1:
         raise ValueError(f"workers = {workers!r} must be ≥ 1")
     with dask.config.set(LOCAL_CLUSTER_CONFIG):

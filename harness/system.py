@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 import tempfile
 from dataclasses import dataclass, field
-from pathlib import Path
+from pathlib import Path, PurePosixPath
 
 from servofmu.build.archive import read_member, safe_extract
 from servofmu.build.choices import choice_items
@@ -46,6 +46,12 @@ class Variable:
     unit: str | None
     start: object
     items: dict[str, int] | None = None
+    display_unit: str | None = None  # display = factor·value + offset
+    display_factor: float = 1.0
+    display_offset: float = 0.0
+    min: float | None = None  # valid range (inclusive), where the FMU declares it
+    max: float | None = None
+    variability: str | None = None
 
 
 @dataclass
@@ -107,6 +113,27 @@ class System:
         self._tmp = self._fmu_tmp = None
         self._unpacked.clear()
 
+    def scale(self, target: str):
+        """How ``component.variable`` is labelled and shown
+        (:class:`~.units.Scale`): its FMU's unit and display unit; without a unit in the FMU,
+        the unit of the variable connected to it, then that of its SSD connector."""
+        from .units import Scale
+
+        comp, var = self.variable(target)
+        if var.type == "Boolean":
+            return Scale(None, boolean=True)
+        if var.unit is not None:
+            return Scale(var.unit, var.display_unit, var.display_factor, var.display_offset)
+        key = (comp.name, var.name)
+        for c in self.connections:
+            other = c.start if c.end == key else c.end if c.start == key else None
+            if other is not None and c.factor == 1.0 and c.offset == 0.0:
+                ov = self.components[other[0]].variables.get(other[1])
+                if ov is not None and ov.unit is not None:
+                    return Scale(ov.unit, ov.display_unit, ov.display_factor, ov.display_offset)
+        connector = comp.connectors.get(var.name)
+        return Scale(connector[2] if connector else None)
+
     def variable(self, target: str) -> tuple[Component, Variable]:
         """(component, variable) of ``"component.variable"``, or HarnessError."""
         comp_name, _, var_name = target.partition(".")
@@ -159,6 +186,13 @@ def _read_parameter_set(data: bytes, what: str) -> dict[str, tuple[str, object]]
     return values
 
 
+def _bound(text) -> float | None:
+    try:
+        return None if text is None else float(text)
+    except ValueError:
+        return None
+
+
 def _model_variables(fmu: Path) -> tuple[str, str, dict[str, Variable], bool]:
     """(modelIdentifier, guid, variables, feedthrough) read from the FMU (XML checked first)."""
     from fmpy import read_model_description
@@ -169,16 +203,52 @@ def _model_variables(fmu: Path) -> tuple[str, str, dict[str, Variable], bool]:
     if md.coSimulation is None:
         raise HarnessError(f"{fmu.name} has no co-simulation interface")
     choices = choice_items(root)
+    displays = {
+        u.name: {d.name: (float(d.factor), float(d.offset)) for d in u.displayUnits}
+        for u in md.unitDefinitions
+    }
     variables = {}
     for v in md.modelVariables:
-        unit = v.unit if v.unit is not None else getattr(v.declaredType, "unit", None)
+        declared = v.declaredType
+        unit = v.unit if v.unit is not None else getattr(declared, "unit", None)
+        shown = v.displayUnit or getattr(declared, "displayUnit", None)
+        factor, offset = displays.get(unit, {}).get(shown, (1.0, 0.0))
+        if shown is not None and shown not in displays.get(unit, {}):
+            shown = None  # a display unit the UnitDefinitions do not define: show SI
         variables[v.name] = Variable(
-            v.name, v.valueReference, v.type, v.causality, unit, v.start, choices.get(v.name)
+            v.name,
+            v.valueReference,
+            v.type,
+            v.causality,
+            unit,
+            v.start,
+            choices.get(v.name),
+            shown,
+            factor,
+            offset,
+            _bound(v.min if v.min is not None else getattr(declared, "min", None)),
+            _bound(v.max if v.max is not None else getattr(declared, "max", None)),
+            v.variability,
         )
     feedthrough = any(u.dependencies for u in md.outputs) or any(
         u.dependencies is None for u in md.outputs
     )
     return md.coSimulation.modelIdentifier, md.guid, variables, feedthrough
+
+
+def _outside(root: Path, source: str) -> str:
+    """Why ``source`` (a component's FMU or parameter set, relative to the system folder
+    ``root``) is refused, or "" when it lies inside the folder (the archive): an absolute
+    path, a URI, a drive, ``..`` or a link that resolves elsewhere would load a file from
+    outside the system."""
+    rel = PurePosixPath(source)
+    if rel.is_absolute() or "\\" in source or (rel.parts and ":" in rel.parts[0]):
+        return "is an absolute path or URI: it must be a path inside the system folder"
+    if ".." in rel.parts:
+        return "leaves the system folder ('..'): it must be a path inside it"
+    if not (root / source).resolve().is_relative_to(root.resolve()):
+        return "resolves outside the system folder (a link): it must lie inside it"
+    return ""
 
 
 def load_system(path, fmu_dir=None) -> System:
@@ -228,17 +298,23 @@ def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
             ctype = None if kind_elem is None else kind_elem.tag.split("}")[1]
             unit = None if kind_elem is None else kind_elem.get("unit")
             connectors[c.get("name")] = (c.get("kind"), ctype, unit)
+        if source and (outside := _outside(root, source)):
+            problems.append(f"component {name!r}: FMU source {source!r} {outside}")
+            source = None
         fmu = (root / source) if source else None
         if fmu is not None and not fmu.is_file() and fmu_dir is not None:
             fmu = Path(fmu_dir) / Path(source).name
         comp = Component(name, source, fmu if fmu and fmu.is_file() else None, connectors)
-        if comp.fmu is None:
+        if comp.fmu is None and source is not None:
             hint = " (build it with `servofmu build`)" if fmu_dir is None else f" or in {fmu_dir}"
             problems.append(f"component {name!r}: FMU {source!r} not found in {root}{hint}")
         for binding in elem.findall("ssd:ParameterBindings/ssd:ParameterBinding", NS):
             src = binding.get("source")
             if src is None:
                 problems.append(f"component {name!r}: only .ssv parameter bindings are supported")
+                continue
+            if outside := _outside(root, src):
+                problems.append(f"component {name!r}: parameter set {src!r} {outside}")
                 continue
             ssv_file = root / src
             if not ssv_file.is_file():
@@ -388,8 +464,23 @@ def bound_value(var: Variable, kind: str, value):
             return value
         raise ValueError(f"= {value!r} ({kind}) is not one of {describe_items(var.items)}")
     if kind == var.type or (kind == "Integer" and var.type == "Real"):
+        if problem := out_of_range(var, value):
+            raise ValueError(problem)
         return value
     raise ValueError(f"is given as {kind}, the FMU wants {var.type}")
+
+
+def out_of_range(var: Variable, value) -> str:
+    """ "= value is outside the valid range [min, max] unit" when a number ``value`` lies
+    outside the range ``var`` declares (its FMU would refuse it), else ""."""
+    if var.type not in ("Real", "Integer") or isinstance(value, bool | str):
+        return ""
+    lo = -math.inf if var.min is None else var.min
+    hi = math.inf if var.max is None else var.max
+    if lo <= value <= hi:
+        return ""
+    unit = f" {var.unit}" if var.unit else ""
+    return f"= {value!r} is outside the valid range [{lo:g}, {hi:g}]{unit}"
 
 
 def describe_items(items: dict[str, int]) -> str:

@@ -70,6 +70,8 @@ def run(
         ModelTask(base, OUTPUTS), points, workers=workers, scheduler=scheduler, progress=progress
     )
     runs_file = sweep.write(out / "runs.csv")
+    if sweep.interrupted:  # Ctrl-C: the finished runs are on disk; no statistics of a part
+        raise KeyboardInterrupt(f"the finished runs are in {runs_file}")
     temps = np.array([p["temperature"] for p in points])
     torque = sweep.column("running_torque")
     flags = {f: sweep.column(f) for f in FLAGS}

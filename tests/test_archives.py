@@ -185,10 +185,114 @@ def test_fmu_with_a_traversal_entry_is_refused_before_instantiation(tmp_path, ou
     target = fmu_dir / "DCMotor.fmu"
     with zipfile.ZipFile(target, "a") as zf:
         zf.writestr("resources/../../../servofmu_evil.txt", b"pwned")
-    system = load_system(SSP_DIR / "seeker_gimbal", fmu_dir=fmu_dir)  # reads only the XML
-    try:
-        with pytest.raises(HarnessError, match="leaves the archive"):
-            run(system, stop=0.01)
-    finally:
-        system.close()
+    # reading the FMU's modelDescription checks every entry of the FMU first
+    with pytest.raises(SystemError_, match=r"DCMotor\.fmu: entry .* leaves the archive"):
+        load_system(SSP_DIR / "seeker_gimbal", fmu_dir=fmu_dir)
     assert not list(tmp_path.rglob("servofmu_evil.txt"))
+
+
+def test_duplicate_entries_are_refused(tmp_path):
+    import warnings
+
+    entries = _system_entries()
+    bad = tmp_path / "twice.ssp"
+    with warnings.catch_warnings():  # zipfile warns "Duplicate name" and writes it anyway
+        warnings.simplefilter("ignore")
+        with zipfile.ZipFile(bad, "w") as zf:
+            for name, data in entries.items():
+                zf.writestr(name, data)
+            zf.writestr("SystemStructure.ssd", b"<the second one/>")
+    with pytest.raises(ArchiveError, match=r"'SystemStructure\.ssd' occurs twice"):
+        load_system(bad)
+    with pytest.raises(ArchiveError, match="occurs twice"):
+        safe_extract(bad, tmp_path / "t")
+    assert not (tmp_path / "t").exists()
+    assert any("occurs twice" in p for p in check_archive(bad))
+    spelled = _zip(tmp_path / "spelled.ssp", {**entries, "./SystemStructure.ssd": b"<x/>"})
+    with pytest.raises(ArchiveError, match="occurs twice"):
+        safe_extract(spelled, tmp_path / "t")
+
+
+def _declare_size(path, size):
+    """Rewrite the uncompressed size every central-directory header of ``path`` declares (a
+    bomb's headers need not be written by zipfile's honest sizes)."""
+    data = bytearray(path.read_bytes())
+    start = 0
+    while (i := data.find(b"PK\x01\x02", start)) >= 0:
+        data[i + 24 : i + 28] = size.to_bytes(4, "little")
+        start = i + 4
+    path.write_bytes(bytes(data))
+    return path
+
+
+def test_declared_sizes_refuse_a_bomb_before_anything_is_written(tmp_path):
+    import time
+
+    # one entry whose header declares 2.2 GiB (more than the 2 GiB limit): refused from the
+    # headers alone, nothing unpacked, no time spent inflating
+    bomb = _declare_size(_zip(tmp_path / "bomb.ssp", {"zeros": b"0" * 1000}), int(2.2 * 2**30))
+    target = tmp_path / "target"
+    t0 = time.perf_counter()
+    with pytest.raises(ArchiveError, match=r"declare 2362232012 bytes unpacked.*zip bomb"):
+        safe_extract(bomb, target)
+    assert time.perf_counter() - t0 < 5.0  # not a speed test: minutes would mean inflating
+    assert not target.exists()
+    assert any("zip bomb" in p for p in check_archive(bomb))
+    with pytest.raises(HarnessError, match="zip bomb"):
+        load_system(bomb)
+
+
+@pytest.mark.parametrize(
+    "source, message",
+    [
+        ("../../x.fmu", "leaves the system folder"),
+        ("../x.fmu", "leaves the system folder"),
+        ("{tmp}/x.fmu", "is an absolute path"),
+        ("file:///{tmp}/x.fmu", "is an absolute path or URI"),
+        ("resources/link.fmu", "resolves outside the system folder"),
+    ],
+)
+def test_component_source_must_lie_inside_the_system(tmp_path, out, source, message):
+    outside = tmp_path / "x.fmu"  # a real FMU outside the system: never to be loaded
+    shutil.copy(out / "DCMotor.fmu", outside)
+    folder = tmp_path / "a" / "b" / "seeker_gimbal"
+    shutil.copytree(SSP_DIR / "seeker_gimbal", folder)
+    (folder / "resources").mkdir(exist_ok=True)
+    (folder / "resources" / "link.fmu").symlink_to(outside)
+    shutil.copy(outside, tmp_path / "a" / "x.fmu")
+    ssd = folder / "SystemStructure.ssd"
+    ssd.write_text(
+        ssd.read_text().replace(
+            'source="resources/DCMotor.fmu"', f'source="{source.format(tmp=tmp_path)}"'
+        )
+    )
+    with pytest.raises(SystemError_, match=message) as info:
+        load_system(folder, fmu_dir=out)
+    assert "component 'motor'" in str(info.value)
+    # a parameter set from outside is refused the same way
+    ssd.write_text(
+        ssd.read_text()
+        .replace(f'source="{source.format(tmp=tmp_path)}"', 'source="resources/DCMotor.fmu"')
+        .replace('source="motor.ssv"', 'source="../motor.ssv"')
+    )
+    shutil.copy(folder / "motor.ssv", folder.parent / "motor.ssv")
+    with pytest.raises(SystemError_, match=r"parameter set '\.\./motor\.ssv' leaves"):
+        load_system(folder, fmu_dir=out)
+
+
+def test_component_source_outside_an_archive_is_refused_on_the_command_line(tmp_path, out, capsys):
+    from servofmu.cli import main
+
+    entries = _system_entries()
+    entries["SystemStructure.ssd"] = entries["SystemStructure.ssd"].replace(
+        b'source="resources/DCMotor.fmu"', b'source="../../x.fmu"'
+    )
+    for f in ("ServoController", "BearingFriction"):
+        entries[f"resources/{f}.fmu"] = (out / f"{f}.fmu").read_bytes()
+    shutil.copy(out / "DCMotor.fmu", tmp_path / "x.fmu")
+    (tmp_path / "deep" / "er").mkdir(parents=True)
+    bad = _zip(tmp_path / "deep" / "er" / "evil.ssp", entries)
+    assert main(["run", str(bad), "--stop", "0.01", "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert "'../../x.fmu' leaves the system folder" in err and len(err.splitlines()) == 1
+    assert not (tmp_path / "o").exists()

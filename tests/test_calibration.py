@@ -207,3 +207,206 @@ def test_cli_report_plot_and_ssv(tmp_path, capsys):
     assert "no speed column" in capsys.readouterr().err
     assert main([*args, "--speed", "10 furlongs", "--out", str(out)]) == 2
     assert "'10 furlongs'" in capsys.readouterr().err
+
+
+# ------------------------------------------------------------------- a fit that failed (#16)
+EXAMPLE = "examples/data/gimbal_friction_synthetic.csv"
+README_ARGS = ["--speed", "10 deg/s", "--fit", "palmgren_s0,sliding_friction"]
+
+
+def _example():
+    from pathlib import Path
+
+    return str(Path(__file__).resolve().parents[1] / EXAMPLE)
+
+
+def test_readme_example_without_mounting_names_the_choices_and_exits_2(tmp_path, capsys):
+    from servofmu.cli import main
+
+    out = tmp_path / "cal"
+    assert main(["calibrate", _example(), *README_ARGS, "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "--mounting is required" in err and len(err.strip().splitlines()) == 1
+    for key in ("yu2017_gimbal", "yu2017_gimbal_printed", "yu2017_gimbal_rigid"):
+        assert f"'{key}'" in err
+    assert not out.exists()  # refused before the data were read
+
+
+def test_a_mounting_the_data_cannot_fit_is_no_calibration(tmp_path, capsys):
+    """The example's data (printed reading, s0 = 0.8, μ = 0.1) against the yoke mounting:
+    the model misses them by far more than their scatter; exit 1, no parameter set, unless
+    --allow-poor-fit."""
+    from servofmu.cli import main
+
+    out = tmp_path / "cal"
+    args = ["calibrate", _example(), *README_ARGS, "--mounting", "yu2017_gimbal"]
+    assert main([*args, "--out", str(out)]) == 1
+    captured = capsys.readouterr()
+    assert "servofmu: calibration failed: the model misses the data by more than their scatter" in (
+        captured.err
+    )
+    assert captured.out.startswith("POOR FIT: this is not a calibration")
+    assert not (out / "calibrated.ssv").exists()
+    assert (out / "report.txt").read_text().startswith("POOR FIT")
+    assert (out / "calibration.png").is_file() and (out / "residuals.csv").is_file()
+    assert main([*args, "--out", str(out), "--allow-poor-fit", "--json"]) == 0
+    captured = capsys.readouterr()
+    result = json.loads(captured.out)
+    assert result["poor_fit"] and "misses the data" in result["problems"][0]
+    assert result["lack_of_fit_p"] < 1e-3 and result["deviation_from_means"] > 0.5
+    assert "warning: poor fit accepted" in captured.err and (out / "calibrated.ssv").is_file()
+    # the mounting the data were made with fits them within 10 % of the truth
+    assert main([*args[:-1], "yu2017_gimbal_printed", "--json", "--out", str(out)]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert not result["poor_fit"] and result["lack_of_fit_p"] > 0.01
+    for u, truth in zip(result["unknowns"], (0.8, 0.1), strict=True):
+        assert abs(u["estimate"] / truth - 1.0) < 0.10
+
+
+def test_estimates_at_a_bound_are_refused_and_keep_their_sensitivity():
+    """The rigid reading over-predicts the torque by up to 10×: the fit drives s0 and μ to
+    0. Least squares' own Jacobian has zero columns there; the finite differences inside
+    the bounds do not, so no 'no effect on the data' is claimed."""
+    data = read_measurements(_example())
+    rigid = default_parameters("yu2017_gimbal_rigid")
+    cal = calibrate(data, rigid, ["palmgren_s0", "sliding_friction"], speed=10 * DEG)
+    assert cal.poor
+    assert any("palmgren_s0 = " in p and "sits at its lower bound 0" in p for p in cal.problems)
+    assert any("sliding_friction" in p and "lower bound" in p for p in cal.problems)
+    assert not [w for w in cal.warnings if "does not change the model" in w]
+    assert np.all(np.isfinite(cal.standard_error)) and np.all(cal.standard_error > 0)
+
+
+def test_model_jacobian_stays_inside_the_bounds_and_is_right_at_a_bound():
+    from servofmu.calibration.fit import model_jacobian
+    from servofmu.physics.bearing import operating_outputs
+    from servofmu.physics.bearing_parameters import pair_from_parameters
+
+    temps, w = TEMPS[::3], np.full(TEMPS[::3].shape, 10 * DEG)
+    seen = []
+
+    def model(x):  # s0 (scale 1) and μ (scale 0.1), as fit.py scales them
+        seen.append(np.array(x))
+        return running_torque(dict(PRINTED, palmgren_s0=x[0], sliding_friction=0.1 * x[1]),
+                              temps, w)  # fmt: skip
+
+    lower, upper = np.array([0.0, 0.0]), np.array([20.0, 5.0])
+    jac = model_jacobian(model, np.array([0.0, 1.0]), lower, upper)  # s0 at its lower bound
+    seen = np.array(seen)
+    assert np.all(seen >= lower) and np.all(seen <= upper)
+    # Yu eq 8: the viscous torque is s0 times its value at s0 = 1, the rest does not depend
+    # on s0: d(torque)/d(s0) is the viscous torque at s0 = 1
+    out = operating_outputs(pair_from_parameters(dict(PRINTED, palmgren_s0=1.0)), temps, w)
+    assert jac[:, 0] == pytest.approx(np.asarray(out.viscous_torque), rel=1e-6)
+    assert np.all(jac[:, 1] > 0)  # μ scales spin and sliding
+
+
+def test_fit_on_group_statistics_is_the_fit_on_every_point(tmp_path):
+    """Repeated rows are reduced to per-group statistics: the optimum and the rms residual
+    are those of least squares on every point (scipy on the per-point residuals, from the
+    estimate, does not move)."""
+    from scipy.optimize import least_squares
+
+    runs = [  # four runs of the same test: every point measured four times
+        read_measurements(write_measurements(
+            synthesise(TRUTH, TEMPS[::2], [5 * DEG, 20 * DEG], noise=0.03, seed=s),
+            tmp_path / f"run{s}.csv",
+        ))
+        for s in range(4)
+    ]  # fmt: skip
+    long = tmp_path / "long.csv"
+    texts = [(tmp_path / f"run{s}.csv").read_text() for s in range(4)]
+    long.write_text(texts[0] + "".join(x.split("\n", 1)[1] for x in texts[1:]))  # one header
+    data = read_measurements(long)
+    assert len(data) == 4 * runs[0].groups and data.groups == runs[0].groups
+    cal = calibrate(data, PRINTED, ["palmgren_s0", "sliding_friction"])
+    t, w, y = (np.concatenate([getattr(r, a) for r in runs]) for a in ("temperature", "speed",
+                                                                        "torque"))  # fmt: skip
+
+    def per_point(x):
+        return running_torque(dict(PRINTED, palmgren_s0=x[0], sliding_friction=x[1]), t, w) / y - 1
+
+    r = per_point(cal.estimate)
+    assert np.sqrt(np.mean(r**2)) == pytest.approx(cal.rms, rel=1e-9)
+    direct = least_squares(per_point, cal.estimate, x_scale=[1.0, 0.1], method="trf")
+    assert direct.x == pytest.approx(cal.estimate, rel=1e-5)
+
+
+def test_long_file_is_read_in_blocks_into_exact_group_statistics(tmp_path, monkeypatch):
+    from servofmu.calibration import measurements
+
+    rng = np.random.default_rng(3)
+    temps = rng.choice([-40.0, 0.0, 40.0], 400)
+    torque = rng.uniform(0.5, 3.0, 400)
+    direction = rng.choice(["forward", " Reverse"], 400)
+    lines = ["# made for the test", "temperature [degC],torque [N.mm],direction"]
+    for i in range(400):
+        lines.append(f"{temps[i]:g},{torque[i]:.17g},{direction[i]}")
+        if i == 150:
+            lines += ["", "# a comment in the middle"]
+    path = tmp_path / "blocks.csv"
+    path.write_text("\n".join(lines) + "\n")
+    monkeypatch.setattr(measurements, "BLOCK_CHARS", 333)  # a few lines per block
+    data = read_measurements(path)
+    assert len(data) == 400 and data.groups == 6
+    for g in range(data.groups):
+        same = np.char.lower(np.char.strip(direction)) == data.direction[g]
+        pick = (temps + 273.15 == data.temperature[g]) & same
+        sel = torque[pick] * 1e-3
+        assert data.count[g] == pick.sum()
+        assert data.torque[g] == pytest.approx(sel.mean(), rel=1e-12)
+        assert data.torque_sd[g] == pytest.approx(sel.std(ddof=1), rel=1e-9)
+        assert data.inverse_mean[g] == pytest.approx(np.mean(1 / sel), rel=1e-12)
+        assert data.lines[g] == 3 + int(np.flatnonzero(pick)[0])  # its first line
+    # the first problem of the file is named, whichever block it falls in
+    path.write_text("\n".join([*lines[:300], "20,1,sideways", "20,oops,forward"]) + "\n")
+    with pytest.raises(DataError, match="line 301, column 'direction': 'sideways'"):
+        read_measurements(path)
+
+
+def test_without_repeated_points_a_fit_is_judged_against_an_assumed_scatter():
+    one_direction = synthesise(
+        TRUTH, TEMPS, [10 * DEG], noise=0.02, seed=4, directions=("forward",)
+    )
+    good = calibrate(one_direction, PRINTED, ["palmgren_s0", "sliding_friction"])
+    assert not good.poor and good.scatter is None
+    assert any("repeat no operating point" in w for w in good.warnings)
+    yoke = default_parameters("yu2017_gimbal")
+    bad = calibrate(one_direction, yoke, ["palmgren_s0", "sliding_friction"])
+    assert bad.poor and "rms relative residual" in bad.problems[0]
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["--fit", "mu"], "--fit mu: 'mu' is not one of"),
+        (["--speed", "10 furlongs"], "speed = '10 furlongs': write a number and one of the units"),
+        (["--speed", "nan deg/s"], "--speed 'nan deg/s': the test speed must be finite and ≥ 0"),
+        (["--speed", "-5 deg/s"], "--speed '-5 deg/s': the test speed must be finite and ≥ 0"),
+        (["--set", "shim=abc"], "--set 'shim=abc': shim takes a number"),
+        (["--set", "nope=1"], "--set 'nope=1': write NAME=VALUE"),
+        (["--lubricant", "honey"], "lubricant key = 'honey' is not one of"),
+        (["--bearing", "9999"], "bearing key = '9999' is not one of"),
+        (["--mounting", "nowhere"], "mounting key = 'nowhere' is not one of"),
+        (["--residual", "cubic"], "argument --residual: invalid choice: 'cubic'"),
+    ],
+)
+def test_cli_calibrate_refuses_bad_arguments_before_reading_the_data(
+    tmp_path, capsys, monkeypatch, args, message
+):
+    from servofmu import calibration
+    from servofmu.cli import main
+
+    def unread(path):
+        raise AssertionError("the data were read")
+
+    monkeypatch.setattr(calibration, "read_measurements", unread)
+    base = ["calibrate", _example(), "--mounting", "yu2017_gimbal_printed", "--speed", "10 deg/s"]
+    out = tmp_path / "cal"
+    try:
+        rc = main([*base, *args, "--out", str(out)])
+    except SystemExit as exc:  # argparse's own checks
+        rc = exc.code
+    err = capsys.readouterr().err
+    assert rc == 2 and message in err, err
+    assert len(err.strip().splitlines()) == 1 and not out.exists()

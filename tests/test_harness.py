@@ -24,6 +24,7 @@ from servofmu.harness import (
 )
 from servofmu.harness import master as master_module
 from servofmu.harness.master import order_components
+from servofmu.harness.units import read_results
 from servofmu.physics import catalog
 from servofmu.physics.actuator import output_angle, reduction_ratio
 
@@ -347,8 +348,12 @@ def test_results_csv_and_plot(tmp_path, out):
     )
     assert res.data.dtype.names == ("time", "motor.speed", "bearing.overloaded")
     assert len(res.data) == 21 and res["time"][-1] == pytest.approx(0.02)
-    table = np.genfromtxt(res.csv, delimiter=",", names=True)
-    assert np.allclose(table["motorspeed"], res["motor.speed"])
+    # headers name each column with its unit (the FMUs' SI units)
+    header = res.csv.read_text().splitlines()[0]
+    assert header == "time [s],motor.speed [rad/s],bearing.overloaded [0/1]"
+    table, units = read_results(res.csv)
+    assert units == {"time": "s", "motor.speed": "rad/s", "bearing.overloaded": "0/1"}
+    assert np.allclose(table["motor.speed"], res["motor.speed"])
     png = res.plot(tmp_path / "r.png", ["motor.speed"])
     assert png.stat().st_size > 1000
 
@@ -369,9 +374,9 @@ def test_failing_fmu_stops_the_run_and_keeps_the_results(tmp_path, out):
     assert "temperature = 47" in str(err) and "[173.15, 473.15]" in str(err)
     t_fail = err.result.data["time"][-1]
     assert 0.08 < t_fail < 0.1  # rows up to the step before the failing one
-    on_disk = np.genfromtxt(tmp_path / "results.csv", delimiter=",", names=True)
+    on_disk, _ = read_results(tmp_path / "results.csv")
     assert on_disk["time"][-1] == pytest.approx(t_fail)
-    assert np.all(on_disk["bearingtemperature"] <= 473.15)
+    assert np.all(on_disk["bearing.temperature"] <= 473.15)
     assert "\n" not in str(err)  # one line for the user ...
     log = (tmp_path / "failure.log").read_text()  # ... the detail in a log
     assert str(tmp_path / "failure.log") in str(err) and "[bearing]" in log
@@ -418,14 +423,24 @@ def test_cli_run_writes_results_and_reports_failures(tmp_path, out, capsys):
         ]
     )
     assert rc == 0
-    table = np.genfromtxt(tmp_path / "ok" / "results.csv", delimiter=",", names=True)
-    assert len(table) == 101 and table["bearingtemperature"][-1] < 235.0
+    table, units = read_results(tmp_path / "ok" / "results.csv")
+    assert len(table) == 101 and table["bearing.temperature"][-1] < 235.0
+    assert units["bearing.temperature"] == "K"
     assert (tmp_path / "ok" / "results.png").is_file()
     assert "× real time" in capsys.readouterr().out
 
+    # a value outside the variable's range is bad input, refused before the run (exit 2) ...
     rc = main(["run", ssp, "--parameters", "bearing.temperature=1000", "--out", str(tmp_path)])
     err = capsys.readouterr().err
-    assert rc == 1 and "temperature = 1000.0 is outside the valid range" in err
+    assert rc == 2 and "temperature = 1000.0 is outside the valid range [173.15, 473.15] K" in err
+    assert not (tmp_path / "results.csv").exists()
+    # ... a signal that leaves it during the run makes the FMU refuse a step: the run failed
+    profile.write_text("time,T\n0,293.15\n0.05,493.15\n")
+    driven = ["--signal", f"bearing.temperature={profile}:T"]
+    rc = main(["run", ssp, *driven, "--stop", "0.05", "--out", str(tmp_path)])
+    err = capsys.readouterr().err
+    assert rc == 1 and "servofmu: run failed: component 'bearing'" in err
+    assert "is outside the valid range" in err and (tmp_path / "results.csv").is_file()
     rc = main(["run", str(tmp_path / "nowhere.ssp")])
     assert rc == 2 and "nowhere.ssp" in capsys.readouterr().err
 

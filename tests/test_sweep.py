@@ -76,12 +76,13 @@ def test_model_task_matches_the_bearing_model_and_isolates_bad_points():
 
 def test_sweep_on_worker_processes_keeps_results_around_failures(client, tmp_path):
     points = grid_points({"temperature": [233.15, 293.15, 333.15], "shim": [2e-5, 3e-5]})
-    points.append({"temperature": 293.15, "mounting": "nowhere"})
+    # every value is valid alone; together with grease the dry film has no viscosity model
+    points.append({"temperature": 293.15, "lubricant": "mos2_film"})
     res = run_sweep(ModelTask(BASE, ("running_torque",)), points, client=client, progress=False)
     assert res.workers == 2 and len(res.rows) == 7
     assert [r["temperature"] for r in res.rows] == [p["temperature"] for p in points]
     (bad,) = res.failed
-    assert bad["mounting"] == "nowhere" and "nowhere" in bad["error"]
+    assert bad["lubricant"] == "mos2_film" and "viscosity model" in bad["error"]
     expected = ModelTask(BASE, ("running_torque",))(points[:6])
     assert [r["running_torque"] for r in res.rows[:6]] == [r["running_torque"] for r in expected]
     import csv
@@ -89,21 +90,27 @@ def test_sweep_on_worker_processes_keeps_results_around_failures(client, tmp_pat
     with res.write(tmp_path / "t.csv").open(newline="") as fh:
         table = list(csv.DictReader(fh))
     assert len(table) == 7 and table[6]["error"] == bad["error"]  # quoted: it has commas
-    assert float(table[0]["running_torque"]) == pytest.approx(
+    assert float(table[0]["running_torque [N.m]"]) == pytest.approx(
         res.rows[0]["running_torque"], rel=1e-11
     )
+    assert list(table[0])[:4] == ["run", "temperature [K]", "shim [m]", "running_torque [N.m]"]
     import pyarrow.parquet as pq
 
-    back = pq.read_table(res.write(tmp_path / "t.parquet")).to_pylist()
+    parquet = pq.read_table(res.write(tmp_path / "t.parquet"))
+    back = parquet.to_pylist()
     assert back[6]["error"] == bad["error"] and back[0]["run"] == 0
+    assert parquet.schema.field("running_torque").metadata == {b"unit": b"N.m"}
 
 
 def test_system_sweep_instantiates_fmus_in_the_workers(client, fmus):
     ssp = fmus["BearingFriction"].parent / "seeker_gimbal.ssp"
     task = SystemTask(ssp.read_bytes(), ("motor.current", "bearing.running_torque"), stop=0.2)
     points = grid_points({"bearing.temperature": [253.15, 293.15, 1000.0]})
+    with pytest.raises(ValueError, match=r"sweep point 2 .*temperature = 1000\.0 is outside"):
+        run_sweep(task, points, client=client, chunk_size=1, progress=False)  # before submitting
+    points[2] = {"bearing.temperature": 293.15, "bearing.lubricant": "mos2_film"}  # with grease
     res = run_sweep(task, points, client=client, chunk_size=1, progress=False)
-    assert "temperature = 1000.0 is outside" in res.rows[2]["error"]
+    assert "HarnessError" in res.rows[2]["error"] and "viscosity" in res.rows[2]["error"]
     system = load_system(ssp)
     try:
         direct = run(system, parameters=points[0], stop=0.2, record=list(task.record))
@@ -190,8 +197,91 @@ def test_cli_sweep_and_montecarlo(tmp_path, capsys):
     )
     assert rc == 0 and "6 runs on 1 worker(s)" in capsys.readouterr().out
     header = out.read_text().splitlines()[0]
-    assert header == "run,sample,shim,temperature,running_torque,error"
+    assert header == "run,sample,shim [m],temperature [K],running_torque [N.m],error"
     assert main(["sweep", "model", "--grid", "temperatur=300", "--out", str(out)]) == 2
     assert "'temperatur' is neither" in capsys.readouterr().err
     rc = main(["montecarlo", "--samples", "5", "--workers", "1", "--out", str(tmp_path / "mc")])
     assert rc == 0 and "P(overloaded)" in capsys.readouterr().out
+
+
+GIMBAL = ["seeker_gimbal", "--grid", "motor.inertia=1e-5"]
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["model", "--grid", "temperature=1e9"], "temperature = 1000000000.0 is outside the valid"),
+        (["model", "--grid", "shim=2e-5,0.5"], "sweep point 1 (shim=0.5): shim = 0.5 is outside"),
+        (["model", "--sample", "shim=normal:3e-5:1e-3", "--samples", "50"], "shim = 0.00133"),
+        (["model", "--grid", "bearing=71804"], "bearing = 71804.0 is not one of"),
+        (["model", "--grid", "lubricant=honey"], "lubricant = 'honey' is not one of"),
+        (["model", "--grid", "speed=abc"], "speed = 'abc' is not a finite number"),
+        (["model", "--grid", "temperature=300", "--record", "torque"], "record 'torque' is not"),
+        (["model", "--grid", "temperature=300", "--workers", "0"], "--workers: '0' must be ≥ 1"),
+        (["model", "--grid", "temperature=300", "--chunk", "0"], "--chunk: '0' must be ≥ 1"),
+        (["model", "--grid", "temperature=300", "--samples", "0"], "--samples: '0' must be ≥ 1"),
+        (["model", "--grid", "temperature=300", "--out", "x.xlsx"], "'x.xlsx': a sweep table"),
+        (["model", "--grid", "temperature=300", "--tail", "1"], "--tail: '1' must lie in [0, 1)"),
+        (
+            ["seeker_gimbal", "--grid", "bearing.temperature=1000", "--record", "motor.current"],
+            "parameter bearing.temperature = 1000.0 is outside the valid range [173.15, 473.15] K",
+        ),
+        (
+            ["seeker_gimbal", "--grid", "motor.speed=3", "--record", "motor.current"],
+            "parameter motor.speed: it is an output",
+        ),
+        (
+            [*GIMBAL, "--record", "motor.nothing"],
+            "record 'motor.nothing': DCMotor.fmu has no variable 'nothing'",
+        ),
+        (
+            [*GIMBAL, "--record", "motor.voltage"],
+            "record 'motor.voltage': it is an input",
+        ),
+        (
+            [*GIMBAL, "--record", "motor.speed", "--stop", "0.1", "--step", "0.3"],
+            "step = 0.3 s is longer than the run",
+        ),
+    ],
+)
+def test_cli_sweep_refuses_bad_arguments_before_submitting(
+    fmus, tmp_path, capsys, monkeypatch, args, message
+):
+    from servofmu.build import fmu as build_fmu
+    from servofmu.cli import main
+    from servofmu.harness import sweep
+
+    monkeypatch.setattr(build_fmu, "DEFAULT_OUT", fmus["BearingFriction"].parent)
+
+    def no_cluster(*a, **k):
+        raise AssertionError("a cluster was started")
+
+    monkeypatch.setattr(sweep, "local_cluster", no_cluster)
+    out = tmp_path / "s.csv"
+    try:
+        rc = main(["sweep", *args, *([] if "--out" in args else ["--out", str(out)])])
+    except SystemExit as exc:  # argparse's own checks
+        rc = exc.code
+    err = capsys.readouterr().err
+    assert rc == 2 and message in err, err
+    assert len(err.strip().splitlines()) == 1 and not out.exists()
+
+
+def test_ctrl_c_keeps_the_finished_rows_of_a_sweep(client, monkeypatch):
+    import dask.distributed
+
+    real = dask.distributed.as_completed
+
+    def interrupted_after_one(futures):
+        for i, fut in enumerate(real(futures)):
+            if i == 1:
+                raise KeyboardInterrupt  # what Ctrl-C raises in the waiting main thread
+            yield fut
+
+    monkeypatch.setattr(dask.distributed, "as_completed", interrupted_after_one)
+    points = grid_points({"temperature": [233.15, 253.15, 273.15, 293.15]})
+    res = run_sweep(ModelTask(BASE, ("running_torque",)), points, client=client, chunk_size=1)
+    assert res.interrupted
+    done = [r for r in res.rows if "error" not in r]
+    assert len(done) == 1 and done[0]["running_torque"] > 0
+    assert [r["error"] for r in res.rows if "error" in r] == ["interrupted"] * 3

@@ -120,6 +120,8 @@ def _signals(items: list[str]) -> dict:
 
 def _run(args) -> int:
     from servofmu.harness import HarnessError, load_system, run
+    from servofmu.harness.interrupt import interruptible
+    from servofmu.harness.master import check_run
 
     path, fmu_dir = _system_path(args.system)
     try:
@@ -129,18 +131,28 @@ def _run(args) -> int:
         return 2
     out = Path(args.out or f"out/{system.name}")
     try:  # a failed run (HarnessError) is reported by main(): exit 1, partial results kept
-        res = run(
-            system,
+        signals = _signals(args.signal)
+        _check_plot(system, args.plot or [], signals)
+        record = [*args.record, *(n for n in args.plot or [] if n not in args.record)]
+        kwargs = dict(
             parameters=_parameters(args.parameters),
-            signals=_signals(args.signal),
+            signals=signals,
             start=args.start,
             stop=args.stop,
             step=args.step,
             algorithm=args.algorithm,
-            record=args.record or None,
-            out_dir=out,
+            record=record if args.record else None,
             output_interval=args.output_interval,
         )
+        plan = check_run(system, **kwargs)  # every argument, before any FMU is instantiated
+        with interruptible():  # Ctrl-C from here on: stop at a step boundary, exit 130
+            print(
+                f"{system.name}: {plan.n_steps} steps of {plan.step:g} s from t = "
+                f"{plan.start:g} to {plan.stop:g} s (Ctrl-C stops at the next step and keeps "
+                "the results)",
+                flush=True,
+            )
+            res = run(system, out_dir=out, **kwargs)
     finally:
         system.close()
     span = res["time"][-1] - res["time"][0]
@@ -154,6 +166,25 @@ def _run(args) -> int:
     return 0
 
 
+def _check_plot(system, names: list[str], signals: dict) -> None:
+    """--plot names: variables the run records (outputs, or inputs driven by --signal)."""
+    from servofmu.harness import HarnessError
+    from servofmu.harness.errors import ArgumentError
+
+    for name in names:
+        try:
+            _, var = system.variable(name)
+        except HarnessError as exc:
+            raise ArgumentError(f"--plot {exc}") from None
+        if not (var.causality == "output" and var.type in ("Real", "Boolean")) and (
+            name not in signals
+        ):
+            raise ArgumentError(
+                f"--plot {name!r}: it is a {var.type} {var.causality}; only Real and Boolean "
+                "outputs and inputs driven by --signal are recorded"
+            )
+
+
 def _scenario(args) -> int:
     from servofmu.harness.scenarios import run
 
@@ -163,21 +194,29 @@ def _scenario(args) -> int:
 
 
 def _mounting_for(bearing: str) -> str:
-    """The catalogue mounting of ``bearing``: one with calibrated coefficients first."""
+    """The catalogue mounting of ``bearing`` when it has exactly one; otherwise the user must
+    name it (the mounting decides fits, preload loop and materials: a wrong default fits
+    nothing, or fits wrong coefficients)."""
     from .physics import catalog
 
     keys = [k for k in catalog.keys("mountings") if catalog.mounting(k).bearing_key == bearing]
+    if len(keys) == 1:
+        return keys[0]
     if not keys:
         raise ValueError(
             f"bearing = {bearing!r}: no catalogue mounting for it; name one with --mounting "
             f"({catalog.keys('mountings')})"
         )
-    with_coefficients = set(catalog.keys("coefficients"))
-    return sorted(keys, key=lambda k: (k not in with_coefficients, k))[0]
+    raise ValueError(
+        f"--mounting is required: bearing {bearing} has {len(keys)} catalogue mountings, and "
+        f"the one the data were measured on decides fits, preload loop and materials; name "
+        f"one of {keys} (physics/data/mountings.toml describes each)"
+    )
 
 
 def _calibrate(args) -> int:
     from .calibration import (
+        UNKNOWNS,
         calibrate,
         parse_quantity,
         plot,
@@ -186,17 +225,20 @@ def _calibrate(args) -> int:
         write_residuals,
         write_ssv,
     )
-    from .physics.bearing_parameters import default_parameters
+    from .physics.bearing_parameters import default_parameters, pair_from_parameters
 
-    data = read_measurements(args.data)
-    mounting = args.mounting or _mounting_for(args.bearing)
+    # every argument first: nothing is read or fitted with a bad one
+    mounting = args.mounting or _mounting_for(args.bearing or "71803")
     params = default_parameters(mounting, args.lubrication)
-    if args.bearing:
+    if args.bearing:  # another bearing in the mounting (default: the mounting's own)
         params["bearing"] = args.bearing
     if args.lubricant:
         params["lubricant"] = args.lubricant
     _set_known(params, args.set)
+    pair_from_parameters(params)  # a catalogue key or value that does not fit: exit 2
     speed = parse_quantity(args.speed, "speed") if args.speed else None
+    if speed is not None and not (np.isfinite(speed) and speed >= 0.0):
+        raise ValueError(f"--speed {args.speed!r}: the test speed must be finite and ≥ 0")
     unknowns = (
         [u.strip() for u in args.fit.split(",") if u.strip()]
         if args.fit
@@ -206,13 +248,18 @@ def _calibrate(args) -> int:
             else ["sliding_friction"]
         )
     )
+    for name in unknowns:
+        if name not in UNKNOWNS:
+            raise ValueError(f"--fit {args.fit}: {name!r} is not one of {list(UNKNOWNS)}")
+    data = read_measurements(args.data)
     cal = calibrate(data, params, unknowns, speed=speed, residual=args.residual)
     out = Path(args.out or f"out/calibration/{Path(args.data).stem}")
-    files = [
-        write_residuals(cal, out / "residuals.csv"),
-        plot(cal, out / "calibration.png"),
-        write_ssv(cal.parameters, out / "calibrated.ssv", component=args.component),
-    ]
+    files = [write_residuals(cal, out / "residuals.csv"), plot(cal, out / "calibration.png")]
+    ssv = out / "calibrated.ssv"
+    if cal.poor and not args.allow_poor_fit:
+        ssv.unlink(missing_ok=True)  # no parameter set of an earlier run passes for this one
+    else:
+        files.append(write_ssv(cal.parameters, ssv, component=args.component))
     text = to_text(cal)
     (out / "report.txt").write_text(text + "\n")
     if args.json:
@@ -222,6 +269,18 @@ def _calibrate(args) -> int:
     else:
         print(text)
         print("\n".join(f"file: {f}" for f in [out / "report.txt", *files]))
+    if cal.poor:
+        what = f"{cal.problems[0]}" + (
+            f" (and {len(cal.problems) - 1} more)" if len(cal.problems) > 1 else ""
+        )
+        if not args.allow_poor_fit:
+            print(
+                f"servofmu: calibration failed: {what}; no calibrated.ssv written (report in "
+                f"{out / 'report.txt'}; --allow-poor-fit writes it anyway)",
+                file=sys.stderr,
+            )
+            return 1
+        print(f"servofmu: warning: poor fit accepted (--allow-poor-fit): {what}", file=sys.stderr)
     return 0
 
 
@@ -266,6 +325,7 @@ def _sweep(args) -> int:
     from servofmu.harness.sweep import (
         ModelTask,
         SystemTask,
+        check_table_path,
         cross,
         grid_points,
         run_sweep,
@@ -273,6 +333,8 @@ def _sweep(args) -> int:
     )
     from servofmu.physics.bearing_parameters import default_parameters
 
+    out = Path(args.out or "out/sweep/results.csv")
+    check_table_path(out)
     axes = dict(_axis(g) for g in args.grid)
     dists = dict(_distribution(s) for s in args.sample)
     samples = sample_points(dists, args.samples, args.seed) if dists else []
@@ -297,8 +359,15 @@ def _sweep(args) -> int:
     result = run_sweep(
         task, points, workers=args.workers, scheduler=args.scheduler, chunk_size=args.chunk
     )
-    out = Path(args.out or "out/sweep/results.csv")
     result.write(out)
+    if result.interrupted:
+        done = len(result.rows) - len(result.failed)
+        print(
+            f"servofmu: interrupted: {done} of {len(result.rows)} runs finished; the others are "
+            f"marked 'interrupted' in {out}",
+            file=sys.stderr,
+        )
+        return 130
     print(
         f"{len(result.rows)} runs on {result.workers} worker(s) in {result.wall_time:.3g} s; "
         f"{len(result.failed)} failed; table: {out}"
@@ -323,8 +392,56 @@ def _montecarlo(args) -> int:
     return 0
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse with its errors on one line (no usage block): exit 2."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+def _seconds(text: str) -> float:
+    """A finite time [s] (argparse type)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of seconds") from None
+    if not np.isfinite(value):
+        raise argparse.ArgumentTypeError(f"{text!r} s is not finite")
+    return value
+
+
+def _positive_seconds(text: str) -> float:
+    """A finite time > 0 [s] (argparse type)."""
+    value = _seconds(text)
+    if not value > 0:
+        raise argparse.ArgumentTypeError(f"{text!r} s must be > 0")
+    return value
+
+
+def _count(text: str) -> int:
+    """A whole number ≥ 1 (argparse type)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} must be ≥ 1")
+    return value
+
+
+def _fraction(text: str) -> float:
+    """A fraction in [0, 1) (argparse type)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not 0.0 <= value < 1.0:
+        raise argparse.ArgumentTypeError(f"{text!r} must lie in [0, 1)")
+    return value
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="servofmu", description="Temperature-aware servo-mechanism physics and FMUs."
     )
     parser.add_argument("--version", action="version", version=f"servofmu {__version__}")
@@ -369,12 +486,16 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="comp.input=FILE.csv:column",
         help="drive an unconnected input from a CSV column over its 'time' column; repeatable",
     )
-    r.add_argument("--start", type=float, help="start time [s] (default: the SSD's)")
-    r.add_argument("--stop", type=float, help="stop time [s] (default: the SSD's)")
-    r.add_argument("--step", type=float, help="communication step [s] (default: the SSD's)")
+    r.add_argument("--start", type=_seconds, help="start time [s] (default: the SSD's)")
+    r.add_argument("--stop", type=_seconds, help="stop time [s] (default: the SSD's)")
+    r.add_argument(
+        "--step", type=_positive_seconds, help="communication step [s] (default: the SSD's)"
+    )
     r.add_argument("--algorithm", choices=("gauss-seidel", "jacobi"), default="gauss-seidel")
     r.add_argument(
-        "--output-interval", type=float, help="keep a row every this many seconds (default: all)"
+        "--output-interval",
+        type=_positive_seconds,
+        help="keep a row every this many seconds, a multiple of the step (default: all)",
     )
     r.add_argument(
         "--record", action="append", default=[], metavar="comp.var", help="record only these"
@@ -406,7 +527,7 @@ def build_parser() -> argparse.ArgumentParser:
         default=[],
         metavar="NAME=uniform:LO:HI|normal:MEAN:SD|choice:A,B",
     )
-    w.add_argument("--samples", type=int, default=100, help="random draws (default 100)")
+    w.add_argument("--samples", type=_count, default=100, help="random draws (default 100)")
     w.add_argument("--seed", type=int, default=0)
     w.add_argument("--mounting", default="yu2017_gimbal", help="model: catalogue mounting")
     w.add_argument("--lubrication", choices=("grease", "solid"), default="grease")
@@ -414,14 +535,14 @@ def build_parser() -> argparse.ArgumentParser:
     w.add_argument(
         "--record", action="append", default=[], help="outputs to report (system: required)"
     )
-    w.add_argument("--stop", type=float, help="system: stop time [s]")
-    w.add_argument("--step", type=float, help="system: communication step [s]")
+    w.add_argument("--stop", type=_seconds, help="system: stop time [s]")
+    w.add_argument("--step", type=_positive_seconds, help="system: communication step [s]")
     w.add_argument(
-        "--tail", type=float, default=0.0, help="system: average over this last fraction"
+        "--tail", type=_fraction, default=0.0, help="system: average over this last fraction"
     )
-    w.add_argument("--workers", type=int, help="LocalCluster worker processes (default: cores)")
+    w.add_argument("--workers", type=_count, help="LocalCluster worker processes (default: cores)")
     w.add_argument("--scheduler", help="address of a running Dask scheduler")
-    w.add_argument("--chunk", type=int, help="points per task (default: ~4 tasks per worker)")
+    w.add_argument("--chunk", type=_count, help="points per task (default: ~4 tasks per worker)")
     w.add_argument("--out", help="table: .csv or .parquet (default out/sweep/results.csv)")
     w.set_defaults(func=_sweep)
     mc = sub.add_parser(
@@ -429,10 +550,10 @@ def build_parser() -> argparse.ArgumentParser:
         help="Monte-Carlo tolerance study: fit and shim from their tolerances, torque and "
         "overload probability versus temperature",
     )
-    mc.add_argument("--samples", type=int, default=500)
+    mc.add_argument("--samples", type=_count, default=500)
     mc.add_argument("--seed", type=int, default=1)
     mc.add_argument("--mounting", default="yu2017_gimbal")
-    mc.add_argument("--workers", type=int)
+    mc.add_argument("--workers", type=_count)
     mc.add_argument("--scheduler")
     mc.add_argument("--out", help="directory (default out/montecarlo)")
     mc.set_defaults(func=_montecarlo)
@@ -446,8 +567,14 @@ def build_parser() -> argparse.ArgumentParser:
         "are comments.",
     )
     c.add_argument("data", help="CSV file of measured friction torque")
-    c.add_argument("--bearing", default="71803", help="bearing designation (default 71803)")
-    c.add_argument("--mounting", help="catalogue mounting (default: the bearing's)")
+    c.add_argument(
+        "--bearing", help="bearing designation (default: the mounting's; 71803 without one)"
+    )
+    c.add_argument(
+        "--mounting",
+        help="catalogue mounting the data were measured on (required when the bearing has "
+        "more than one, as the 71803: yu2017_gimbal, yu2017_gimbal_printed, …)",
+    )
     c.add_argument("--lubrication", choices=("grease", "solid"), default="grease")
     c.add_argument("--lubricant", help="catalogue lubricant (default: the lubrication's)")
     c.add_argument(
@@ -471,6 +598,12 @@ def build_parser() -> argparse.ArgumentParser:
         "--component",
         help="write component.name parameters (an SSP variant) instead of bare names",
     )
+    c.add_argument(
+        "--allow-poor-fit",
+        action="store_true",
+        help="accept a fit at a bound or missing the data beyond their scatter: write "
+        "calibrated.ssv and exit 0 (the report still says POOR FIT)",
+    )
     c.add_argument("--json", action="store_true", help="print the result as JSON")
     c.add_argument("--out", help="output directory (default out/calibration/DATA)")
     c.set_defaults(func=_calibrate)
@@ -481,15 +614,22 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     """Exit codes: 0 done, 1 a run failed (partial results kept), 2 bad input (data,
-    arguments, system description), 3 an internal error (traceback in a log file)."""
-    from .harness.errors import HarnessError, ParameterError, SystemError_
+    arguments, system description), 3 an internal error (traceback in a log file), 130
+    interrupted (Ctrl-C; a run stops at a step boundary and keeps its results)."""
+    from .harness.errors import ArgumentError, HarnessError, Interrupted, SystemError_
 
     args = build_parser().parse_args(argv)
     try:
         return args.func(args)
-    except (SystemError_, ParameterError) as exc:  # bad input, found before any run
+    except (SystemError_, ArgumentError) as exc:  # bad input, found before any run
         print(f"servofmu: error: {exc}", file=sys.stderr)
         return 2
+    except Interrupted as exc:
+        print(f"servofmu: {exc}", file=sys.stderr)
+        return 130
+    except KeyboardInterrupt as exc:
+        print(f"servofmu: interrupted{f'; {exc}' if str(exc) else ''}", file=sys.stderr)
+        return 130
     except HarnessError as exc:
         print(f"servofmu: run failed: {exc}", file=sys.stderr)
         return 1

@@ -118,6 +118,11 @@ def _plot(rows, path: Path) -> Path:
         "k-",
         label="bearing model",
     )
+    from matplotlib.ticker import FormatStrFormatter
+
+    for axis_format in (ax.yaxis.set_major_formatter, ax.yaxis.set_minor_formatter):
+        axis_format(FormatStrFormatter("%g"))  # 2, 3, 0.5 [N·mm]: no powers of ten
+    ax.tick_params(axis="y", which="minor", labelsize=7)
     ax.set_xlabel("chamber temperature [°C]")
     ax.set_ylabel("friction torque [N·mm]")
     ax.set_title("Seeker gimbal: electrical method in the co-simulation", fontsize=10)

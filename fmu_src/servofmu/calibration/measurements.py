@@ -10,7 +10,15 @@ The file has a header row whose columns name a quantity and its unit in brackets
 
 Lines starting with ``#`` are comments (provenance of the data); blank lines are skipped;
 other columns are ignored and listed. Every problem is a :class:`DataError` naming the file,
-the line and the column.
+the line and the column (the first problem in the file).
+
+The file is read in blocks of :data:`BLOCK_CHARS` characters, parsed by numpy's C reader
+(``numpy.loadtxt``; a block with a problem is read again line by line for the message), and
+each block is reduced at once to per-group statistics: points of one temperature, speed and
+direction form a group, which keeps its count, the mean and the sum of squared deviations of
+the torque and of its reciprocal (Welford/Chan, exact to rounding), and its first line. The
+memory a file needs grows with its number of distinct operating points, not with its length;
+least squares on these statistics is the same as on the points (see :mod:`.fit`).
 """
 
 from __future__ import annotations
@@ -18,7 +26,7 @@ from __future__ import annotations
 import csv
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -42,19 +50,29 @@ class DataError(ValueError):
     """Measured data that cannot be used; the message names file, line and column."""
 
 
+#: Characters read and reduced at once (bounds the memory of a long file: about 10 times
+#: this while a block is parsed).
+BLOCK_CHARS = 1 << 22
+
+
 @dataclass(frozen=True)
 class FrictionMeasurements:
-    """Measured running friction torque of a bearing pair (SI).
+    """Measured running friction torque of a bearing pair (SI), as groups of points that
+    share temperature, speed and direction (a group per point when built from arrays).
 
     Attributes
     ----------
     source : file name
-    temperature : T [K] per point
-    torque : |M| [N·m] per point
-    speed : |ω| [rad/s] per point, or None when the file has no speed column
-    direction : "forward", "reverse" or "" per point
-    lines : line number in the file of each point
+    temperature : T [K] per group
+    torque : mean |M| [N·m] per group
+    speed : |ω| [rad/s] per group, or None when the file has no speed column
+    direction : "forward", "reverse" or "" per group
+    lines : line number in the file of each group's first point
     ignored_columns : columns that were not read
+    count : points per group (default: one each)
+    torque_ss : Σ(|M| − mean)² per group [N²·m²] (default 0)
+    inverse_mean : mean of 1/|M| per group [1/(N·m)] (default 1/torque)
+    inverse_ss : Σ(1/|M| − inverse_mean)² per group [1/(N·m)²] (default 0)
     """
 
     source: str
@@ -64,9 +82,37 @@ class FrictionMeasurements:
     direction: tuple[str, ...]
     lines: tuple[int, ...]
     ignored_columns: tuple[str, ...] = ()
+    count: np.ndarray = field(default=None)
+    torque_ss: np.ndarray = field(default=None)
+    inverse_mean: np.ndarray = field(default=None)
+    inverse_ss: np.ndarray = field(default=None)
+
+    def __post_init__(self):
+        torque = np.asarray(self.torque, dtype=float)
+        defaults = {
+            "count": np.ones(torque.shape, dtype=np.int64),
+            "torque_ss": np.zeros(torque.shape),
+            "inverse_mean": 1.0 / torque,
+            "inverse_ss": np.zeros(torque.shape),
+        }
+        for name, default in defaults.items():
+            if getattr(self, name) is None:
+                object.__setattr__(self, name, default)
 
     def __len__(self) -> int:
+        """Number of points (rows of the file)."""
+        return int(np.sum(self.count))
+
+    @property
+    def groups(self) -> int:
+        """Number of groups (distinct temperature, speed and direction)."""
         return len(self.torque)
+
+    @property
+    def torque_sd(self) -> np.ndarray:
+        """Sample standard deviation of |M| per group [N·m] (0 for a single point)."""
+        n = self.count
+        return np.sqrt(np.where(n > 1, self.torque_ss / np.maximum(n - 1, 1), 0.0))
 
 
 def parse_quantity(text: str, quantity: str) -> float:
@@ -116,85 +162,257 @@ def _columns(header: list[str], where: str) -> tuple[dict[str, tuple[int, str, s
 
 def read_measurements(path) -> FrictionMeasurements:
     """Read measured friction torque versus temperature (and speed) from ``path``; raises
-    :class:`DataError` naming the line and column of any unusable value."""
+    :class:`DataError` naming the line and column of the first unusable value. The file is
+    read in blocks and reduced to per-group statistics as it goes (bounded memory)."""
     path = Path(path)
     name = path.name
     try:
-        text = path.read_text()
+        fh = path.open()
     except OSError as exc:
         raise DataError(f"{path}: cannot read ({exc.strerror})") from None
-    lines = [
-        (n, line)
-        for n, line in enumerate(text.splitlines(), start=1)
-        if line.strip() and not line.lstrip().startswith("#")
-    ]
-    if not lines:
-        raise DataError(f"{name}: no header and no data")
-    header_line, header_text = lines[0]
-    header = next(csv.reader([header_text]))
-    cols, ignored = _columns(header, f"{name} line {header_line}")
-    temps, torques, speeds, directions, numbers = [], [], [], [], []
-    for n, line in lines[1:]:
-        cells = next(csv.reader([line]))
-        if len(cells) != len(header):
-            raise DataError(
-                f"{name} line {n}: {len(cells)} cells for {len(header)} columns ({header})"
-            )
-
-        def number(q, n=n, cells=cells):
-            i, col, unit = cols[q]
-            cell = cells[i].strip()
-            if not cell:
-                raise DataError(f"{name} line {n}, column {col!r}: empty")
-            try:
-                value = float(cell)
-            except ValueError:
-                raise DataError(
-                    f"{name} line {n}, column {col!r}: {cell!r} is not a number"
-                ) from None
-            if not math.isfinite(value):
-                raise DataError(f"{name} line {n}, column {col!r}: {cell!r} is not finite")
-            factor, offset = UNITS[q][unit]
-            return factor * value + offset, value, col, unit
-
-        t, t_raw, t_col, t_unit = number("temperature")
-        lo, hi = TEMPERATURE_RANGE
-        if not lo <= t <= hi:
-            f, o = UNITS["temperature"][t_unit]
-            raise DataError(
-                f"{name} line {n}, column {t_col!r}: {t_raw:g} {t_unit} is outside the model's "
-                f"range [{(lo - o) / f:g}, {(hi - o) / f:g}] {t_unit}"
-            )
-        m, _, m_col, _ = number("torque")
-        if m == 0.0:
-            raise DataError(
-                f"{name} line {n}, column {m_col!r}: a torque of 0 is no friction measurement"
-            )
-        direction = ""
-        if "speed" in cols:
-            w, _, _, _ = number("speed")
-            speeds.append(abs(w))
-            direction = "forward" if w > 0 else "reverse" if w < 0 else ""
-        if "direction" in cols:
-            i, col, _ = cols["direction"]
-            direction = cells[i].strip().lower()
-            if direction not in DIRECTIONS:
-                raise DataError(
-                    f"{name} line {n}, column {col!r}: {cells[i]!r} is not one of "
-                    f"{list(DIRECTIONS)}"
-                )
-        temps.append(t)
-        torques.append(abs(m))
-        directions.append(direction)
-        numbers.append(n)
-    if not torques:
+    groups = _Groups()
+    with fh:
+        try:
+            header_line, header = _header(fh, name)
+            cols, ignored = _columns(header, f"{name} line {header_line}")
+            line, pending = header_line, ""
+            while True:
+                chunk = fh.read(BLOCK_CHARS)
+                text, pending = pending + chunk, ""
+                cut = text.rfind("\n")
+                if chunk and cut < len(text) - 1:  # keep a partial last line for the next block
+                    text, pending = text[: cut + 1], text[cut + 1 :]
+                if text:
+                    block = _block(text, line + 1, header, cols, name)
+                    groups.add(*block[:5])
+                    line += block[5]
+                if not chunk:
+                    break
+        except UnicodeDecodeError as exc:
+            raise DataError(f"{name}: not a text file ({exc.reason})") from None
+    if not groups.keys:
         raise DataError(f"{name}: a header but no data rows")
-    return FrictionMeasurements(
-        source=name,
-        temperature=np.array(temps),
-        torque=np.array(torques),
-        speed=np.array(speeds) if "speed" in cols else None,
-        direction=tuple(directions),
-        lines=tuple(numbers),
-        ignored_columns=tuple(ignored),
-    )
+    return groups.measurements(name, "speed" in cols, tuple(ignored))
+
+
+def _header(fh, name: str) -> tuple[int, list[str]]:
+    """(line number, cells) of the first line that is neither blank nor a comment."""
+    n = 0
+    while text := fh.readline():
+        n += 1
+        if text.strip() and not text.lstrip().startswith("#"):
+            return n, next(csv.reader([text]))
+    raise DataError(f"{name}: no header and no data")
+
+
+_BLANK = re.compile(r"^[ \t\r\f\v]*$", re.MULTILINE)
+
+
+def _block(text: str, first: int, header, cols, name):
+    """The arrays of :func:`_parse` for the lines of ``text`` (numbered from ``first``) and
+    their number: numpy's C reader when the block is clean, else line by line (which raises
+    the first problem)."""
+    lines = text.split("\n")
+    if lines[-1] == "":
+        lines.pop()
+    numbers = np.arange(first, first + len(lines))
+    if "#" not in text and not _BLANK.search(text.rstrip("\n")):  # no comment, blank line
+        fast = _fast(lines, numbers, header, cols)
+        if fast is not None:
+            return (*fast, len(lines))
+    return (*_slow(lines, numbers, header, cols, name), len(lines))
+
+
+def _slow(lines, numbers, header, cols, name):
+    rows = [
+        (n, x) for n, x in zip(numbers.tolist(), lines, strict=True)
+        if x.strip() and not x.lstrip().startswith("#")
+    ]  # fmt: skip
+    if not rows:
+        return (np.zeros(0, int), np.zeros(0), np.zeros(0), np.zeros(0), np.zeros(0, int))
+    fast = _fast([x for _, x in rows], np.array([n for n, _ in rows]), header, cols)
+    return fast if fast is not None else _parse(rows, header, cols, name)
+
+
+def _fast(lines, numbers, header, cols):
+    """:func:`_parse` by ``numpy.loadtxt`` (every row must have the header's cells), or None
+    when any value is missing, not a number, out of range or the direction unknown (then
+    :func:`_parse` finds and names it)."""
+    quantities = {cols[q][0]: q for q in UNITS if q in cols}
+    i_dir = cols["direction"][0] if "direction" in cols else None
+    dtype = [
+        (f"c{i}", float if i in quantities else "U16" if i == i_dir else "U1")
+        for i in range(len(header))
+    ]
+    try:
+        table = np.loadtxt(lines, delimiter=",", dtype=dtype, comments=None, quotechar='"', ndmin=1)
+    except ValueError:
+        return None
+    if len(table) != len(lines):
+        return None
+    values = {}
+    for i, q in quantities.items():
+        factor, offset = UNITS[q][cols[q][2]]
+        values[q] = factor * table[f"c{i}"] + offset
+        if not np.all(np.isfinite(values[q])):
+            return None
+    t, m = values["temperature"], values["torque"]
+    lo, hi = TEMPERATURE_RANGE
+    if not (np.all((t >= lo) & (t <= hi)) and np.all(m != 0.0)):
+        return None
+    w = values.get("speed", np.zeros(len(lines)))
+    direction = np.where(w > 0, 1, np.where(w < 0, 2, 0))
+    if i_dir is not None:
+        text = table[f"c{i_dir}"]
+        direction = np.where(text == DIRECTIONS[0], 1, np.where(text == DIRECTIONS[1], 2, -1))
+        odd = direction < 0
+        if np.any(odd):  # spaces or capitals: normalise those few
+            norm = np.char.lower(np.char.strip(text[odd]))
+            direction[odd] = np.where(
+                norm == DIRECTIONS[0], 1, np.where(norm == DIRECTIONS[1], 2, -1)
+            )
+            if np.any(direction < 0):
+                return None
+    return numbers, t, np.abs(m), np.abs(w), direction
+
+
+def _parse(rows, header, cols, name):
+    """Arrays of one block: line numbers, T [K], |M| [N·m], |ω| [rad/s] (0 without a speed
+    column) and direction codes (index into ("",) + DIRECTIONS); DataError for the first
+    problem of the block, in the order of the lines and, within a line, of the columns."""
+    numbers = np.array([n for n, _ in rows])
+    cells = list(csv.reader(text for _, text in rows))
+    problems = []  # (row index, order within the row, message)
+    widths = np.fromiter(map(len, cells), dtype=np.int64, count=len(cells))
+    if np.any(widths != len(header)):
+        i = int(np.flatnonzero(widths != len(header))[0])
+        problems.append((i, 0, f"{name} line {numbers[i]}: {widths[i]} cells for "
+                               f"{len(header)} columns ({header})"))  # fmt: skip
+        cells = [c if len(c) == len(header) else [""] * len(header) for c in cells]
+    values = {}
+    for order, q in enumerate(("temperature", "torque", "speed"), start=1):
+        if q in cols:
+            values[q], problem = _column(q, cols[q], cells, numbers, name)
+            if problem:
+                problems.append((problem[0], order, problem[1]))
+    t, m = values["temperature"], values["torque"]
+    lo, hi = TEMPERATURE_RANGE
+    for i in np.flatnonzero(~((t >= lo) & (t <= hi)))[:1]:
+        _, col, unit = cols["temperature"]
+        f, o = UNITS["temperature"][unit]
+        problems.append((int(i), 1.5, (
+            f"{name} line {numbers[i]}, column {col!r}: {(t[i] - o) / f:g} {unit} is outside the "
+            f"model's range [{(lo - o) / f:g}, {(hi - o) / f:g}] {unit}"
+        )))  # fmt: skip
+    for i in np.flatnonzero(m == 0.0)[:1]:
+        problems.append((int(i), 2.5, (
+            f"{name} line {numbers[i]}, column {cols['torque'][1]!r}: a torque of 0 is no "
+            "friction measurement"
+        )))  # fmt: skip
+    w = values.get("speed", np.zeros(len(cells)))
+    direction = np.where(w > 0, 1, np.where(w < 0, 2, 0))
+    if "direction" in cols:
+        i_col, col, _ = cols["direction"]
+        text = [c[i_col] for c in cells]
+        codes = {d: k for k, d in enumerate(DIRECTIONS, start=1)}
+        direction = np.array([codes.get(x.strip().lower(), -1) for x in text])
+        for i in np.flatnonzero(direction < 0)[:1]:
+            problems.append((int(i), 4, (
+                f"{name} line {numbers[i]}, column {col!r}: {text[i]!r} is not one of "
+                f"{list(DIRECTIONS)}"
+            )))  # fmt: skip
+    if problems:
+        raise DataError(min(problems, key=lambda pr: (pr[0], pr[1]))[2])
+    return numbers, t, np.abs(m), np.abs(w), direction
+
+
+def _column(q, spec, cells, numbers, name):
+    """(SI values, first problem as (row index, message) or None) of quantity ``q``."""
+    i_col, col, unit = spec
+    raw = [c[i_col] for c in cells]
+    try:
+        x = np.array(raw, dtype=float)
+    except ValueError:
+        x = np.array([_number(c) for c in raw])
+    bad = ~np.isfinite(x)
+    problem = None
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        cell = raw[i].strip()
+        why = "empty" if not cell else (
+            f"{cell!r} is not a number" if math.isnan(_number(cell)) and cell.lower() != "nan"
+            else f"{cell!r} is not finite"
+        )  # fmt: skip
+        problem = (i, f"{name} line {numbers[i]}, column {col!r}: {why}")
+        x[bad] = np.nan
+    factor, offset = UNITS[q][unit]
+    return factor * x + offset, problem
+
+
+def _number(cell: str) -> float:
+    """float(cell), NaN when it is none."""
+    try:
+        return float(cell)
+    except ValueError:
+        return math.nan
+
+
+class _Groups:
+    """Per-group statistics of the points read so far, merged block by block (Chan et al.'s
+    pairwise update of count, mean and sum of squared deviations), in order of first
+    appearance."""
+
+    def __init__(self):
+        self.keys: dict[tuple[float, float, int], int] = {}
+        self.stats: list[list] = []  # n, mean M, ss M, mean 1/M, ss 1/M, first line
+
+    def add(self, numbers, t, m, w, direction):
+        if not len(numbers):
+            return
+        codes = [np.unique(x, return_inverse=True)[1].ravel() for x in (t, w)]
+        key = (codes[0] * (codes[1].max() + 1) + codes[1]) * 3 + direction
+        _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
+        inverse = inverse.ravel()
+        uniq = np.column_stack([t[first], w[first], direction[first]])
+        n = np.bincount(inverse)
+        stats = [n]
+        for y in (m, 1.0 / m):
+            mean = np.bincount(inverse, y) / n
+            stats += [mean, np.bincount(inverse, (y - mean[inverse]) ** 2)]
+        for g in np.argsort(first):  # the block's groups in file order
+            key = (float(uniq[g, 0]), float(uniq[g, 1]), int(uniq[g, 2]))
+            new = [int(n[g]), stats[1][g], stats[2][g], stats[3][g], stats[4][g]]
+            k = self.keys.get(key)
+            if k is None:
+                self.keys[key] = len(self.stats)
+                self.stats.append([*new, int(numbers[first[g]])])
+            else:
+                self.stats[k][:5] = _merge(self.stats[k][:5], new)
+
+    def measurements(self, source, has_speed, ignored) -> FrictionMeasurements:
+        keys = list(self.keys)
+        s = list(zip(*self.stats, strict=True))
+        return FrictionMeasurements(
+            source=source,
+            temperature=np.array([k[0] for k in keys]),
+            torque=np.array(s[1]),
+            speed=np.array([k[1] for k in keys]) if has_speed else None,
+            direction=tuple(("", *DIRECTIONS)[k[2]] for k in keys),
+            lines=tuple(s[5]),
+            ignored_columns=ignored,
+            count=np.array(s[0], dtype=np.int64),
+            torque_ss=np.array(s[2]),
+            inverse_mean=np.array(s[3]),
+            inverse_ss=np.array(s[4]),
+        )
+
+
+def _merge(a, b):
+    """Count, mean and sum of squared deviations of two samples' union (two quantities)."""
+    na, nb = a[0], b[0]
+    n = na + nb
+    out = [n]
+    for j in (1, 3):
+        delta = b[j] - a[j]
+        out += [a[j] + delta * nb / n, a[j + 1] + b[j + 1] + delta * delta * na * nb / n]
+    return out

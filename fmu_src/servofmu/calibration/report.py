@@ -14,15 +14,26 @@ from ..physics.units import DEG, NMM, ZERO_CELSIUS
 from .fit import UNKNOWNS, Calibration, running_torque
 
 SSV_NS = "http://ssp-standard.org/SSP1/SystemStructureParameterValues"
+#: Plot markers of the measured points per direction.
+MARKERS = (("forward", "o"), ("reverse", "s"), ("", "^"))
 
 
 def to_text(cal: Calibration) -> str:
-    """The calibration report: data, fixed configuration, estimates with standard errors,
-    correlations, residuals and warnings."""
+    """The calibration report: a poor fit's problems first, then data, fixed configuration,
+    estimates with standard errors, correlations, the fit against the data's scatter, the
+    residual of every group of points (one temperature, speed and direction) and warnings."""
     d = cal.data
     speeds = np.unique(np.round(cal.speed / DEG, 9))
-    lines = [
-        f"Calibration of {', '.join(cal.unknowns)} on {d.source}: {len(d)} points, "
+    lines = []
+    if cal.poor:
+        lines += [
+            "POOR FIT: this is not a calibration, and its values must not be used as one",
+            *(f"  - {p}" for p in cal.problems),
+            "",
+        ]
+    lines += [
+        f"Calibration of {', '.join(cal.unknowns)} on {d.source}: {len(d)} points at "
+        f"{cal.operating_points} operating points, "
         f"{(d.temperature.min() - ZERO_CELSIUS):g}…{(d.temperature.max() - ZERO_CELSIUS):g} °C, "
         f"speed {', '.join(f'{s:g}' for s in speeds)} °/s"
         + (" (assumed: no speed column)" if cal.speed_assumed else ""),
@@ -56,81 +67,106 @@ def to_text(cal: Calibration) -> str:
         f"residuals ({cal.residual_kind}): rms {scale * cal.rms:.3g} {unit}, "
         f"{cal.dof} degrees of freedom; optimizer: {cal.optimizer} ({cal.evaluations} "
         "evaluations)",
-        f"{'line':>5s} {'T [degC]':>9s} {'speed [deg/s]':>13s} {'direction':>9s} "
-        f"{'measured [N.mm]':>15s} {'model [N.mm]':>12s} {'residual [' + unit + ']':>14s}",
     ]
-    for i, line in enumerate(d.lines):
+    if cal.scatter is not None:
+        p_text = (
+            "" if cal.lack_of_fit_p is None else f"; lack-of-fit F test p = {cal.lack_of_fit_p:.3g}"
+        )
         lines.append(
-            f"{line:5d} {d.temperature[i] - ZERO_CELSIUS:9.4g} {cal.speed[i] / DEG:13.4g} "
-            f"{d.direction[i]:>9s} {d.torque[i] / NMM:15.4g} {cal.model[i] / NMM:12.4g} "
-            f"{scale * cal.residuals[i]:14.3g}"
+            f"scatter of repeated points {scale * cal.scatter:.3g} {unit}; model against the "
+            f"measured means: rms {scale * cal.deviation:.3g} {unit}{p_text}"
+        )
+    lines.append(
+        f"{'line':>5s} {'points':>6s} {'T [degC]':>9s} {'speed [deg/s]':>13s} {'direction':>9s} "
+        f"{'measured [N.mm]':>15s} {'sd [N.mm]':>9s} {'model [N.mm]':>12s} "
+        f"{'residual [' + unit + ']':>14s}"
+    )
+    sd = d.torque_sd
+    for i, line in enumerate(d.lines):
+        spread = f"{sd[i] / NMM:9.3g}" if d.count[i] > 1 else f"{'–':>9s}"
+        lines.append(
+            f"{line:5d} {d.count[i]:6d} {d.temperature[i] - ZERO_CELSIUS:9.4g} "
+            f"{cal.speed[i] / DEG:13.4g} {d.direction[i]:>9s} {d.torque[i] / NMM:15.4g} "
+            f"{spread} {cal.model[i] / NMM:12.4g} {scale * cal.residuals[i]:14.3g}"
         )
     directions = {x for x in d.direction if x}
     if len(directions) == 2:
         for x in sorted(directions):
             sel = np.array([di == x for di in d.direction])
+            mean = np.average(cal.residuals[sel], weights=d.count[sel])
             lines.append(
-                f"mean residual, {x}: {scale * cal.residuals[sel].mean():+.3g} {unit} "
+                f"mean residual, {x}: {scale * mean:+.3g} {unit} "
                 "(the model has no direction dependence)"
             )
     if d.ignored_columns:
         lines.append(f"columns not read: {list(d.ignored_columns)}")
     lines += [""] + ([f"WARNING: {w}" for w in cal.warnings] or ["no identifiability warnings"])
+    if cal.poor:
+        lines += [f"POOR FIT: {p}" for p in cal.problems]
     return "\n".join(lines)
 
 
 def write_residuals(cal: Calibration, path) -> Path:
-    """Per-point table: line, temperature [°C], speed [°/s], direction, measured and model
-    torque [N·mm], residual."""
+    """Per group of points (one temperature, speed and direction): first line, number of
+    points, temperature [°C], speed [°/s], direction, mean and standard deviation of the
+    measured torque [N·mm], model torque [N·mm], mean residual [% or N·mm]."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     d = cal.data
+    relative = cal.residual_kind == "relative"
+    scale, unit = (100.0, "%") if relative else (1.0 / NMM, "N.mm")
+    sd = d.torque_sd
     with path.open("w") as fh:
         fh.write(
-            "line,temperature [degC],speed [deg/s],direction,measured [N.mm],model [N.mm],"
-            f"residual ({cal.residual_kind})\n"
+            "line,points,temperature [degC],speed [deg/s],direction,measured [N.mm],"
+            f"measured sd [N.mm],model [N.mm],residual ({cal.residual_kind}) [{unit}]\n"
         )
         for i, line in enumerate(d.lines):
             fh.write(
-                f"{line},{d.temperature[i] - ZERO_CELSIUS:.6g},{cal.speed[i] / DEG:.6g},"
-                f"{d.direction[i]},{d.torque[i] / NMM:.6g},{cal.model[i] / NMM:.6g},"
-                f"{cal.residuals[i]:.6g}\n"
+                f"{line},{d.count[i]},{d.temperature[i] - ZERO_CELSIUS:.6g},"
+                f"{cal.speed[i] / DEG:.6g},{d.direction[i]},{d.torque[i] / NMM:.6g},"
+                f"{sd[i] / NMM:.6g},{cal.model[i] / NMM:.6g},{scale * cal.residuals[i]:.6g}\n"
             )
     return path
 
 
 def plot(cal: Calibration, path) -> Path:
-    """Measured torque (forward ○, reverse □) and the fitted model versus temperature at each
-    measured speed, with the residuals below."""
+    """Measured torque (forward ○, reverse □; the mean and ± one standard deviation where a
+    temperature was measured several times) and the fitted model (a line of the same colour)
+    versus temperature at each measured speed, with the residuals below; a poor fit says so
+    in red in the title."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.ticker import FormatStrFormatter
 
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     d = cal.data
     t_c = d.temperature - ZERO_CELSIUS
+    sd = d.torque_sd
     fig, (ax, axr) = plt.subplots(
         2, 1, sharex=True, figsize=(6.8, 5.6), gridspec_kw={"height_ratios": [3, 1.3]}
     )
+    ax.set_yscale("log")
     grid = np.linspace(d.temperature.min(), d.temperature.max(), 121)
     for k, w in enumerate(np.unique(cal.speed)):
+        colour = f"C{k}"
         model = running_torque(cal.parameters, grid, np.full_like(grid, w))
-        ax.semilogy(grid - ZERO_CELSIUS, model / NMM, "-", color=f"C{k}", lw=1.2)
+        ax.plot(grid - ZERO_CELSIUS, model / NMM, "-", color=colour, lw=1.2,
+                label=f"fitted model, {w / DEG:g} °/s")  # fmt: skip
         sel = cal.speed == w
-        for direction, marker in (("forward", "o"), ("reverse", "s"), ("", "^")):
+        for direction, marker in MARKERS:
             pick = sel & np.array([x == direction for x in d.direction])
-            if pick.any():
-                ax.semilogy(
-                    t_c[pick],
-                    d.torque[pick] / NMM,
-                    marker,
-                    color=f"C{k}",
-                    mfc="none",
-                    label=f"{w / DEG:g} °/s {direction or 'measured'}",
-                )
-    ax.plot([], [], "k-", label="fitted model")
+            if not pick.any():
+                continue
+            ax.plot(t_c[pick], d.torque[pick] / NMM, marker, color=colour, mfc="none",
+                    label=f"measured, {w / DEG:g} °/s {direction}".rstrip())  # fmt: skip
+            spread = pick & (d.count > 1)  # repeated points: mean ± one standard deviation
+            if spread.any():
+                ax.errorbar(t_c[spread], d.torque[spread] / NMM, yerr=sd[spread] / NMM,
+                            fmt="none", ecolor=colour, capsize=2, lw=0.8)  # fmt: skip
     ax.set_ylabel("friction torque [N·mm]")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
@@ -138,15 +174,19 @@ def plot(cal: Calibration, path) -> Path:
         f"{n} = {e:.4g} ± {s:.2g}"
         for n, e, s in zip(cal.unknowns, cal.estimate, cal.standard_error, strict=True)
     )
-    ax.set_title(f"{d.source}\n{fit}", fontsize=9)
-    from matplotlib.ticker import FormatStrFormatter
-
+    if cal.poor:
+        ax.set_title(f"{d.source}: POOR FIT, not a calibration\n{fit}", fontsize=9, color="tab:red")
+    else:
+        ax.set_title(f"{d.source}\n{fit}", fontsize=9)
     ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
     ax.yaxis.set_minor_formatter(FormatStrFormatter("%g"))
     ax.tick_params(axis="y", which="minor", labelsize=7)
     scale, unit = (100.0, "%") if cal.residual_kind == "relative" else (1.0 / NMM, "N·mm")
     axr.axhline(0.0, color="k", lw=0.8)
-    axr.plot(t_c, scale * cal.residuals, "o", mfc="none", color="C3")
+    for k, w in enumerate(np.unique(cal.speed)):
+        for direction, marker in MARKERS:
+            pick = (cal.speed == w) & np.array([x == direction for x in d.direction])
+            axr.plot(t_c[pick], scale * cal.residuals[pick], marker, mfc="none", color=f"C{k}")
     axr.set_ylabel(f"residual [{unit}]")
     axr.set_xlabel("temperature [°C]")
     axr.grid(True, alpha=0.3)
