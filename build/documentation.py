@@ -291,8 +291,11 @@ def _table(variables, columns) -> str:
 
 
 def _variable_tables(cls) -> str:
-    by = {c: [v for v in cls.VARIABLES if v.causality == c] for c in ("input", "output")}
-    params = [v for v in cls.VARIABLES if v.causality == "parameter"]
+    from servofmu.fmus.slave import variables_of
+
+    variables = variables_of(cls)  # a build's start values (user catalogue, preset) included
+    by = {c: [v for v in variables if v.causality == c] for c in ("input", "output")}
+    params = [v for v in variables if v.causality == "parameter"]
     unit = ("unit", lambda v: v.unit or "")
     display = ("display unit", lambda v: v.display_unit or "")
     name = ("name", lambda v: v.name)
@@ -362,6 +365,34 @@ restored and serialised (<code>canGetAndSetFMUstate</code>,
 </ul>"""
 
 
+def _presets(name: str) -> str:
+    """What the presets inside the FMU are, and the catalogue entries they come from."""
+    if name not in ("BearingFriction", "ActuatorStiffness"):
+        return ""
+    from servofmu.physics import catalog
+
+    prefix = "support_" if name == "ActuatorStiffness" else ""
+    kinds = ("mountings", "bearings") if prefix else ("mountings", "bearings", "lubricants")
+    rows = "".join(
+        f"<li><code>resources/presets/{k}/</code>: "
+        + ", ".join(
+            f"<code>{html.escape(key)}</code>"
+            + ("" if catalog.origin(k, key).startswith("data/") else " (user catalogue)")
+            for key in catalog.keys(k)
+        )
+        + "</li>"
+        for k in kinds
+    )
+    return f"""<h3>Presets</h3>
+<p>Every physical input is a numeric parameter{" (support_…)" if prefix else ""}, and the
+model uses exactly these numbers. The catalogue's entries are presets of them: the start
+values below are one preset's numbers, filled in when the FMU was built (with the provenance of
+each value), and the FMU carries every preset as an SSP 1.0 parameter set (bind one to the
+component, or copy its values): a mounting gives the whole set, a bearing or a lubricant its
+own numbers.</p>
+<ul>{rows}</ul>"""
+
+
 def render(name: str, curve: Curve | None = None) -> str:
     """The HTML page of FMU ``name``; with ``curve``, it shows :data:`IMAGE` and its caption."""
     cls = slave_class(name)
@@ -391,6 +422,7 @@ padding:0.3em 1em}}figure img{{max-width:100%}}code{{background:#f2f2f2}}</style
 {figure}
 <h2>Variables</h2>
 <p>SI units; display units are declared in the modelDescription.</p>
+{_presets(name)}
 {_variable_tables(cls)}
 <h2>Equations</h2>
 {physics}

@@ -114,7 +114,9 @@ def _plain(v):
 class ModelTask:
     """Bearing-model evaluations: ``base`` is a full BearingFriction parameter set
     (:func:`~servofmu.physics.bearing_parameters.default_parameters`), a point overrides
-    parameters and inputs; ``outputs`` are fields of
+    parameters and inputs, and may name presets (``mounting``, ``bearing``, ``lubricant``:
+    catalogue entries whose numbers it takes before its own numbers,
+    :func:`~servofmu.physics.bearing_parameters.resolve`); ``outputs`` are fields of
     :class:`~servofmu.physics.bearing.BearingOutputs` (default: the FMU's outputs)."""
 
     base: Mapping[str, object]
@@ -139,17 +141,19 @@ class ModelTask:
 
     def check(self, points: Sequence[dict]) -> None:
         """Refuse unknown names before anything is sent to the cluster."""
-        known = set(self.base) | set(INPUTS) | {"sample"}
+        from servofmu.physics.bearing_parameters import PRESETS
+
+        known = set(self.base) | set(INPUTS) | set(PRESETS) | {"sample"}
         for name in {k for p in points for k in p}:
             if name not in known:
                 raise ValueError(
-                    f"sweep parameter {name!r} is neither a bearing parameter nor an input "
-                    f"({sorted(set(self.base) | set(INPUTS))})"
+                    f"sweep parameter {name!r} is neither a bearing parameter, a preset "
+                    f"{list(PRESETS)} nor an input ({sorted(set(self.base) | set(INPUTS))})"
                 )
 
     def __call__(self, points: Sequence[dict]) -> list[dict]:
         from servofmu.physics.bearing import operating_outputs
-        from servofmu.physics.bearing_parameters import pair_from_parameters
+        from servofmu.physics.bearing_parameters import pair_from_parameters, resolve
 
         rows: list[dict | None] = [None] * len(points)
         groups: dict[tuple, list[int]] = {}
@@ -157,9 +161,9 @@ class ModelTask:
             key = tuple(sorted((k, v) for k, v in p.items() if k not in INPUTS))
             groups.setdefault(key, []).append(i)
         for key, idx in groups.items():
-            params = {**self.base, **{k: _as_key(k, v) for k, v in key if k != "sample"}}
+            changes = {k: _as_key(k, v) for k, v in key if k != "sample"}
             try:
-                pair = pair_from_parameters(params)
+                pair = pair_from_parameters(resolve(self.base, changes))
             except Exception as exc:  # a bad parameter fails its points, not the sweep
                 for i in idx:
                     rows[i] = _failed(points[i], exc)
@@ -199,11 +203,11 @@ class ModelTask:
 
 
 def _as_key(name: str, value):
-    """A choice's catalogue key as text: a key that reads as a number (the bearing "71803",
+    """A preset's catalogue key as text: a key that reads as a number (the bearing "71803",
     parsed from a command line as 71803.0) comes back as "71803"."""
-    from servofmu.physics.bearing_parameters import PARAMETER_NAMES, parameter
+    from servofmu.physics.bearing_parameters import PRESETS
 
-    if name in PARAMETER_NAMES and parameter(name).choices and isinstance(value, (int, float)):
+    if name in PRESETS and isinstance(value, (int, float)):
         return str(int(value)) if float(value).is_integer() else str(value)
     return value
 
