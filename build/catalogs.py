@@ -121,13 +121,17 @@ def listing() -> str:
             f"{math.degrees(b.nominal_contact_angle):.4g}, {b.inner_curvature:g}/"
             f"{b.outer_curvature:g}  [{catalog.origin('bearings', key)}]"
         )
-    lines.append("lubricants (type, ν40 / ν100 [cSt] of the base oil, pour point [°C])")
+    lines.append(
+        "lubricants (type, ν40 / ν100 [cSt] of the base oil and the kind of their source, pour "
+        "point [°C])"
+    )
     for key in catalog.keys("lubricants"):
         rec = catalog.lubricant_record(key)
         nu = (
             "dry film"
             if rec.viscosity is None
-            else f"{rec.viscosity_40 * 1e6:.4g} / {rec.viscosity_100 * 1e6:.4g}"
+            else f"{rec.viscosity_40 * 1e6:.4g} / {rec.viscosity_100 * 1e6:.4g} "
+            f"({rec.source('viscosity_40').split(':')[0]})"
         )
         pour = "" if rec.pour_point is None else f", {rec.pour_point - 273.15:.4g}"
         lines.append(
