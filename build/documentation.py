@@ -71,6 +71,13 @@ class Curve:
     log_y: bool = False
 
 
+def _build_start(name: str) -> bool:
+    """True when this build gives FMU ``name`` start values of its own (a preset)."""
+    from servofmu.fmus.slave import BUILD_START
+
+    return bool(BUILD_START.get(name))
+
+
 def _bearing_curve() -> Curve:
     """Running and breakaway torque versus temperature, −60…+80 °C, at 10 °/s."""
     celsius = np.arange(-60.0, 80.0 + 1e-9, 2.5)
@@ -90,7 +97,11 @@ def _bearing_curve() -> Curve:
         "Default parameters, no external load, shaft speed 10 °/s (logarithmic torque axis). "
         "The thermal coupling of frame, shaft and bearings changes fits and preload with "
         "temperature; the lubricant's viscosity adds the viscous part of the running torque. "
-        "With the default mounting the preload is lost above about 36 °C (unloaded).",
+        + (
+            "The start values are this build's preset (see the parameters' provenance)."
+            if _build_start("BearingFriction")
+            else "With the default mounting the preload is lost above about 36 °C (unloaded)."
+        ),
         log_y=True,
     )
 
