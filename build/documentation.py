@@ -71,6 +71,13 @@ class Curve:
     log_y: bool = False
 
 
+def _build_start(name: str) -> bool:
+    """True when this build gives FMU ``name`` start values of its own (a preset)."""
+    from servofmu.fmus.slave import BUILD_START
+
+    return bool(BUILD_START.get(name))
+
+
 def _bearing_curve() -> Curve:
     """Running and breakaway torque versus temperature, −60…+80 °C, at 10 °/s."""
     celsius = np.arange(-60.0, 80.0 + 1e-9, 2.5)
@@ -90,7 +97,11 @@ def _bearing_curve() -> Curve:
         "Default parameters, no external load, shaft speed 10 °/s (logarithmic torque axis). "
         "The thermal coupling of frame, shaft and bearings changes fits and preload with "
         "temperature; the lubricant's viscosity adds the viscous part of the running torque. "
-        "With the default mounting the preload is lost above about 36 °C (unloaded).",
+        + (
+            "The start values are this build's preset (see the parameters' provenance)."
+            if _build_start("BearingFriction")
+            else "With the default mounting the preload is lost above about 36 °C (unloaded)."
+        ),
         log_y=True,
     )
 
@@ -291,8 +302,11 @@ def _table(variables, columns) -> str:
 
 
 def _variable_tables(cls) -> str:
-    by = {c: [v for v in cls.VARIABLES if v.causality == c] for c in ("input", "output")}
-    params = [v for v in cls.VARIABLES if v.causality == "parameter"]
+    from servofmu.fmus.slave import variables_of
+
+    variables = variables_of(cls)  # a build's start values (user catalogue, preset) included
+    by = {c: [v for v in variables if v.causality == c] for c in ("input", "output")}
+    params = [v for v in variables if v.causality == "parameter"]
     unit = ("unit", lambda v: v.unit or "")
     display = ("display unit", lambda v: v.display_unit or "")
     name = ("name", lambda v: v.name)
@@ -362,6 +376,34 @@ restored and serialised (<code>canGetAndSetFMUstate</code>,
 </ul>"""
 
 
+def _presets(name: str) -> str:
+    """What the presets inside the FMU are, and the catalogue entries they come from."""
+    if name not in ("BearingFriction", "ActuatorStiffness"):
+        return ""
+    from servofmu.physics import catalog
+
+    prefix = "support_" if name == "ActuatorStiffness" else ""
+    kinds = ("mountings", "bearings") if prefix else ("mountings", "bearings", "lubricants")
+    rows = "".join(
+        f"<li><code>resources/presets/{k}/</code>: "
+        + ", ".join(
+            f"<code>{html.escape(key)}</code>"
+            + ("" if catalog.origin(k, key).startswith("data/") else " (user catalogue)")
+            for key in catalog.keys(k)
+        )
+        + "</li>"
+        for k in kinds
+    )
+    return f"""<h3>Presets</h3>
+<p>Every physical input is a numeric parameter{" (support_…)" if prefix else ""}, and the
+model uses exactly these numbers. The catalogue's entries are presets of them: the start
+values below are one preset's numbers, filled in when the FMU was built (with the provenance of
+each value), and the FMU carries every preset as an SSP 1.0 parameter set (bind one to the
+component, or copy its values): a mounting gives the whole set, a bearing or a lubricant its
+own numbers.</p>
+<ul>{rows}</ul>"""
+
+
 def render(name: str, curve: Curve | None = None) -> str:
     """The HTML page of FMU ``name``; with ``curve``, it shows :data:`IMAGE` and its caption."""
     cls = slave_class(name)
@@ -391,6 +433,7 @@ padding:0.3em 1em}}figure img{{max-width:100%}}code{{background:#f2f2f2}}</style
 {figure}
 <h2>Variables</h2>
 <p>SI units; display units are declared in the modelDescription.</p>
+{_presets(name)}
 {_variable_tables(cls)}
 <h2>Equations</h2>
 {physics}

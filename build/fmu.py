@@ -8,24 +8,33 @@ import tempfile
 from pathlib import Path
 
 import servofmu
+from servofmu.fmus import slave
 from servofmu.fmus.slave import BUILD_INFO, SHIPPED, package_hash
 
+from .catalogs import Defaults
 from .documentation import write_documentation
+from .presets import start_values, write_presets
 
 FMUS = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
 PACKAGE_DIR = Path(servofmu.__file__).resolve().parent
 DEFAULT_OUT = Path(__file__).resolve().parent / "out"
 
 
-def build_fmu(name: str, out_dir: Path = DEFAULT_OUT) -> Path:
+def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None = None) -> Path:
     """Build FMU ``name`` (one of :data:`FMUS`) into ``out_dir``; returns the .fmu path.
 
     The FMU carries what it runs of the servofmu package in ``resources/servofmu`` (the parts
     :data:`~servofmu.fmus.slave.SHIPPED`: the package ``__init__``, ``physics/`` with its data
     and ``fmus/``; every FMU the same copy, so that several FMUs can share one interpreter),
-    ``resources/servofmu_build.json`` (the hash of those parts, checked at instantiation) and
+    ``resources/servofmu_build.json`` (the hash of those parts, checked at instantiation, and
+    the build's start values when ``defaults`` name presets), ``resources/presets/`` (the
+    catalogue's presets as SSP parameter sets, BearingFriction and ActuatorStiffness) and
     ``documentation/index.html``. State handling and serialisation are declared
-    (``canGetAndSetFMUstate``, ``canSerializeFMUstate``)."""
+    (``canGetAndSetFMUstate``, ``canSerializeFMUstate``).
+
+    ``defaults`` (:func:`catalogs.load`: user catalogues merged, presets chosen) fill the
+    start values: the package stays the same (its hash too), the start values travel in
+    ``servofmu_build.json``."""
     from pythonfmu.builder import FmuBuilder
 
     if name not in FMUS:
@@ -33,30 +42,39 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT) -> Path:
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     script = PACKAGE_DIR / "fmus" / f"{name}.py"
-    with tempfile.TemporaryDirectory(prefix="servofmu_build_") as tmp:
-        tmp = Path(tmp)
-        package = stage_package(tmp / "package")
-        info = tmp / BUILD_INFO
-        info.write_text(
-            json.dumps(
-                {
-                    "model": name,
-                    "version": servofmu.__version__,
-                    "package_hash": package_hash(package),
-                },
-                indent=2,
+    start = start_values(name, defaults or Defaults())
+    slave.BUILD_START.clear()
+    if start:
+        slave.BUILD_START[name] = start
+    try:
+        with tempfile.TemporaryDirectory(prefix="servofmu_build_") as tmp:
+            tmp = Path(tmp)
+            package = stage_package(tmp / "package")
+            info = tmp / BUILD_INFO
+            record = {
+                "model": name,
+                "version": servofmu.__version__,
+                "package_hash": package_hash(package),
+            }
+            if start:
+                record["start"] = {k: v for k, (v, _) in start.items()}
+                record["catalogues"] = list((defaults or Defaults()).files)
+            info.write_text(json.dumps(record, indent=2))
+            files = [package, info]
+            if name in ("BearingFriction", "ActuatorStiffness"):
+                files.append(write_presets(tmp / "presets", name))
+            doc = tmp / "documentation"
+            write_documentation(name, doc)
+            path = FmuBuilder.build_FMU(
+                script,
+                dest=out_dir,
+                project_files=files,
+                documentation_folder=doc,
+                canGetAndSetFMUstate=True,
+                canSerializeFMUstate=True,
             )
-        )
-        doc = tmp / "documentation"
-        write_documentation(name, doc)
-        path = FmuBuilder.build_FMU(
-            script,
-            dest=out_dir,
-            project_files=[package, info],
-            documentation_folder=doc,
-            canGetAndSetFMUstate=True,
-            canSerializeFMUstate=True,
-        )
+    finally:
+        slave.BUILD_START.clear()
     return Path(path)
 
 
@@ -75,12 +93,15 @@ def stage_package(dest: Path) -> Path:
     return target
 
 
-def build_all(out_dir: Path = DEFAULT_OUT, names=FMUS, systems: bool = True) -> list[Path]:
-    """Build every FMU in ``names`` and, with ``systems``, pack every SSP system of ``ssp/``
-    with them (``out_dir/<system>.ssp``); returns the paths written."""
+def build_all(
+    out_dir: Path = DEFAULT_OUT, names=FMUS, systems: bool = True, defaults: Defaults | None = None
+) -> list[Path]:
+    """Build every FMU in ``names`` (start values from ``defaults``, see :func:`build_fmu`)
+    and, with ``systems``, pack every SSP system of ``ssp/`` with them
+    (``out_dir/<system>.ssp``); returns the paths written."""
     from .ssp import pack_all
 
-    paths = [build_fmu(n, out_dir) for n in names]
+    paths = [build_fmu(n, out_dir, defaults) for n in names]
     if systems and set(names) == set(FMUS):
         paths += pack_all(out_dir, out_dir)
     return paths
@@ -89,8 +110,9 @@ def build_all(out_dir: Path = DEFAULT_OUT, names=FMUS, systems: bool = True) -> 
 def is_current(out_dir: Path = DEFAULT_OUT) -> bool:
     """True when every FMU and system in ``out_dir`` was built from the current sources: the
     FMU build hash against the parts of the package an FMU ships (an edit elsewhere, e.g. in
-    papers/ or the CLI, leaves the FMUs current), and archives newer than their ssp/ sources
-    and than the FMUs they pack."""
+    papers/ or the CLI, leaves the FMUs current), with the package's own defaults (not a
+    user catalogue's), and archives newer than their ssp/ sources and than the FMUs they
+    pack."""
     import zipfile
 
     from .ssp import systems
@@ -101,7 +123,8 @@ def is_current(out_dir: Path = DEFAULT_OUT) -> bool:
         if not fmu.is_file():
             return False
         with zipfile.ZipFile(fmu) as zf:
-            if json.loads(zf.read(f"resources/{BUILD_INFO}"))["package_hash"] != current:
+            info = json.loads(zf.read(f"resources/{BUILD_INFO}"))
+            if info["package_hash"] != current or "start" in info:  # a user build is not ours
                 return False
     for system in systems():
         archive = Path(out_dir) / f"{system.name}.ssp"

@@ -119,7 +119,9 @@ def _plain(v):
 class ModelTask:
     """Bearing-model evaluations: ``base`` is a full BearingFriction parameter set
     (:func:`~servofmu.physics.bearing_parameters.default_parameters`), a point overrides
-    parameters and inputs; ``outputs`` are fields of
+    parameters and inputs, and may name presets (``mounting``, ``bearing``, ``lubricant``:
+    catalogue entries whose numbers it takes before its own numbers,
+    :func:`~servofmu.physics.bearing_parameters.resolve`); ``outputs`` are fields of
     :class:`~servofmu.physics.bearing.BearingOutputs` (default: the FMU's outputs)."""
 
     base: Mapping[str, object]
@@ -149,13 +151,14 @@ class ModelTask:
         from dataclasses import fields
 
         from servofmu.physics.bearing import BearingOutputs
+        from servofmu.physics.bearing_parameters import PRESETS
 
-        known = set(self.base) | set(INPUTS) | {"sample"}
+        known = set(self.base) | set(INPUTS) | set(PRESETS) | {"sample"}
         for name in {k for p in points for k in p}:
             if name not in known:
                 raise ValueError(
-                    f"sweep parameter {name!r} is neither a bearing parameter nor an input "
-                    f"({sorted(set(self.base) | set(INPUTS))})"
+                    f"sweep parameter {name!r} is neither a bearing parameter, a preset "
+                    f"{list(PRESETS)} nor an input ({sorted(set(self.base) | set(INPUTS))})"
                 )
         outputs = [f.name for f in fields(BearingOutputs)]
         for name in self.outputs:
@@ -188,7 +191,7 @@ class ModelTask:
 
     def __call__(self, points: Sequence[dict]) -> list[dict]:
         from servofmu.physics.bearing import operating_outputs
-        from servofmu.physics.bearing_parameters import pair_from_parameters
+        from servofmu.physics.bearing_parameters import pair_from_parameters, resolve
 
         rows: list[dict | None] = [None] * len(points)
         groups: dict[tuple, list[int]] = {}
@@ -196,9 +199,9 @@ class ModelTask:
             key = tuple(sorted((k, v) for k, v in p.items() if k not in INPUTS))
             groups.setdefault(key, []).append(i)
         for key, idx in groups.items():
-            params = {**self.base, **{k: _as_key(k, v) for k, v in key if k != "sample"}}
+            changes = {k: _as_key(k, v) for k, v in key if k != "sample"}
             try:
-                pair = pair_from_parameters(params)
+                pair = pair_from_parameters(resolve(self.base, changes))
             except Exception as exc:  # a bad parameter fails its points, not the sweep
                 for i in idx:
                     rows[i] = _failed(points[i], exc)
@@ -267,10 +270,15 @@ def input_ranges() -> dict[str, tuple[float, float, str]]:
 
 def _model_value_problem(name: str, value) -> str:
     """Why ``value`` cannot be given to model parameter or input ``name``, or ""."""
-    from servofmu.physics.bearing_parameters import parameter
+    from servofmu.physics.bearing_parameters import PRESETS, parameter
 
     if name in INPUTS:
         lo, hi, unit = input_ranges()[name]
+    elif name in PRESETS:  # a catalogue entry whose numbers the point takes
+        from servofmu.physics import catalog
+
+        keys = catalog.keys(f"{name}s")
+        return "" if _as_key(name, value) in keys else f"= {value!r} is not one of {keys}"
     else:
         spec = parameter(name)
         if spec.choices:
@@ -292,11 +300,11 @@ def _describe(point: dict) -> str:
 
 
 def _as_key(name: str, value):
-    """A choice's catalogue key as text: a key that reads as a number (the bearing "71803",
+    """A preset's catalogue key as text: a key that reads as a number (the bearing "71803",
     parsed from a command line as 71803.0) comes back as "71803"."""
-    from servofmu.physics.bearing_parameters import PARAMETER_NAMES, parameter
+    from servofmu.physics.bearing_parameters import PRESETS
 
-    if name in PARAMETER_NAMES and parameter(name).choices and isinstance(value, (int, float)):
+    if name in PRESETS and isinstance(value, (int, float)):
         return str(int(value)) if float(value).is_integer() else str(value)
     return value
 

@@ -122,8 +122,8 @@ def test_clearance_group_c3_and_an_explicit_clearance():
 @pytest.mark.parametrize(
     "changes, message",
     [
-        ({"ball_diameter": q(14, "mm")}, "must be below outer_diameter = 0.052"),
-        ({"n_balls": q(16, "-")}, "do not fit on the pitch circle"),
+        ({"ball_diameter": q(14, "mm")}, "ball_diameter = 0.014 m must be below (outer_diam"),
+        ({"n_balls": q(16, "-")}, "(the balls must fit on the pitch circle)"),
         ({"inner_curvature": q(0.5, "-")}, "inner_curvature = 0.5"),
         ({"contact_angle": q(15, "deg")}, "exactly one of them"),
         ({"radial_clearance_group": "C9"}, "radial_clearance_group = 'C9'"),

@@ -1,6 +1,8 @@
-"""Choices (catalogue keys, lubrication, controller mode): enumeration items in the
-modelDescription, range-checked integers in the FMUs, saved in the state, bound from .ssv files
-and set by item name in the harness; the FMI encoding alternative; the variable-table checks."""
+"""Choices (lubrication, arrangement, preload method, loop model and reading, controller
+mode): enumeration items in the modelDescription, range-checked integers in the FMUs, saved in
+the state, bound from .ssv files and set by item name in the harness; the FMI encoding
+alternative; the variable-table checks. (Catalogue entries are presets of the numbers, not
+choices: tests/test_parameters.py.)"""
 
 from __future__ import annotations
 
@@ -33,20 +35,21 @@ def _items(fmu_path) -> dict[str, dict[str, int]]:
     return choice_items(parse(read_member(fmu_path, "modelDescription.xml"), "md"))
 
 
-def test_every_choice_has_its_catalogue_items_in_file_order(fmus):
+def test_every_choice_is_a_structural_choice_with_named_items(fmus):
     items = _items(fmus["BearingFriction"])
     choices = {p.name for p in PARAMETERS if p.choices}
     assert choices == {
-        "mounting", "bearing", "lubrication", "lubricant", "frame_material", "shaft_material"
+        "lubrication", "arrangement", "preload_method", "loop_model", "loop_reading"
     }  # fmt: skip
     assert set(items) == choices | {"temperature_mode"}  # the FMU's own choice of inputs
     assert list(items["temperature_mode"]) == ["uniform", "housing_shaft", "parts"]
     assert list(items["lubrication"]) == ["grease", "solid"]
-    assert list(items["bearing"])[:2] == ["from_mounting", "71803"]  # "" = the mounting's own
-    assert items["mounting"]["ning_space_shaft"] == parameter("mounting").item("ning_space_shaft")
+    assert list(items["arrangement"]) == ["face_to_face", "back_to_back"]
+    assert list(items["preload_method"]) == ["shim", "force", "spring"]
+    assert items["loop_model"]["yoke"] == parameter("loop_model").item("yoke") == 2
     assert _items(fmus["ServoController"]) == {"mode": {"position": 1, "speed": 2}}
     actuator = _items(fmus["ActuatorStiffness"])
-    assert next(iter(actuator["support_mounting"])) == "none"
+    assert set(actuator) == {f"support_{c}" for c in choices - {"lubrication"}}
     for path in fmus.values():  # no String variable is left
         if path.suffix == ".fmu":
             xml = read_member(path, "modelDescription.xml")
@@ -55,7 +58,7 @@ def test_every_choice_has_its_catalogue_items_in_file_order(fmus):
 
 def test_choice_values_survive_a_serialised_state(fmus):
     path = fmus["BearingFriction"]
-    setting = dict(mounting="ning_space_shaft", lubrication="solid", lubricant="mos2_film")
+    setting = dict(lubrication="solid", arrangement="back_to_back", loop_model="members")
     fmu = Fmu(path, "a").init(temperature=300.0, speed=0.3, **setting)
     blob = fmu.slave.serializeFMUstate(fmu.slave.getFMUstate())
     expected = fmu.real_outputs()
@@ -92,7 +95,7 @@ def test_ssv_choices_carry_the_value_of_their_item_name(fmus):
                     checked += 1
         finally:
             system.close()
-    assert checked >= 9  # mounting, lubrication, lubricant ×3 systems, modes, support
+    assert checked >= 18  # five bearing choices ×3 systems, the controllers' modes
 
 
 def test_harness_takes_item_names_and_refuses_others(fmus):
@@ -101,7 +104,7 @@ def test_harness_takes_item_names_and_refuses_others(fmus):
         assert system.components["bearing"].parameters["lubrication"] == ("Integer", 2)
         res = run(system, stop=0.02, record=["bearing.kinematic_viscosity"], progress=False)
         assert np.all(res["bearing.kinematic_viscosity"] == 0.0)  # solid, from the .ssv
-        greased = {"bearing.lubrication": "grease", "bearing.lubricant": "krytox_143aa"}
+        greased = {"bearing.lubrication": "grease"}  # with the .ssv's (unused) viscosities
         res = run(system, parameters=greased, stop=0.02, record=["bearing.kinematic_viscosity"])
         assert np.all(res["bearing.kinematic_viscosity"] > 0)
         res = run(system, parameters={"bearing.lubrication": "2"}, stop=0.02, progress=False)
@@ -131,7 +134,7 @@ def test_ssv_bindings_of_a_choice(fmus, tmp_path, binding, message):
             (folder / f.relative_to(source)).write_bytes(f.read_bytes())
     ssv = folder / "bearing.ssv"
     text = ssv.read_text()
-    old = '<ssv:Parameter name="lubrication" description="solid"><ssv:Integer value="2"/>'
+    old = '<ssv:Parameter name="lubrication" description="solid"><ssv:Integer value="2" />'
     assert old in text
     ssv.write_text(text.replace(old, f'<ssv:Parameter name="lubrication">{binding}'))
     validate(parse(ssv.read_bytes(), str(ssv)), "ssv", str(ssv))  # fmpy's SSP 1.0 schema
@@ -195,23 +198,18 @@ def test_physics_does_not_import_the_fmu_layer():
                 assert not [a for a in node.names if "fmus" in a.name], source.name
 
 
-def test_a_catalogue_key_that_reads_as_a_number_stays_a_key(fmus):
-    """The command line parses --grid/--parameters values as floats when they read as one:
-    the bearing "71803" must still name the bearing (harness and the sweep's model task)."""
+def test_a_catalogue_key_that_reads_as_a_number_stays_a_key():
+    """The command line parses --grid values as floats when they read as one: the bearing
+    preset "71803" must still name the bearing (the sweep's model task)."""
     from servofmu.harness.sweep import ModelTask
     from servofmu.physics.bearing_parameters import default_parameters
 
     base = default_parameters("yu2017_gimbal")
-    rows = ModelTask(base, ("preload",))([{"bearing": 71803.0}, {"bearing": "71803"}])
+    rows = ModelTask(base, ("preload",))(
+        [{"bearing": 71803.0}, {"bearing": "71803"}, {"bearing": 71804.0}]
+    )
     assert "error" not in rows[0] and rows[0]["preload"] == rows[1]["preload"]
-    system = load_system(fmus["BearingFriction"].parent / "seeker_gimbal.ssp")
-    try:
-        for value in (71803.0, "71803", 2, "2"):  # the name, or the item value 2
-            run(system, parameters={"bearing.bearing": value}, stop=0.002, progress=False)
-        with pytest.raises(HarnessError, match=r"bearing = 71804 is not one of the items"):
-            run(system, parameters={"bearing.bearing": 71804.0}, stop=0.002)
-    finally:
-        system.close()
+    assert "bearing key = '71804' is not one of" in rows[2]["error"]
 
 
 def test_command_line_refuses_a_bad_item_with_exit_2(fmus, tmp_path, capsys):
@@ -219,8 +217,8 @@ def test_command_line_refuses_a_bad_item_with_exit_2(fmus, tmp_path, capsys):
 
     ssp = str(fmus["BearingFriction"].parent / "space_bearing.ssp")
     args = ["run", ssp, "--stop", "0.02", "--out", str(tmp_path)]
-    assert main([*args, "--parameters", "bearing.mounting=nowhere"]) == 2
+    assert main([*args, "--parameters", "bearing.arrangement=nowhere"]) == 2
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "bearing.mounting = 'nowhere'" in err
-    assert "ning_space_shaft (3)" in err and not (tmp_path / "results.csv").exists()
-    assert main([*args, "--parameters", "bearing.mounting=ning_space_shaft"]) == 0
+    assert len(err.splitlines()) == 1 and "bearing.arrangement = 'nowhere'" in err
+    assert "face_to_face (1)" in err and not (tmp_path / "results.csv").exists()
+    assert main([*args, "--parameters", "bearing.arrangement=face_to_face"]) == 0

@@ -4,7 +4,8 @@ that are not there).
 
 Through fmpy, for each FMU: the outputs right after initialization at a base point, then again
 with each input and each parameter changed alone (a few values each; a choice: every other
-item). An output may move only with the inputs and parameters its InitialUnknowns entry
+item; a number tied to others, within 1 % when larger changes are refused). An output may
+move only with the inputs and parameters its InitialUnknowns entry
 declares, and it must move with at least one of them (unless it declares none). A change the
 FMU refuses (its log says error) tells nothing about dependencies and is skipped, but every
 variable must have at least one accepted change. The stepped FMUs' outputs must not move when
@@ -34,6 +35,16 @@ BASE = {
 }
 # a change where the base value is 0, by unit
 STEP = {"m": 2e-6, "N": 20.0, "N/m": 1e8, "rad/s": 0.3, "A": 0.5, "rad": 0.1, "V": 2.0}
+# choice items that need other values to be accepted (a preload method needs its force or
+# spring): changed together with them (their own dependencies are probed alone)
+_PRELOAD = {2: {"assembly_preload": 50.0}, 3: {"spring_stiffness": 1e5, "spring_compression": 3e-4}}
+COMPANIONS = {
+    "preload_method": _PRELOAD,
+    "support_preload_method": {
+        i: {f"support_{k}": v for k, v in values.items()} for i, values in _PRELOAD.items()
+    },
+    "support_loop_reading": {2: {"support_shaft_length": 0.014}},
+}
 
 
 def _candidates(v, base):
@@ -42,10 +53,12 @@ def _candidates(v, base):
         return [i for i in _items[v.name].values() if i != base]
     if v.type == "Boolean":
         return [not base]
-    if v.type != "Real":
-        return []
     lo = -float("inf") if v.min is None else float(v.min)
     hi = float("inf") if v.max is None else float(v.max)
+    if v.type == "Integer":
+        return [x for x in (base + 1, base - 1) if lo <= x <= hi]
+    if v.type != "Real":
+        return []
     if v.unit == "K" and base > 100.0:  # an absolute temperature (else a difference)
         values = [base + 10.0, base + 100.0, base - 80.0]
     elif base == 0.0:
@@ -98,8 +111,14 @@ def test_initial_unknowns_declare_their_true_dependencies(fmus, name):
         else:
             start = float(start) if v.type == "Real" else int(start)
         accepted = 0
-        for value in _candidates(v, start):
-            out, _ = probe.initial({**BASE[name], v.name: value})
+        near = [start * 1.01, start * 0.99] if v.type == "Real" else []
+        for value in [*_candidates(v, start), None, *near]:
+            if value is None:  # a number tied to others (a pitch diameter between d and D)
+                if accepted:  # is tried close to its start only when nothing else was taken
+                    break
+                continue
+            with_it = COMPANIONS.get(v.name, {}).get(value, {})
+            out, _ = probe.initial({**BASE[name], **with_it, v.name: value})
             if out is None:
                 continue
             accepted += 1

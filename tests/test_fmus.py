@@ -287,10 +287,31 @@ def test_bad_tunable_parameter_then_fixed(fmus):
 @pytest.mark.parametrize(
     "name, params, text",
     [
-        ("BearingFriction", {"mounting": 9}, "mounting = 9 is not one of the items (1 = yu2017"),
-        ("BearingFriction", {"bearing": 0}, "bearing = 0 is not one of the items (1 = from_moun"),
+        ("BearingFriction", {"arrangement": 9}, "arrangement = 9 is not one of the items (1 = fa"),
+        ("BearingFriction", {"preload_method": 0}, "preload_method = 0 is not one of the items"),
         ("ServoController", {"mode": 3}, "mode = 3 is not one of the items (1 = position, 2 = s"),
-        ("ActuatorStiffness", {"support_mounting": -1}, "support_mounting = -1 is not one of"),
+        ("ActuatorStiffness", {"support_loop_model": -1}, "support_loop_model = -1 is not one"),
+        # the consistency checks of issue 13, logged at fmi2ExitInitializationMode
+        ("BearingFriction", {"ball_diameter": 5e-3}, "ball_diameter = 0.005 m must be below (ou"),
+        ("BearingFriction", {"n_balls": 40}, "(the balls must fit on the pitch circle)"),
+        ("BearingFriction", {"inner_curvature": 0.5}, "inner_curvature = 0.5 must exceed 0.5"),
+        ("BearingFriction", {"nominal_contact_angle": 0.8}, "nominal_contact_angle = 0.8 is out"),
+        ("BearingFriction", {"pitch_diameter": 0.016}, "pitch_diameter = 0.016 m must lie betw"),
+        (
+            "BearingFriction",
+            {"lubricant_viscosity_100": 1e-3},
+            "lubricant_viscosity_100 = 0.001 m2/s must be below lubricant_viscosity_40",
+        ),
+        (
+            "BearingFriction",
+            {"preload_method": "spring"},
+            "preload_method = spring needs spring_stiffness > 0 N/m (got 0.0)",
+        ),
+        (
+            "ActuatorStiffness",
+            {"support_ball_diameter": 7e-3},
+            "ball_diameter = 0.007 m must be below (outer_diameter − bore)/2 = 0.006 m",
+        ),
         (
             "ServoController",
             {"output_min": 5.0, "output_max": 1.0},

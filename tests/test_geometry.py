@@ -58,12 +58,21 @@ def test_71807c_geometry_is_consistent():
         ({"outer_curvature": 0.49}, "outer_curvature = 0.49"),
         ({"ball_diameter": -1e-3}, "ball_diameter = -0.001"),
         ({"bore": float("nan")}, "bore = nan"),
-        ({"n_balls": 40}, "do not fit on the pitch circle"),
+        ({"n_balls": 40}, "n_balls × ball_diameter = 40 × 0.00238"),
+        ({"n_balls": 40}, "(the balls must fit on the pitch circle)"),
         ({"n_balls": 2}, "n_balls = 2"),
-        ({"outer_groove_diameter": 18e-3}, "groove diameters must satisfy"),
+        ({"n_balls": 15.0}, "n_balls = 15.0 must be an integer"),
+        ({"ball_diameter": 4.6e-3}, "ball_diameter = 0.0046 m must be below (outer_diameter"),
+        ({"nominal_contact_angle": 0.8}, "nominal_contact_angle = 0.8 rad (45.8366°) is outside"),
+        ({"nominal_contact_angle": -0.01}, "nominal_contact_angle = -0.01 rad"),
+        ({"pitch_diameter": 16e-3}, "pitch_diameter = 0.016 m must lie between bore = 0.017"),
+        ({"pitch_diameter": 26.5e-3}, "pitch_diameter = 0.0265 m must lie between"),
+        ({"pitch_diameter": 19.3e-3}, "the inner groove (diameter pitch_diameter − ball_diam"),
+        ({"outer_diameter": 16e-3}, "outer_diameter = 0.016 m must exceed bore = 0.017 m"),
     ],
 )
 def test_bad_geometry_is_rejected(b71803, change, match):
+    """The consistency checks of the FMU parameters (issue 13), each naming its values."""
     with pytest.raises(ValueError, match=re.escape(match)):
         dataclasses.replace(b71803, **change)
 

@@ -250,7 +250,8 @@ def test_linear_transformation_maps_motor_angle_to_output_angle(out, tmp_path):
         '<ssd:Connector name="motor_angle" kind="input">',
         '<ssd:Connector name="angle" kind="input">',
     )
-    _edit(folder / "actuator.ssv", '<ssv:Boolean value="true"/>', '<ssv:Boolean value="false"/>')
+    old = '<ssv:Parameter name="motor_side_inputs"><ssv:Boolean value="true"/>'
+    _edit(folder / "actuator.ssv", old, old.replace("true", "false"))
     system = load_system(folder, fmu_dir=out)
     try:
         assert next(c for c in system.connections if c.end == ("actuator", "angle")).factor == (
@@ -405,7 +406,7 @@ def test_cli_run_writes_results_and_reports_failures(tmp_path, out, capsys):
             "--parameters",
             "controller.kp=3",
             "--parameters",
-            "bearing.bearing=71803",  # a choice by its item name
+            "bearing.arrangement=face_to_face",  # a choice by its item name
             "--signal",
             f"bearing.temperature={profile}:T",
             "--stop",

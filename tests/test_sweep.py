@@ -76,13 +76,13 @@ def test_model_task_matches_the_bearing_model_and_isolates_bad_points():
 
 def test_sweep_on_worker_processes_keeps_results_around_failures(client, tmp_path):
     points = grid_points({"temperature": [233.15, 293.15, 333.15], "shim": [2e-5, 3e-5]})
-    # every value is valid alone; together with grease the dry film has no viscosity model
-    points.append({"temperature": 293.15, "lubricant": "mos2_film"})
+    # every value is valid alone; the 6205's 52 mm ring does not fit the gimbal's 36 mm boss
+    points.append({"temperature": 293.15, "bearing": "6205"})
     res = run_sweep(ModelTask(BASE, ("running_torque",)), points, client=client, progress=False)
     assert res.workers == 2 and len(res.rows) == 7
     assert [r["temperature"] for r in res.rows] == [p["temperature"] for p in points]
     (bad,) = res.failed
-    assert bad["lubricant"] == "mos2_film" and "viscosity model" in bad["error"]
+    assert bad["bearing"] == "6205" and "housing_outer_diameter" in bad["error"]
     expected = ModelTask(BASE, ("running_torque",))(points[:6])
     assert [r["running_torque"] for r in res.rows[:6]] == [r["running_torque"] for r in expected]
     import csv
@@ -108,9 +108,11 @@ def test_system_sweep_instantiates_fmus_in_the_workers(client, fmus):
     points = grid_points({"bearing.temperature": [253.15, 293.15, 1000.0]})
     with pytest.raises(ValueError, match=r"sweep point 2 .*temperature = 1000\.0 is outside"):
         run_sweep(task, points, client=client, chunk_size=1, progress=False)  # before submitting
-    points[2] = {"bearing.temperature": 293.15, "bearing.lubricant": "mos2_film"}  # with grease
+    # in range alone, but a 5 mm ball does not fit between the 71803's 17 mm bore and 26 mm
+    # outside: the FMU refuses the geometry at initialization
+    points[2] = {"bearing.temperature": 293.15, "bearing.ball_diameter": 5e-3}
     res = run_sweep(task, points, client=client, chunk_size=1, progress=False)
-    assert "HarnessError" in res.rows[2]["error"] and "viscosity" in res.rows[2]["error"]
+    assert "HarnessError" in res.rows[2]["error"] and "ball_diameter" in res.rows[2]["error"]
     system = load_system(ssp)
     try:
         direct = run(system, parameters=points[0], stop=0.2, record=list(task.record))

@@ -22,10 +22,47 @@ def _paper(args) -> int:
 
 
 def _build(args) -> int:
+    from servofmu.build import catalogs
     from servofmu.build.fmu import FMUS, build_all
 
-    for path in build_all(Path(args.out), args.names or FMUS):
-        print(path)
+    # user catalogues and presets are checked before anything is built (exit 2 on an error)
+    defaults = catalogs.load(args.catalog, args.preset, args.lubricant, args.support_mounting)
+    try:
+        for path in build_all(Path(args.out), args.names or FMUS, defaults=defaults):
+            print(path)
+    finally:
+        catalogs.unload()
+    return 0
+
+
+def _catalog(args) -> int:
+    """List the catalogue, or print (and write as .ssv) one preset's parameter set."""
+    from servofmu.build import catalogs
+
+    catalogs.load(args.catalog)
+    try:
+        if not (args.preset or args.bearing or args.lubricant):
+            if args.ssv:
+                raise ValueError("--ssv writes a preset: name it with --preset MOUNTING")
+            print(catalogs.listing())
+            return 0
+        from servofmu.parameter_sets import write_ssv
+        from servofmu.physics.bearing_parameters import (
+            DEFAULT_MOUNTING,
+            default_parameters,
+            default_sources,
+        )
+
+        mounting = args.preset or DEFAULT_MOUNTING
+        kw = {"bearing": args.bearing, "lubricant": args.lubricant}
+        values = default_parameters(mounting, **kw)
+        what = ", ".join(f"{k} {v}" for k, v in {"mounting": mounting, **kw}.items() if v)
+        print(f"preset: {what}")
+        print(catalogs.preset_table(values, default_sources(mounting, **kw)))
+        if args.ssv:
+            print(f"file: {write_ssv(values, args.ssv, args.component, comment='preset: ' + what)}")
+    finally:
+        catalogs.unload()
     return 0
 
 
@@ -229,11 +266,9 @@ def _calibrate(args) -> int:
 
     # every argument first: nothing is read or fitted with a bad one
     mounting = args.mounting or _mounting_for(args.bearing or "71803")
-    params = default_parameters(mounting, args.lubrication)
-    if args.bearing:  # another bearing in the mounting (default: the mounting's own)
-        params["bearing"] = args.bearing
-    if args.lubricant:
-        params["lubricant"] = args.lubricant
+    params = default_parameters(  # the presets' numbers; --set numbers win
+        mounting, args.lubrication, bearing=args.bearing, lubricant=args.lubricant
+    )
     _set_known(params, args.set)
     pair_from_parameters(params)  # a catalogue key or value that does not fit: exit 2
     speed = parse_quantity(args.speed, "speed") if args.speed else None
@@ -460,7 +495,34 @@ def build_parser() -> argparse.ArgumentParser:
     b = sub.add_parser("build", help="build the FMUs (pythonfmu) into build/out")
     b.add_argument("names", nargs="*", help="FMUs to build (default: all five)")
     b.add_argument("--out", default="build/out", help="output directory (default build/out)")
+    b.add_argument(
+        "--catalog",
+        action="append",
+        default=[],
+        metavar="FILE.toml",
+        help="a user catalogue (bearings, lubricants, materials, mountings; format: "
+        "examples/my_gimbal_catalog.toml) merged into the presets; its [defaults] fill the "
+        "start values",
+    )
+    b.add_argument("--preset", metavar="MOUNTING", help="mounting whose numbers (its bearing "
+                   "and lubricant) become BearingFriction's start values")  # fmt: skip
+    b.add_argument("--lubricant", help="lubricant of BearingFriction's start values")
+    b.add_argument("--support-mounting", metavar="MOUNTING",
+                   help="mounting of ActuatorStiffness's support pair (start values)")  # fmt: skip
     b.set_defaults(func=_build)
+    k = sub.add_parser(
+        "catalog",
+        help="list the catalogue (bearings, lubricants, materials, mountings) or print a "
+        "preset's parameter set (and write it as .ssv)",
+    )
+    k.add_argument("--catalog", action="append", default=[], metavar="FILE.toml",
+                   help="a user catalogue merged into the listing")  # fmt: skip
+    k.add_argument("--preset", metavar="MOUNTING", help="print this mounting's parameter set")
+    k.add_argument("--bearing", help="with the numbers of this catalogue bearing")
+    k.add_argument("--lubricant", help="with this catalogue lubricant")
+    k.add_argument("--ssv", metavar="FILE.ssv", help="write the preset as an SSP parameter set")
+    k.add_argument("--component", help="prefix the names in the .ssv (a system variant)")
+    k.set_defaults(func=_catalog)
     v = sub.add_parser(
         "validate", help="validate FMUs (fmpy + servofmu checks); exit 1 on problems"
     )

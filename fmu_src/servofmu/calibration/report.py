@@ -5,17 +5,31 @@ BearingFriction FMU and the systems."""
 from __future__ import annotations
 
 from pathlib import Path
-from xml.etree.ElementTree import Element, ElementTree, SubElement, indent, register_namespace
 
 import numpy as np
 
-from ..physics.bearing_parameters import PARAMETERS
+from ..parameter_sets import write_ssv
 from ..physics.units import DEG, NMM, ZERO_CELSIUS
 from .fit import UNKNOWNS, Calibration, running_torque
 
-SSV_NS = "http://ssp-standard.org/SSP1/SystemStructureParameterValues"
 #: Plot markers of the measured points per direction.
 MARKERS = (("forward", "o"), ("reverse", "s"), ("", "^"))
+
+__all__ = ["plot", "to_text", "write_residuals", "write_ssv"]
+
+
+def _configuration(p) -> str:
+    """The fixed set in a line: bearing, arrangement and preload, lubrication."""
+    mm = 1e3
+    lube = p["lubrication"]
+    if lube == "grease":
+        lube += f" (ν40 = {p['lubricant_viscosity_40'] * 1e6:.4g} cSt)"
+    return (
+        f"bearing {p['bore'] * mm:g}×{p['outer_diameter'] * mm:g}×{p['width'] * mm:g} mm, "
+        f"{p['n_balls']} balls of {p['ball_diameter'] * mm:.4g} mm, "
+        f"α0 = {np.degrees(p['nominal_contact_angle']):.4g}°; {p['arrangement']}, preload by "
+        f"{p['preload_method']}; {lube}"
+    )
 
 
 def to_text(cal: Calibration) -> str:
@@ -38,12 +52,7 @@ def to_text(cal: Calibration) -> str:
         f"speed {', '.join(f'{s:g}' for s in speeds)} °/s"
         + (" (assumed: no speed column)" if cal.speed_assumed else ""),
         "",
-        "configuration (fixed): "
-        + ", ".join(
-            f"{k} = {cal.parameters[k]!r}"
-            for k in ("mounting", "bearing", "lubrication", "lubricant")
-            if cal.parameters[k] != ""
-        ),
+        "configuration (fixed): " + _configuration(cal.parameters),
         "",
         f"{'unknown':18s} {'estimate':>12s} {'std error':>11s} {'rel':>7s} {'start':>11s}  bounds",
     ]
@@ -193,33 +202,4 @@ def plot(cal: Calibration, path) -> Path:
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
-    return path
-
-
-def write_ssv(parameters, path, component: str | None = None, name: str = "servofmu") -> Path:
-    """The whole BearingFriction parameter set as an SSP 1.0 parameter set: bare names (a
-    component-level binding, or start values for the FMU), or ``component.name`` names (a
-    variant of a system, e.g. ``ssp/seeker_gimbal/variants/``). A choice is written as its
-    item number (``ssv:Integer``, which every engine applies) with the item name as the
-    parameter's description. The set's name is the one every .ssv of ``ssp/`` carries (ecos
-    applies the sets of one name only)."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    root = Element(f"{{{SSV_NS}}}ParameterSet", {"version": "1.0", "name": name})
-    params = SubElement(root, f"{{{SSV_NS}}}Parameters")
-    for spec in PARAMETERS:
-        value = parameters[spec.name]
-        attrs = {"name": f"{component}.{spec.name}" if component else spec.name}
-        if spec.choices:  # an item number (every engine applies ssv:Integer), its name beside
-            item = spec.item(value)
-            attrs["description"] = spec.choices[item - 1].name
-            elem = SubElement(params, f"{{{SSV_NS}}}Parameter", attrs)
-            SubElement(elem, f"{{{SSV_NS}}}Integer", {"value": str(item)})
-        else:
-            elem = SubElement(params, f"{{{SSV_NS}}}Parameter", attrs)
-            SubElement(elem, f"{{{SSV_NS}}}Real", {"value": repr(float(value))})
-    tree = ElementTree(root)
-    indent(tree)
-    register_namespace("ssv", SSV_NS)
-    tree.write(path, encoding="UTF-8", xml_declaration=True)
     return path

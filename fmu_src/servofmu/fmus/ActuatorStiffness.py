@@ -6,29 +6,44 @@ output shaft for the current angle, hinge moment and temperature
 The angle comes from the ``angle`` input (output shaft) or, with the parameter
 ``motor_side_inputs``, from ``motor_angle`` (motor shaft) through the exact inverse of the
 crank-slider (:func:`servofmu.physics.actuator.output_angle`): a system can then connect its
-motor to the actuator directly, without a LinearTransformation, which can only be linear."""
+motor to the actuator directly, without a LinearTransformation, which can only be linear.
+
+The support-bearing pair is given by numbers, like BearingFriction's pair: the parameters
+``support_<name>`` for every ``name`` of the pair's state (bearing geometry, materials, seats,
+loop, preload; :data:`servofmu.physics.bearing_parameters.STATE_PARAMETERS`), defaults the
+support mounting of Liu's actuator record (a preset, ``data/mountings.toml``);
+``support_bearings`` false leaves the pair out (a rigid support)."""
 
 from __future__ import annotations
 
 import dataclasses
 
-from servofmu.fmus.slave import ServoSlave, Var, items, output, real_input, real_parameter
+from servofmu.fmus.slave import ServoSlave, Var, output, real_input, real_parameter, spec_parameter
 from servofmu.physics import catalog
 from servofmu.physics.actuator import ActuatorModel
 from servofmu.physics.actuator import output_angle as mechanism_output_angle
-from servofmu.physics.bearing import BearingPair, with_mounting
-from servofmu.physics.bearing_parameters import FROM_MOUNTING, Choice, catalogue_choices
+from servofmu.physics.bearing_parameters import (
+    STATE_PARAMETERS,
+    default_parameters,
+    default_sources,
+    pair_from_parameters,
+    prefixed_specs,
+)
 
 _A = catalog.actuator("liu2014_ema")
 _ANGLE = ("angle", "motor_angle")  # the position input: output shaft, or motor shaft
 _LOAD = ("temperature", "load_torque", *_ANGLE)
 # with motor_side_inputs, the angle follows from motor_angle through the ratio's parameters
 _MOTOR_SIDE = ("motor_side_inputs", "gear_ratio", "screw_lead")
-_SUPPORT_MOUNTINGS = catalogue_choices(
-    "mountings", Choice("", "none", "no support bearings (rigid: infinite stiffness)")
-)
-_SUPPORT_BEARINGS = catalogue_choices(
-    "bearings", Choice("", FROM_MOUNTING, "the support mounting's own bearing")
+# the support pair: the actuator record's mounting as the preset of its numbers (a dry film:
+# the lubricant plays no part in stiffness)
+_SUPPORT_BASE = default_parameters(_A.support_mounting, lubricant="mos2_film")
+_SUPPORT_SPECS = prefixed_specs(
+    "support_",
+    "Support pair",
+    STATE_PARAMETERS,
+    _SUPPORT_BASE,
+    default_sources(_A.support_mounting, lubricant="mos2_film"),
 )
 # parameters by the part of the model they enter (the outputs' initial dependencies)
 _KINEMATICS = ("crank_length", "rod_length", "neutral_crank_angle", "neutral_rod_angle")
@@ -41,7 +56,7 @@ _LINKAGE = (
     "youngs_modulus",
     "shear_modulus",
 )
-_SUPPORT = ("seat_stiffness", "support_mounting", "support_bearing", "support_preload")
+_SUPPORT = ("seat_stiffness", "support_bearings", *(p.name for p in _SUPPORT_SPECS))
 _GEAR = ("screw_lead", "gear_torsional_stiffness")
 _RATIO = ("gear_ratio", "screw_lead")
 _ELEMENTS = (*_GEAR, "screw_axial_stiffness", "housing_axial_stiffness", *_LINKAGE, *_SUPPORT)
@@ -52,19 +67,6 @@ def _p(name, description, unit, display, lo, hi, field=None):
     field = field or name
     start = float(getattr(_A, field))
     return real_parameter(name, description, start, unit, display, lo, hi, source=_A.source(field))
-
-
-def _choice(name, description, choices, declared_type, start, source):
-    return Var(
-        name=name,
-        type="Enumeration",
-        causality="parameter",
-        description=description,
-        start=[c.key for c in choices].index(start) + 1,
-        items=items(choices),
-        declared_type=declared_type,
-        source=source,
-    )
 
 
 def _out(name, description, params, unit="N.m/rad", display="N.m/deg", depends=_LOAD, **kw):
@@ -252,32 +254,16 @@ class ActuatorStiffness(ServoSlave):
             1e-3,
             1e15,
         ),
-        _choice(
-            "support_mounting",
-            "Catalogue mounting of the support-bearing pair",
-            _SUPPORT_MOUNTINGS,
-            "SupportMounting",
-            _A.support_mounting,
-            "assumed: this project's extension",
+        Var(
+            name="support_bearings",
+            type="Boolean",
+            causality="parameter",
+            description="true: the screw's support-bearing pair (support_*) in series; false: "
+            "a rigid support",
+            start=bool(_A.support_mounting),
+            source="assumed: this project's extension of Liu 2014",
         ),
-        _choice(
-            "support_bearing",
-            "Support-bearing designation",
-            _SUPPORT_BEARINGS,
-            "Bearing",
-            "",
-            "catalogue: data/bearings.toml",
-        ),
-        real_parameter(
-            "support_preload",
-            "Preload of the support pair at assembly",
-            200.0,
-            "N",
-            None,
-            1e-3,
-            1e6,
-            source=catalog.mounting("liu2014_screw_support").source("assembly_preload"),
-        ),
+        *(spec_parameter(p) for p in _SUPPORT_SPECS),
         # the motor side (issue 15): an SSP connection can only scale linearly, so a system
         # that drives the actuator from its motor gives it the motor's angle and speed, and
         # the exact crank-slider reduction is applied here
@@ -329,7 +315,6 @@ class ActuatorStiffness(ServoSlave):
     )
 
     def configure(self):
-        mounting = _SUPPORT_MOUNTINGS[self.support_mounting - 1].key
         act = dataclasses.replace(
             _A,
             **{
@@ -340,15 +325,18 @@ class ActuatorStiffness(ServoSlave):
             gear_stiffness=self.gear_torsional_stiffness,
             screw_stiffness=self.screw_axial_stiffness,
             housing_stiffness=self.housing_axial_stiffness,
-            support_mounting=mounting,
+            support_mounting=_A.support_mounting if self.support_bearings else "",
         )
         support = None
-        if mounting:
-            pair = BearingPair.from_catalog(mounting, "mos2_film")
-            bearing = _SUPPORT_BEARINGS[self.support_bearing - 1].key
-            if bearing:
-                pair = dataclasses.replace(pair, bearing=catalog.bearing(bearing))
-            support = with_mounting(pair, assembly_preload=self.support_preload)
+        if self.support_bearings:
+            values = dict(_SUPPORT_BASE)
+            for p in _SUPPORT_SPECS:
+                value = getattr(self, p.name)
+                values[p.name.removeprefix("support_")] = p.key(value) if p.choices else value
+            try:
+                support = pair_from_parameters(values)
+            except ValueError as exc:
+                raise ValueError(f"support pair (parameters support_*): {exc}") from None
         self.model = ActuatorModel(act, support)
 
     def compute(self):

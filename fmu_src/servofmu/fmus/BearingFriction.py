@@ -3,9 +3,17 @@ with the thermal coupling of frame, shaft and bearings (Yu 2017; Ning).
 
 Inputs → :class:`servofmu.physics.bearing.BearingModel` → outputs. The parameters are those
 of :mod:`servofmu.physics.bearing_parameters` (one definition: name, unit, range, default and
-provenance), defaults Yu 2017's seeker gimbal (71803 pair, Krytox 143AA grease,
-cast-aluminium frame, 45-steel shaft) with the coefficients calibrated in
-``servofmu paper yu2017``.
+provenance): every physical input is a number — the bearing's internal geometry (``bore``,
+``outer_diameter``, ``width``, ``ball_diameter``, ``n_balls``, ``pitch_diameter``,
+``nominal_contact_angle``, ``inner_curvature``, ``outer_curvature``), the materials of rings,
+balls, housing, shaft and spacer, the seats, the loop geometry, the preload, the lubricant's
+ν40/ν100 — and the model uses exactly these numbers. The defaults are a catalogue preset filled
+in at build time: Yu 2017's seeker gimbal (71803 pair, Krytox 143AA, cast-aluminium yoke,
+45-steel shaft) with the coefficients calibrated in ``servofmu paper yu2017``; the presets the
+FMU was built with are in ``resources/presets/`` as SSP parameter sets. An inconsistent set (a
+geometry that cannot be a bearing, ν100 ≥ ν40, a spring preload without a stiffness, …) is
+refused at fmi2ExitInitializationMode with a logged error naming the values, and every step is
+discarded until it is fixed.
 """
 
 from __future__ import annotations
@@ -251,7 +259,7 @@ class BearingFriction(ServoSlave):
         values = {p.name: getattr(self, p.name) for p in PARAMETERS}
         for p in PARAMETERS:
             if p.choices:
-                values[p.name] = p.key(values[p.name])
+                values[p.name] = p.key(values[p.name])  # the item's key
         self._point = None  # (temperatures, axial_load, radial_load) of the last evaluate
         self.model = BearingModel(pair_from_parameters(values))
 

@@ -30,6 +30,7 @@ state in ``do_step`` and their outputs do not depend directly on the inputs.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import hashlib
 import json
@@ -73,6 +74,7 @@ UNITS: dict[str, tuple[dict[str, int], tuple[tuple[str, float, float], ...]]] = 
     "J/K": ({"kg": 1, "m": 2, "s": -2, "K": -1}, ()),
     "W/K": ({"kg": 1, "m": 2, "s": -3, "K": -1}, ()),
     "W/(m2.K)": ({"kg": 1, "s": -3, "K": -1}, ()),
+    "1/K": ({"K": -1}, ()),
     "1": ({}, ()),
 }
 
@@ -93,6 +95,11 @@ VENDOR_TOOL = "servofmu"  # VendorAnnotations/Tool name that ties choices to the
 _TYPES = {"Real": Real, "Integer": Integer, "Boolean": Boolean, "Enumeration": Integer}
 #: Package parts that run inside an FMU (the build ships and hashes exactly these).
 SHIPPED = ("__init__.py", "physics", "fmus")
+#: Start values (and their provenance) that a build gives an FMU instead of its class's
+#: defaults (``servofmu build --catalog/--preset``): {model name: {variable: (start,
+#: source)}}, set by the build process; a built FMU reads its own from
+#: ``resources/servofmu_build.json`` ("start"), so the package it ships stays the same.
+BUILD_START: dict[str, dict[str, tuple[object, str]]] = {}
 
 
 @dataclass(frozen=True)
@@ -215,6 +222,23 @@ def spec_parameter(spec) -> Var:
     )
 
 
+def variables_of(cls, start: dict[str, tuple[object, str]] | None = None) -> tuple[Var, ...]:
+    """The VARIABLES of slave class ``cls`` with the start values and provenance of ``start``
+    (default: :data:`BUILD_START` of the class), as its modelDescription and documentation
+    show them."""
+    start = BUILD_START.get(cls.__name__, {}) if start is None else start
+    by_name = {v.name for v in cls.VARIABLES}
+    unknown = sorted(set(start) - by_name)
+    if unknown:
+        raise ValueError(f"{cls.__name__}: start values for unknown variables {unknown}")
+    return tuple(
+        dataclasses.replace(v, start=start[v.name][0], source=start[v.name][1])
+        if v.name in start
+        else v
+        for v in cls.VARIABLES
+    )
+
+
 def package_hash(root: Path | None = None) -> str:
     """SHA-256 over the relative paths and contents of the .py and .toml files of the parts
     of the servofmu package an FMU runs (:data:`SHIPPED`): identifies the code an FMU was
@@ -269,31 +293,32 @@ class ServoSlave(Fmi2Slave):
         super().__init__(**kwargs)
         from pythonfmu.default_experiment import DefaultExperiment
 
-        self._check_build()
+        build_start = self._check_build()
         # after every import that loads a C++ extension (servofmu.fmus loads all of them)
         register_interpreter_finaliser(self.resources, type(self).__name__)
         start, stop, step = self.DEFAULT_EXPERIMENT
         self.default_experiment = DefaultExperiment(
             start_time=start, stop_time=stop, step_size=step
         )
-        self._by_name = {v.name: v for v in self.VARIABLES}
-        if len(self._by_name) != len(self.VARIABLES):
-            names = [v.name for v in self.VARIABLES]
+        self.variables = variables_of(type(self), build_start)
+        self._by_name = {v.name: v for v in self.variables}
+        if len(self._by_name) != len(self.variables):
+            names = [v.name for v in self.variables]
             raise ValueError(f"{type(self).__name__}: duplicate variable names {names}")
-        self._inputs = [v for v in self.VARIABLES if v.causality == "input"]
-        self._params = [v for v in self.VARIABLES if v.causality == "parameter"]
-        self._outputs = [v for v in self.VARIABLES if v.causality == "output"]
+        self._inputs = [v for v in self.variables if v.causality == "input"]
+        self._params = [v for v in self.variables if v.causality == "parameter"]
+        self._outputs = [v for v in self.variables if v.causality == "output"]
         self._input_checks = _ranges(self._inputs)
         self._param_checks = _ranges(self._params)
         self._choices = [v for v in self._params + self._inputs if v.type == "Enumeration"]
         self._copy = _copier(tuple((v.name, v.field) for v in self._outputs if v.field))
-        for v in self.VARIABLES:
+        for v in self.variables:
             setattr(self, v.name, v.start if v.causality != "output" else _zero(v.type))
         self._dirty = True  # inputs changed since the outputs were computed
         self._configured = False  # parameters turned into model objects
         self._error = ""  # why the FMU cannot compute (bad parameter or input)
         self._initializing = False  # between fmi2EnterInitializationMode and its exit
-        for v in self.VARIABLES:
+        for v in self.variables:
             self._register(v)
 
     # ------------------------------------------------------------------ registration
@@ -479,7 +504,7 @@ class ServoSlave(Fmi2Slave):
 
     # ------------------------------------------------------------------ state
     def _get_fmu_state(self):
-        values = {v.name: _CAST[v.type](getattr(self, v.name)) for v in self.VARIABLES}
+        values = {v.name: _CAST[v.type](getattr(self, v.name)) for v in self.variables}
         return {
             "values": values,
             "hidden": self.hidden_state(),
@@ -505,10 +530,12 @@ class ServoSlave(Fmi2Slave):
             self._report(Fmi2Status.error)
 
     # ------------------------------------------------------------------ version
-    def _check_build(self):
+    def _check_build(self) -> dict[str, tuple[object, str]] | None:
+        """Refuse a different servofmu; the build's start values (None: the class's, or those
+        of :data:`BUILD_START` while building)."""
         info_file = Path(self.resources or ".") / BUILD_INFO
         if not info_file.is_file():
-            return  # not running from a built FMU (e.g. imported in a test)
+            return None  # not running from a built FMU (e.g. imported in a test or the build)
         info = json.loads(info_file.read_text())
         here = _runtime_hash()
         if info["package_hash"] != here:
@@ -522,6 +549,7 @@ class ServoSlave(Fmi2Slave):
                 "process: load FMUs built from one servofmu version together, or rebuild them "
                 "with `servofmu build`."
             )
+        return {name: (value, "") for name, value in info.get("start", {}).items()}
 
     # ------------------------------------------------------------------ XML
     def to_xml(self, model_options=None):
@@ -531,15 +559,15 @@ class ServoSlave(Fmi2Slave):
         for sv in variables.findall("ScalarVariable"):
             _complete_variable(sv, self._by_name[sv.get("name")])
         after = root.find("CoSimulation")
-        for block in (_unit_definitions(self.VARIABLES), _type_definitions(self.VARIABLES)):
+        for block in (_unit_definitions(self.variables), _type_definitions(self.variables)):
             if block is not None:
                 root.insert(list(root).index(after) + 1, block)
                 after = block
-        annotations = _vendor_annotations(self.VARIABLES)
+        annotations = _vendor_annotations(self.variables)
         if annotations is not None:
             root.insert(list(root).index(variables), annotations)
         root.remove(root.find("ModelStructure"))
-        root.append(_model_structure(self.VARIABLES))
+        root.append(_model_structure(self.variables))
         return root
 
     # ------------------------------------------------------------------ hooks

@@ -11,7 +11,7 @@ def bearing_parameters(pair: BearingPair) -> list[Parameter]:
     """Geometry of the pair's bearing with provenance."""
     b = pair.bearing
     ps = [Parameter("bearing", b.key, "", b.name)]
-    for f in ("bore", "outer_diameter", "width", "ball_diameter"):
+    for f in ("bore", "outer_diameter", "width", "ball_diameter", "pitch_diameter"):
         ps.append(Parameter(f, getattr(b, f) / MM, "mm", b.source(f)))
     for f in ("inner_groove_diameter", "outer_groove_diameter"):
         ps.append(Parameter(f, getattr(b, f) / MM, "mm", b.source(f)))
@@ -19,8 +19,13 @@ def bearing_parameters(pair: BearingPair) -> list[Parameter]:
         Parameter("n_balls", b.n_balls, "", b.source("n_balls")),
         Parameter("inner_curvature", b.inner_curvature, "", b.source("inner_curvature")),
         Parameter("outer_curvature", b.outer_curvature, "", b.source("outer_curvature")),
-        Parameter("free_contact_angle", b.contact_angle / DEG, "deg", b.source("contact_angle")),
-        Parameter("free_clearance", b.clearance / UM, "um", "derived: d_o − d_i − 2·Dw"),
+        Parameter(
+            "nominal_contact_angle",
+            b.nominal_contact_angle / DEG,
+            "deg",
+            b.source("nominal_contact_angle"),
+        ),
+        Parameter("free_clearance", b.clearance / UM, "um", "derived: 2·A·(1 − cos α0)"),
     ]
     return ps
 

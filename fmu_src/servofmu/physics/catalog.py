@@ -25,15 +25,103 @@ from .materials import Material
 from .mounting import Mounting
 from .preload import LoopMember, PreloadLoop, YokeArm
 from .units import MM, UM, to_si
-from .viscosity import WaltherViscosity, walther_from_two_points
+from .viscosity import (
+    T40,
+    T100,
+    WaltherViscosity,
+    walther_from_reference,
+    walther_from_two_points,
+)
 
 PROVENANCE_KINDS = ("paper", "catalogue", "handbook", "assumed", "calibrated", "derived")
 
 
 @functools.cache
-def _table(name: str) -> dict:
+def _package_table(name: str) -> dict:
     with resources.files(__package__).joinpath(f"data/{name}.toml").open("rb") as fh:
         return tomllib.load(fh)
+
+
+#: Tables a user catalogue may add entries to (``servofmu build --catalog``).
+USER_TABLES = ("materials", "lubricants", "bearings", "mountings")
+#: Entries added by user catalogues: {table: {key: (entry, file)}}, in the order added.
+_USER: dict[str, dict[str, tuple[dict, str]]] = {t: {} for t in USER_TABLES}
+_generation = [0]
+
+
+def _table(name: str) -> dict:
+    """One data table: the package's ``data/<name>.toml``, then the user catalogues' entries."""
+    table = _package_table(name)
+    extra = _USER.get(name)
+    if not extra:
+        return table
+    return {**table, **{key: entry for key, (entry, _) in extra.items()}}
+
+
+def origin(table: str, key: str) -> str:
+    """Where entry ``key`` of ``table`` comes from: ``data/<table>.toml`` or a user file."""
+    if key in _USER.get(table, {}):
+        return _USER[table][key][1]
+    _lookup(table, key)
+    return f"data/{table}.toml"
+
+
+def generation() -> int:
+    """A number that changes whenever user catalogues are added or removed (caches of derived
+    records key on it)."""
+    return _generation[0]
+
+
+def _changed() -> None:
+    _generation[0] += 1
+    for cached in (material, lubricant_record, lubricant, bearing, mounting,
+                   mounting_coefficients):  # fmt: skip
+        cached.cache_clear()
+
+
+def add_entries(tables: dict[str, dict], file: str) -> None:
+    """Add user entries ``{table: {key: entry}}`` (tables of :data:`USER_TABLES`, entries in
+    the format of the package's data files) read from ``file``. A key that exists already
+    raises ValueError naming the file, the table and the key; nothing is added then. Each
+    entry is checked when it is loaded (:func:`check_entries`)."""
+    unknown = sorted(set(tables) - set(USER_TABLES))
+    if unknown:
+        raise ValueError(f"{file}: tables {unknown} are not among {list(USER_TABLES)}")
+    for table, entries in tables.items():
+        if not isinstance(entries, dict):
+            raise ValueError(f"{file}: [{table}] must be a table of entries")
+        for key, entry in entries.items():
+            if key in _table(table):
+                raise ValueError(
+                    f"{file}: {table}.{key} exists already (in {origin(table, key)}): choose "
+                    "another key"
+                )
+            if not isinstance(entry, dict):
+                raise ValueError(f"{file}: {table}.{key} must be a table")
+    for table, entries in tables.items():
+        for key, entry in entries.items():
+            _USER[table][key] = (entry, file)
+    _changed()
+
+
+def remove_user_entries() -> None:
+    """Forget every user catalogue entry (the package's data stay)."""
+    for table in _USER.values():
+        table.clear()
+    _changed()
+
+
+def check_entries(table: str, keys_: list[str]) -> None:
+    """Load each entry ``keys_`` of ``table``; a bad one raises ValueError naming the file,
+    the entry and the field."""
+    loader = {"materials": material, "lubricants": lubricant_record, "bearings": bearing,
+              "mountings": mounting}[table]  # fmt: skip
+    for key in keys_:
+        try:
+            loader(key)
+        except (KeyError, ValueError, TypeError) as err:
+            msg = f"field {err.args[0]!r} is missing" if isinstance(err, KeyError) else str(err)
+            raise ValueError(f"{origin(table, key)}: {table}.{key}: {msg}") from None
 
 
 def quantity(entry: dict, field: str) -> tuple[float, str]:
@@ -97,34 +185,35 @@ def _quantities(entry: dict, owner: str, skip=()) -> tuple[dict, dict]:
 
 
 def _walther(key: str, entry: dict, v: dict, prov: dict) -> WaltherViscosity:
-    """The Walther model of a lubricant entry: given a, b (and c), or the ASTM D341 fit through
-    ν40/ν100 or through the two points t1/nu1, t2/nu2. c defaults to ASTM D341's 0.7 cSt."""
+    """The Walther model of a lubricant entry, always as the ASTM D341 fit through ν40 and
+    ν100 (:func:`viscosity.walther_from_reference`, the FMU's parameters): the entry gives
+    ν40/ν100, or a, b (and c), or two points t1/nu1, t2/nu2, from which ν40 and ν100 follow
+    first. c defaults to ASTM D341's 0.7 cSt."""
     if "c" in v:
         c_cst, c_src = v["c"] / to_si(1.0, "cSt"), prov["c"]
     else:
         c_cst, c_src = 0.7, "handbook: ASTM D341 (c = 0.7 cSt)"
     name = entry["name"]
-    if "a" in v and "b" in v:
-        prov_ab = (("a", prov["a"]), ("b", prov["b"]), ("c", c_src))
-        return WaltherViscosity(key=key, name=name, a=v["a"], b=v["b"], c=c_cst, provenance=prov_ab)
     if "viscosity_40" in v and "viscosity_100" in v:
-        t1, nu1, t2, nu2 = (
-            to_si(40.0, "degC"),
-            v["viscosity_40"],
-            to_si(100.0, "degC"),
-            v["viscosity_100"],
-        )
-        fields = ("viscosity_40", "viscosity_100")
-    elif all(f in v for f in ("t1", "nu1", "t2", "nu2")):
-        t1, nu1, t2, nu2 = v["t1"], v["nu1"], v["t2"], v["nu2"]
-        fields = ("t1", "nu1", "t2", "nu2")
+        nu40, nu100 = v["viscosity_40"], v["viscosity_100"]
+        src = f"viscosity_40 ({prov['viscosity_40']}); viscosity_100 ({prov['viscosity_100']})"
     else:
-        raise ValueError(
-            "a walther model needs a and b, viscosity_40 and viscosity_100, or t1, nu1, t2, "
-            f"nu2; the entry has {sorted(v)}"
-        )
-    fit = walther_from_two_points(t1, nu1, t2, nu2, c=c_cst, key=key)
-    src = "derived: ASTM D341 fit through " + "; ".join(f"{f} ({prov[f]})" for f in fields)
+        if "a" in v and "b" in v:
+            model = WaltherViscosity(key=key, name=name, a=v["a"], b=v["b"], c=c_cst)
+            src = f"Walther a = {v['a']:g} ({prov['a']}), b = {v['b']:g} ({prov['b']})"
+        elif all(f in v for f in ("t1", "nu1", "t2", "nu2")):
+            model = walther_from_two_points(v["t1"], v["nu1"], v["t2"], v["nu2"], c=c_cst)
+            src = "; ".join(f"{f} ({prov[f]})" for f in ("t1", "nu1", "t2", "nu2"))
+        else:
+            raise ValueError(
+                "a walther model needs a and b, viscosity_40 and viscosity_100, or t1, nu1, "
+                f"t2, nu2; the entry has {sorted(v)}"
+            )
+        nu40, nu100 = (float(model.kinematic_viscosity(t)) for t in (T40, T100))
+        for field, t_c in (("viscosity_40", 40), ("viscosity_100", 100)):
+            prov[field] = f"derived: the entry's Walther model at {t_c} °C ({src})"
+    fit = walther_from_reference(nu40, nu100, c=c_cst, key=key, name=name)
+    src = f"derived: ASTM D341 fit through ν40 and ν100 ({src})"
     prov_fit = (("a", src), ("b", src), ("c", c_src))
     return WaltherViscosity(key=key, name=name, a=fit.a, b=fit.b, c=c_cst, provenance=prov_fit)
 
@@ -154,15 +243,11 @@ def _torque_test(key: str, i: int, spec: dict) -> TorqueTest:
 
 
 def _reference_viscosities(key: str, visc: WaltherViscosity, v: dict, prov: dict) -> dict:
-    """ν at 40 and 100 °C [m²/s]: the entry's, or the model's where the entry gives a, b, c."""
-    nu = {}
-    for field, t_c in (("viscosity_40", 40.0), ("viscosity_100", 100.0)):
-        if field in v:
-            nu[field] = v[field]
-        else:
-            nu[field] = float(visc.kinematic_viscosity(to_si(t_c, "degC")))
-            prov[field] = f"derived: Walther model of {key} at {t_c:g} °C"
-    return nu
+    """ν at 40 and 100 °C [m²/s]: the entry's, or its model's (provenance set by _walther)."""
+    return {
+        field: v[field] if field in v else float(visc.kinematic_viscosity(t))
+        for field, t in (("viscosity_40", T40), ("viscosity_100", T100))
+    }
 
 
 def _viscosity_points(key: str, entry: dict, prov: dict) -> tuple[tuple[float, float], ...]:
@@ -332,14 +417,19 @@ def _radial_clearance(entry: dict, v: dict, prov: dict) -> None:
     )
 
 
-def _groove_diameters(entry: dict, v: dict, prov: dict) -> tuple[float, float, float]:
-    """(d_i, d_o, Dw) [m] from the groove diameters, or from dm and Dw with either the free
-    contact angle (angular-contact) or the radial clearance (deep-groove)."""
+def _ball_set(entry: dict, v: dict, prov: dict) -> tuple[float, float, float]:
+    """(dm, Dw, α0) [m, m, rad] of an entry: from the groove diameters and the free contact
+    angle (Dw and dm follow), or from the ball set with either the free contact angle
+    (angular-contact) or the radial clearance (deep-groove: α0 follows from it)."""
     f_i, f_o = v["inner_curvature"], v["outer_curvature"]
     if "inner_groove_diameter" in v:
         d_i, d_o = v["inner_groove_diameter"], v["outer_groove_diameter"]
+        grooves = f"{prov['inner_groove_diameter']}; {prov['outer_groove_diameter']}"
         prov["ball_diameter"] = "derived: from the groove diameters and the free contact angle"
-        return d_i, d_o, ball_diameter_from_grooves(d_i, d_o, f_i, f_o, v["contact_angle"])
+        prov["pitch_diameter"] = f"derived: mean of the groove diameters ({grooves})"
+        prov["nominal_contact_angle"] = prov["contact_angle"]
+        dw = float(ball_diameter_from_grooves(d_i, d_o, f_i, f_o, v["contact_angle"]))
+        return 0.5 * (d_i + d_o), dw, v["contact_angle"]
     if "radial_clearance_group" in entry:
         _radial_clearance(entry, v, prov)
     if ("contact_angle" in v) == ("radial_clearance" in v):
@@ -349,15 +439,16 @@ def _groove_diameters(entry: dict, v: dict, prov: dict) -> tuple[float, float, f
             "free contact angle), exactly one of them"
         )
     dw, dm = v["ball_diameter"], v["pitch_diameter"]
+    for g, sign in (("inner_groove_diameter", "−"), ("outer_groove_diameter", "+")):
+        prov[g] = f"derived: dm {sign} Dw {sign} Pd/2, Pd from the free contact angle"
     if "contact_angle" in v:
-        clearance = 2.0 * (f_i + f_o - 1.0) * dw * (1.0 - math.cos(v["contact_angle"]))
-        src = "derived: from pitch and ball diameters and the free contact angle"
-    else:
-        clearance = v["radial_clearance"]
-        src = "derived: from pitch and ball diameters and the radial clearance"
-    for g in ("inner_groove_diameter", "outer_groove_diameter"):
-        prov[g] = src
-    return dm - dw - 0.5 * clearance, dm + dw + 0.5 * clearance, dw
+        prov["nominal_contact_angle"] = prov["contact_angle"]
+        return dm, dw, v["contact_angle"]
+    alpha = float(free_contact_angle(v["radial_clearance"], (f_i + f_o - 1.0) * dw))
+    prov["nominal_contact_angle"] = (
+        "derived: free contact angle of the radial clearance (" + prov["radial_clearance"] + ")"
+    )
+    return dm, dw, alpha
 
 
 def _material_source(where: str, entry: dict, prov: dict) -> None:
@@ -411,7 +502,7 @@ def bearing_from_entry(key: str, entry: dict) -> BallBearing:
     try:
         if "design_rule" in entry:
             _apply_ball_set_rule(entry["design_rule"], v, prov)
-        d_i, d_o, dw = _groove_diameters(entry, v, prov)
+        dm, dw, alpha = _ball_set(entry, v, prov)
         _material_source(where, entry, prov)
         result = BallBearing(
             key=key,
@@ -421,8 +512,8 @@ def bearing_from_entry(key: str, entry: dict) -> BallBearing:
             width=v["width"],
             n_balls=round(v["n_balls"]),
             ball_diameter=dw,
-            inner_groove_diameter=d_i,
-            outer_groove_diameter=d_o,
+            pitch_diameter=dm,
+            nominal_contact_angle=alpha,
             inner_curvature=v["inner_curvature"],
             outer_curvature=v["outer_curvature"],
             ring_material=material(entry["ring_material"]),
@@ -431,10 +522,6 @@ def bearing_from_entry(key: str, entry: dict) -> BallBearing:
         )
     except (KeyError, ValueError) as err:
         raise _named(where, err) from None
-    if "contact_angle" in v and "inner_groove_diameter" not in v:
-        check = free_contact_angle(result.clearance, result.curvature_distance)
-        if abs(check - v["contact_angle"]) > 1e-9:  # pragma: no cover - guards the derivation
-            raise ValueError(f"{where}: derived geometry gives α0 = {check} rad")
     return result
 
 
@@ -505,6 +592,7 @@ def mounting(key: str):
         model=entry.get("loop_model", "members"),
         arms=tuple(arms),
         spring_stiffness=spring,
+        spring_compression=q("spring_compression") if spring is not None else None,
     )
     return Mounting(
         key=key,
@@ -515,6 +603,7 @@ def mounting(key: str):
         loop=loop,
         assembly_preload=preload,
         provenance=tuple(sorted(prov.items())),
+        arrangement=entry.get("arrangement", "face_to_face"),
     )
 
 
@@ -633,4 +722,4 @@ TABLES = (
 def preload() -> None:
     """Read every data table now (they are cached): see :func:`servofmu.physics.load_all`."""
     for name in TABLES:
-        _table(name)
+        _package_table(name)

@@ -17,6 +17,7 @@ cosine) are singular.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -191,10 +192,148 @@ def clearance_from_group(bore, group: str, table) -> tuple[float, float]:
     raise ValueError(f"bore = {bore!r} m is outside the clearance table's bores {spans} mm")
 
 
+#: Largest nominal contact angle of the model [rad]: 45°, beyond which a ball bearing is a
+#: thrust bearing in all but name (ISO 281:2007 splits radial and thrust ball bearings there).
+MAX_CONTACT_ANGLE = np.pi / 4.0
+
+
+def clearance_from_contact_angle(ball_diameter, inner_curvature, outer_curvature, contact_angle):
+    """Unmounted diametral clearance Pd = 2·A·(1 − cos α0) [m] that gives the free contact
+    angle α0, A = (f_i + f_o − 1)·Dw (the inverse of :func:`free_contact_angle`; Harris &
+    Kotzalas 2007, ch. 2).
+
+    Parameters
+    ----------
+    ball_diameter : Dw [m]
+    inner_curvature, outer_curvature : f_i, f_o [-]
+    contact_angle : free contact angle α0 [rad] (0: no clearance)
+
+    Returns
+    -------
+    float
+        Pd [m].
+
+    Examples
+    --------
+    >>> pd = clearance_from_contact_angle(2.381e-3, 0.56, 0.54, math.radians(15))
+    >>> round(float(pd) * 1e6, 2)  # µm: the 71803 of Yu 2017
+    16.23
+    """
+    a = (inner_curvature + outer_curvature - 1.0) * ball_diameter
+    return 2.0 * a * (1.0 - np.cos(contact_angle))
+
+
+def bearing_geometry_problems(
+    bore,
+    outer_diameter,
+    width,
+    ball_diameter,
+    n_balls,
+    pitch_diameter,
+    nominal_contact_angle,
+    inner_curvature,
+    outer_curvature,
+) -> list[str]:
+    """Every reason why the numbers cannot be an angular-contact or deep-groove ball bearing
+    (empty: they can), each naming the values (parameter names as the FMU's; SI units).
+
+    The conditions: positive finite sizes, d < D; the ball fits in the ring section,
+    Dw < (D − d)/2; the balls fit on the pitch circle, Z·Dw < π·dm; grooves wider than the
+    ball, f > 0.5 (and ≤ 1); 0 ≤ α0 ≤ 45°; d < dm < D; and both rings keep some material
+    between groove and bore or outside diameter (d < d_i, d_o < D). Harris & Kotzalas 2007,
+    ch. 2 (geometry of ball bearings).
+
+    Parameters
+    ----------
+    bore, outer_diameter, width : d, D, B [m]
+    ball_diameter : Dw [m]
+    n_balls : Z [-] (an integer ≥ 3)
+    pitch_diameter : dm [m]
+    nominal_contact_angle : free contact angle α0 [rad]
+    inner_curvature, outer_curvature : f_i, f_o [-]
+
+    Returns
+    -------
+    list[str]
+        One sentence per problem.
+
+    Examples
+    --------
+    >>> bearing_geometry_problems(0.017, 0.026, 0.005, 0.005, 15, 0.0215, 0.26, 0.56, 0.54)[0]
+    'ball_diameter = 0.005 m must be below (outer_diameter − bore)/2 = 0.0045 m'
+    """
+    values = {
+        "bore": bore,
+        "outer_diameter": outer_diameter,
+        "width": width,
+        "ball_diameter": ball_diameter,
+        "pitch_diameter": pitch_diameter,
+    }
+    problems = [
+        f"{k} = {v!r} m must be positive and finite"
+        for k, v in values.items()
+        if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0)
+    ]
+    if not (isinstance(n_balls, (int, np.integer)) and not isinstance(n_balls, bool)):
+        problems.append(f"n_balls = {n_balls!r} must be an integer")
+    elif n_balls < 3:
+        problems.append(f"n_balls = {n_balls!r} must be at least 3")
+    for name, f in (("inner_curvature", inner_curvature), ("outer_curvature", outer_curvature)):
+        if not (isinstance(f, (int, float)) and 0.5 < f <= 1.0):
+            problems.append(
+                f"{name} = {f!r} must exceed 0.5 (a groove wider than the ball) and be ≤ 1"
+            )
+    alpha = nominal_contact_angle
+    if not (isinstance(alpha, (int, float)) and 0.0 <= alpha <= MAX_CONTACT_ANGLE):
+        problems.append(
+            f"nominal_contact_angle = {float(alpha)!r} rad ({math.degrees(alpha):g}°) is outside "
+            "0…45° (0…0.7854 rad)"
+            if isinstance(alpha, (int, float)) and math.isfinite(alpha)
+            else f"nominal_contact_angle = {alpha!r} rad is outside 0…45° (0…0.7854 rad)"
+        )
+    if problems:  # the relations below need valid numbers
+        return problems
+    d, big_d, dw, dm = (float(x) for x in (bore, outer_diameter, ball_diameter, pitch_diameter))
+    if not d < big_d:
+        return [f"outer_diameter = {big_d:.6g} m must exceed bore = {d:.6g} m"]
+    if not dw < 0.5 * (big_d - d):
+        problems.append(
+            f"ball_diameter = {dw:.6g} m must be below (outer_diameter − bore)/2 = "
+            f"{0.5 * (big_d - d):.6g} m"
+        )
+    if not n_balls * dw < np.pi * dm:
+        problems.append(
+            f"n_balls × ball_diameter = {n_balls} × {dw:.6g} m = {n_balls * dw:.6g} m must be "
+            f"below π × pitch_diameter = {np.pi * dm:.6g} m (the balls must fit on the pitch "
+            "circle)"
+        )
+    if not d < dm < big_d:
+        problems.append(
+            f"pitch_diameter = {dm:.6g} m must lie between bore = {d:.6g} m and outer_diameter = "
+            f"{big_d:.6g} m"
+        )
+    if problems:
+        return problems
+    half = dw + 0.5 * clearance_from_contact_angle(dw, inner_curvature, outer_curvature, alpha)
+    if not dm - half > d:
+        problems.append(
+            f"the inner groove (diameter pitch_diameter − ball_diameter − clearance/2 = "
+            f"{dm - half:.6g} m) must stay above bore = {d:.6g} m"
+        )
+    if not dm + half < big_d:
+        problems.append(
+            f"the outer groove (diameter pitch_diameter + ball_diameter + clearance/2 = "
+            f"{dm + half:.6g} m) must stay below outer_diameter = {big_d:.6g} m"
+        )
+    return problems
+
+
 @dataclass(frozen=True)
 class BallBearing:
-    """Catalogue geometry of one angular-contact ball bearing (unmounted, at its reference
-    temperature), SI units. Build from the catalogue with :func:`catalog.bearing`.
+    """Geometry of one angular-contact or deep-groove ball bearing (unmounted, at its
+    reference temperature), SI units: the nine numbers of a datasheet and a design, from
+    which the groove diameters follow. Build it from the catalogue with
+    :func:`catalog.bearing`; the FMU parameters of the same names give the same record.
 
     Attributes
     ----------
@@ -202,10 +341,15 @@ class BallBearing:
     bore, outer_diameter, width : boundary dimensions d, D, B [m]
     n_balls : number of balls Z
     ball_diameter : Dw [m]
-    inner_groove_diameter, outer_groove_diameter : groove-bottom diameters d_i, d_o [m]
+    pitch_diameter : dm [m], the mean of the groove-bottom diameters
+    nominal_contact_angle : free (unloaded, unmounted) contact angle α0 [rad], 0…45°; it sets
+        the diametral clearance Pd = 2·A·(1 − cos α0)
     inner_curvature, outer_curvature : groove curvature factors f = r/Dw [-], > 0.5
     ring_material, ball_material : :class:`Material` of rings and balls
     provenance : ((field, source), ...)
+
+    A geometry that cannot be a bearing raises ValueError naming every problem
+    (:func:`bearing_geometry_problems`).
     """
 
     key: str
@@ -215,8 +359,8 @@ class BallBearing:
     width: float
     n_balls: int
     ball_diameter: float
-    inner_groove_diameter: float
-    outer_groove_diameter: float
+    pitch_diameter: float
+    nominal_contact_angle: float
     inner_curvature: float
     outer_curvature: float
     ring_material: Material
@@ -224,50 +368,41 @@ class BallBearing:
     provenance: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self):
-        check_positive("bore", self.bore, "m")
-        check_positive("outer_diameter", self.outer_diameter, "m")
-        check_positive("width", self.width, "m")
-        check_positive("ball_diameter", self.ball_diameter, "m")
-        check_range("inner_curvature", self.inner_curvature, 0.5, 1.0, lo_open=True)
-        check_range("outer_curvature", self.outer_curvature, 0.5, 1.0, lo_open=True)
-        if not (isinstance(self.n_balls, int) and self.n_balls >= 3):
-            raise ValueError(f"n_balls = {self.n_balls!r} must be an integer >= 3")
-        if not (self.bore < self.inner_groove_diameter < self.outer_groove_diameter):
-            raise ValueError(
-                f"groove diameters must satisfy bore < inner < outer: bore = {self.bore!r}, "
-                f"inner_groove_diameter = {self.inner_groove_diameter!r}, "
-                f"outer_groove_diameter = {self.outer_groove_diameter!r} m"
-            )
-        if self.outer_groove_diameter >= self.outer_diameter:
-            raise ValueError(
-                f"outer_groove_diameter = {self.outer_groove_diameter!r} m must be below "
-                f"outer_diameter = {self.outer_diameter!r} m"
-            )
-        dm = 0.5 * (self.inner_groove_diameter + self.outer_groove_diameter)
-        if self.n_balls * self.ball_diameter >= np.pi * dm:
-            raise ValueError(
-                f"n_balls = {self.n_balls} balls of {self.ball_diameter!r} m do not fit on the "
-                f"pitch circle of {dm!r} m"
-            )
-        check_range(
-            "clearance",
-            self.clearance,
-            -0.5 * self.curvature_distance,
-            2.0 * self.curvature_distance,
-            unit="m",
+        problems = bearing_geometry_problems(
+            self.bore,
+            self.outer_diameter,
+            self.width,
+            self.ball_diameter,
+            self.n_balls,
+            self.pitch_diameter,
+            self.nominal_contact_angle,
+            self.inner_curvature,
+            self.outer_curvature,
         )
-
-    @property
-    def pitch_diameter(self) -> float:
-        """dm = (d_i + d_o)/2 [m]."""
-        return 0.5 * (self.inner_groove_diameter + self.outer_groove_diameter)
+        if problems:
+            raise ValueError(f"bearing {self.key!r} cannot be built: " + "; ".join(problems))
 
     @property
     def clearance(self) -> float:
-        """Unmounted diametral clearance Pd [m]."""
-        return diametral_clearance(
-            self.inner_groove_diameter, self.outer_groove_diameter, self.ball_diameter
+        """Unmounted diametral clearance Pd = 2·A·(1 − cos α0) [m]."""
+        return float(
+            clearance_from_contact_angle(
+                self.ball_diameter,
+                self.inner_curvature,
+                self.outer_curvature,
+                self.nominal_contact_angle,
+            )
         )
+
+    @property
+    def inner_groove_diameter(self) -> float:
+        """d_i = dm − Dw − Pd/2 [m] (groove bottom)."""
+        return self.pitch_diameter - self.ball_diameter - 0.5 * self.clearance
+
+    @property
+    def outer_groove_diameter(self) -> float:
+        """d_o = dm + Dw + Pd/2 [m] (groove bottom)."""
+        return self.pitch_diameter + self.ball_diameter + 0.5 * self.clearance
 
     @property
     def curvature_distance(self) -> float:
@@ -276,8 +411,8 @@ class BallBearing:
 
     @property
     def contact_angle(self) -> float:
-        """Unmounted free contact angle α0 [rad]."""
-        return free_contact_angle(self.clearance, self.curvature_distance)
+        """Unmounted free contact angle α0 [rad] (= :attr:`nominal_contact_angle`)."""
+        return self.nominal_contact_angle
 
     def source(self, field: str) -> str:
         return dict(self.provenance).get(field, "")

@@ -7,7 +7,13 @@ from dataclasses import dataclass
 
 from ._checks import check_positive, check_temperature
 from .fits import RadialFit
-from .preload import PreloadLoop
+from .preload import ARRANGEMENTS, PreloadLoop, arrangement_problems
+
+#: How the preload is set at assembly: a rigid shim (axial interference), a force at the
+#: assembly temperature (the shim that gives it, then rigid: a nut tightened to a force), or a
+#: spring of stiffness k compressed by c (force k·c at assembly, the spring in series with the
+#: structure).
+PRELOAD_METHODS = ("shim", "force", "spring")
 
 
 @dataclass(frozen=True)
@@ -23,6 +29,8 @@ class Mounting:
     loop : :class:`preload.PreloadLoop`
     assembly_preload : preload at T0 [N]; when given, the shim is derived from it
     provenance : ((field, source), ...)
+    arrangement : :data:`~.preload.ARRANGEMENTS`: "face_to_face" or "back_to_back"; the
+        loop members' roles must agree with it
     """
 
     key: str
@@ -33,11 +41,27 @@ class Mounting:
     loop: PreloadLoop
     assembly_preload: float | None = None
     provenance: tuple[tuple[str, str], ...] = ()
+    arrangement: str = "face_to_face"
 
     def __post_init__(self):
         check_temperature("assembly_temperature", self.assembly_temperature)
         if self.assembly_preload is not None:
             check_positive("assembly_preload", self.assembly_preload, "N")
+        if self.arrangement not in ARRANGEMENTS:
+            raise ValueError(
+                f"arrangement = {self.arrangement!r} is not one of {sorted(ARRANGEMENTS)}"
+            )
+        problems = arrangement_problems(self.loop, self.arrangement)
+        if problems:
+            raise ValueError(f"mounting {self.key!r}: " + "; ".join(problems))
+
+    @property
+    def preload_method(self) -> str:
+        """How the preload is set (:data:`PRELOAD_METHODS`): "spring" with a preload spring,
+        "force" with an assembly preload, else "shim"."""
+        if self.loop.spring_stiffness is not None:
+            return "spring"
+        return "shim" if self.assembly_preload is None else "force"
 
     def source(self, field: str) -> str:
         return dict(self.provenance).get(field, "")

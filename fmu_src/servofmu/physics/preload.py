@@ -157,6 +157,8 @@ class PreloadLoop:
     model : :data:`LOOP_MODELS`: "members" (Σ L/(E·A)) or "yoke" (the arms bend)
     arms : the :class:`YokeArm` s of a yoke
     spring_stiffness : a preload spring in series with the structure [N/m]; None: no spring
+    spring_compression : the spring's compression at assembly [m] (its force k·c is the
+        assembly preload); None: no spring
     provenance : ((field, source), ...)
     """
 
@@ -166,6 +168,7 @@ class PreloadLoop:
     model: str = "members"
     arms: tuple[YokeArm, ...] = ()
     spring_stiffness: float | None = None
+    spring_compression: float | None = None
     provenance: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self):
@@ -177,6 +180,13 @@ class PreloadLoop:
             raise ValueError("loop model = 'yoke' needs at least one arm")
         if self.spring_stiffness is not None:
             check_positive("spring_stiffness", self.spring_stiffness, "N/m")
+        if (self.spring_compression is None) != (self.spring_stiffness is None):
+            raise ValueError(
+                f"a preload spring needs both spring_stiffness = {self.spring_stiffness!r} N/m "
+                f"and spring_compression = {self.spring_compression!r} m"
+            )
+        if self.spring_compression is not None:
+            check_positive("spring_compression", self.spring_compression, "m")
 
     @property
     def frame_stiffness(self) -> float:
@@ -202,6 +212,72 @@ class PreloadLoop:
         if self.spring_stiffness is None:
             return k
         return 1.0 / (1.0 / k + 1.0 / self.spring_stiffness)
+
+
+#: How the two bearings of the pair face each other, and with it which parts of the loop
+#: relieve the preload when they grow (role "opening") and which increase it ("closing").
+#: Members are of four kinds: the housing (frame) between the pair's outer-ring abutments,
+#: the shaft between its inner-ring abutments, a spacer between the bearings, and the rings'
+#: own widths (:func:`member_kind`).
+#:
+#: - face_to_face (DF, "X": the contact lines converge outside the pair): the housing holds
+#:   the outer rings from outside and is stretched by the preload; the shaft, the spacer and
+#:   the rings in between are compressed. A growing housing relieves the preload, a growing
+#:   shaft increases it (Yu 2017 eq 14: frame (L + 2·b0) against shaft L and the two widths).
+#: - back_to_back (DB, "O"): the shaft clamps the inner rings from outside (shoulder and nut)
+#:   and is stretched; the outer stack (rings, spacer, housing between the outer rings) is
+#:   compressed. A growing shaft relieves the preload, a growing housing increases it
+#:   (Ning's space shaft).
+#:
+#: So the shaft's axial growth relative to the housing raises the preload of a face-to-face
+#: pair and lowers that of a back-to-back pair (SKF, "Angular contact ball bearings: bearing
+#: arrangements"; Harris & Kotzalas 2007, *Advanced Concepts*, ch. 1 on preloading): with the
+#: same parts and temperatures the thermal terms of the shaft and the housing change sign
+#: between the two (tests/test_preload.py). The radial effects (fits, ring growth) are the
+#: same in both.
+ARRANGEMENTS = {
+    "face_to_face": {"housing": "opening", "shaft": "closing", "spacer": "closing",
+                     "bearings": "closing"},
+    "back_to_back": {"housing": "closing", "shaft": "opening", "spacer": "closing",
+                     "bearings": "closing"},
+}  # fmt: skip
+#: Member kind by member name.
+MEMBER_KINDS = {"frame": "housing", "housing": "housing", "shaft": "shaft", "spacer": "spacer",
+                "bearings": "bearings"}  # fmt: skip
+
+
+def member_kind(name: str) -> str:
+    """The kind of a loop member ("housing", "shaft", "spacer", "bearings") from its name
+    (frame and housing are the housing); ValueError for another name.
+
+    >>> member_kind("frame")
+    'housing'
+    """
+    if name not in MEMBER_KINDS:
+        raise ValueError(f"loop member name = {name!r} is not one of {sorted(MEMBER_KINDS)}")
+    return MEMBER_KINDS[name]
+
+
+def member_role(name: str, arrangement: str) -> str:
+    """The role ("opening" or "closing") of loop member ``name`` in a pair of
+    ``arrangement`` (:data:`ARRANGEMENTS`).
+
+    >>> member_role("shaft", "face_to_face"), member_role("shaft", "back_to_back")
+    ('closing', 'opening')
+    """
+    check_choice("arrangement", arrangement, ARRANGEMENTS)
+    return ARRANGEMENTS[arrangement][member_kind(name)]
+
+
+def arrangement_problems(loop: PreloadLoop, arrangement: str) -> list[str]:
+    """Every member of ``loop`` whose role contradicts ``arrangement`` (empty: none)."""
+    check_choice("arrangement", arrangement, ARRANGEMENTS)
+    return [
+        f"loop member {m.name!r} has role {m.role!r}, but in a {arrangement} pair it is "
+        f"{member_role(m.name, arrangement)!r}"
+        for m in loop.members
+        if m.name in MEMBER_KINDS and m.role != member_role(m.name, arrangement)
+    ]
 
 
 #: Smallest loop stiffness [N/m] accepted: below it the loop carries no preload worth the

@@ -100,3 +100,41 @@ def walther_from_two_points(
         )
     prov = (("a", "derived: ASTM D341 two-point fit"), ("b", "derived: ASTM D341 two-point fit"))
     return WaltherViscosity(key=key, name=name, a=float(a), b=float(b), c=c, provenance=prov)
+
+
+#: The reference temperatures of ν40 and ν100 (ISO 3448, ASTM D341) [K].
+T40, T100 = 313.15, 373.15
+
+
+def walther_from_reference(
+    viscosity_40: float, viscosity_100: float, c: float = 0.7, key: str = "", name: str = ""
+) -> WaltherViscosity:
+    """Walther/ASTM D341 model through the kinematic viscosities at 40 and 100 °C, the two
+    numbers of every lubricant datasheet (:func:`walther_from_two_points` at 313.15 and
+    373.15 K). Every fluid lubricant of servofmu is this model: catalogue entries that give
+    a, b (and c) are turned into ν40 and ν100 first, so that the FMU parameters
+    ``lubricant_viscosity_40``/``_100`` reproduce them exactly.
+
+    Parameters
+    ----------
+    viscosity_40, viscosity_100 : ν at 40 and 100 °C [m²/s], ν100 < ν40
+    c : Walther's additive constant [cSt] (ASTM D341: 0.7)
+
+    Returns
+    -------
+    WaltherViscosity
+
+    Examples
+    --------
+    >>> vg32 = walther_from_reference(32e-6, 5.4e-6)
+    >>> round(float(vg32.kinematic_viscosity(T40)) * 1e6, 9)  # cSt at 40 °C
+    32.0
+    """
+    nu40 = check_positive("viscosity_40", viscosity_40, "m²/s")
+    nu100 = check_positive("viscosity_100", viscosity_100, "m²/s")
+    if not nu100 < nu40:
+        raise ValueError(
+            f"viscosity_100 = {nu100!r} m²/s must be below viscosity_40 = {nu40!r} m²/s "
+            "(a lubricant thins on heating)"
+        )
+    return walther_from_two_points(T40, nu40, T100, nu100, c=c, key=key, name=name)

@@ -1,0 +1,400 @@
+"""Catalogue entries as presets of the parameter set: :func:`default_parameters` turns a
+catalogue mounting (with its bearing, lubricant and coefficients; ``data/*.toml`` or a user
+catalogue) into the numbers of :mod:`.parameter_table`, with each value's provenance
+(:func:`default_sources`); :func:`resolve` applies presets, then numbers, to a parameter set.
+
+A mounting whose loop the parameter set cannot express (two members of one kind, a member of
+another material than its part's, an arm of another material than the housing) raises a
+ValueError naming the mounting, the member and the field.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from . import catalog
+from .friction import FrictionCoefficients
+from .geometry import BallBearing
+from .materials import Material
+from .mounting import Mounting
+from .pair import PRESSURE_LIMIT
+from .parameter_table import LUBRICANT_FIELDS, PARAMETER_NAMES
+from .preload import LoopMember, member_kind
+from .units import CST
+
+#: Catalogue mounting whose values are the defaults (Yu 2017's seeker gimbal).
+DEFAULT_MOUNTING = "yu2017_gimbal"
+#: Catalogue lubricant for each lubrication when none is named.
+DEFAULT_LUBRICANT = {"grease": "krytox_143aa", "solid": "mos2_film"}
+#: The preset kinds a change of :func:`resolve` may name.
+PRESETS = ("mounting", "bearing", "lubricant")
+
+
+def _source(record, field: str, fallback: str) -> str:
+    return record.source(field) or fallback
+
+
+def _material_values(prefix: str, mat: Material, poisson: bool = True) -> tuple[dict, dict]:
+    fields = ("youngs_modulus", "poisson_ratio", "expansion") if poisson else (
+        "youngs_modulus", "expansion")  # fmt: skip
+    values = {f"{prefix}_{f}": float(getattr(mat, f)) for f in fields}
+    sources = {
+        f"{prefix}_{f}": f"{_source(mat, f, 'catalogue: data/materials.toml')} ({mat.key})"
+        for f in fields
+    }
+    return values, sources
+
+
+def bearing_values(b: BallBearing) -> tuple[dict, dict]:
+    """(values, sources) of the bearing numbers of :data:`BEARING_FIELDS` for a
+    :class:`BallBearing` (a catalogue bearing: a preset).
+
+    >>> values, sources = bearing_values(catalog.bearing("71803"))
+    >>> values["n_balls"], sources["bore"]
+    (15, 'paper: Yu 2017 §2')
+    """
+    geometry = ("bore", "outer_diameter", "width", "ball_diameter", "pitch_diameter",
+                "nominal_contact_angle", "inner_curvature", "outer_curvature")  # fmt: skip
+    values = {f: float(getattr(b, f)) for f in geometry} | {"n_balls": int(b.n_balls)}
+    where = f"catalogue: bearing {b.key}"
+    sources = {f: _source(b, f, where) for f in values}
+    for prefix, mat in (("ring", b.ring_material), ("ball", b.ball_material)):
+        v, s = _material_values(prefix, mat)
+        values |= v
+        sources |= {k: (b.source(f"{prefix}_material") or src) for k, src in s.items()}
+    return values, sources
+
+
+def lubricant_values(key: str) -> tuple[dict, dict]:
+    """(values, sources) of :data:`LUBRICANT_FIELDS` for catalogue lubricant ``key``: a fluid
+    gives its ν40, ν100 and Walther c with lubrication "grease"; a dry film gives lubrication
+    "solid" and leaves the viscosity numbers out (they are not used).
+
+    >>> values, _ = lubricant_values("iso_vg32")
+    >>> round(values["lubricant_viscosity_40"] * 1e6, 6)  # cSt
+    32.0
+    """
+    rec = catalog.lubricant_record(key)
+    if rec.viscosity is None:
+        return {"lubrication": "solid"}, {"lubrication": f"catalogue: lubricant {key} (dry film)"}
+    values = {
+        "lubrication": "grease",
+        "lubricant_viscosity_40": float(rec.viscosity_40),
+        "lubricant_viscosity_100": float(rec.viscosity_100),
+        "lubricant_walther_c": walther_c_si(rec.viscosity.c),
+    }
+    sources = {
+        "lubrication": f"catalogue: lubricant {key} ({rec.lubricant_type})",
+        "lubricant_viscosity_40": f"{rec.source('viscosity_40')} ({key})",
+        "lubricant_viscosity_100": f"{rec.source('viscosity_100')} ({key})",
+        "lubricant_walther_c": f"{rec.viscosity.source('c')} ({key})",
+    }
+    return values, sources
+
+
+def walther_c_si(c_cst: float) -> float:
+    """Walther's c [cSt] in m²/s, chosen among the neighbours of c·1e-6 so that dividing it by
+    1 cSt gives ``c_cst`` back exactly (the FMU parameter reproduces the catalogue's model bit
+    for bit).
+
+    >>> walther_c_si(0.932) / CST == 0.932
+    True
+    """
+    x = c_cst * CST
+    for candidate in (x, math.nextafter(x, math.inf), math.nextafter(x, -math.inf)):
+        if candidate / CST == c_cst:
+            return candidate
+    return x
+
+
+def _same(a: Material, b: Material) -> bool:
+    return all(
+        getattr(a, f) == getattr(b, f) for f in ("youngs_modulus", "poisson_ratio", "expansion")
+    )
+
+
+def _members(m: Mounting, bearing: BallBearing) -> tuple[dict, str]:
+    """{kind: member} of a mounting's loop and its reading ("stated" or "printed"); a loop
+    the parameter set cannot express raises ValueError naming the member and the field."""
+    where = f"mounting {m.key!r}"
+    kinds: dict[str, LoopMember] = {}
+    for mem in m.loop.members:
+        kind = member_kind(mem.name)
+        if kind in kinds:
+            raise ValueError(f"{where}: a second loop member of kind {kind!r} ({mem.name!r})")
+        part = {"housing": "housing", "shaft": "shaft", "spacer": "shaft", "bearings": "rings"}
+        if mem.part != part[kind]:
+            raise ValueError(
+                f"{where}: loop member {mem.name!r} part = {mem.part!r}: the parameter set "
+                f"takes a {kind} member at the {part[kind]} temperature"
+            )
+        kinds[kind] = mem
+    fit = m.fit
+    housing, shaft = kinds.get("housing"), kinds.get("shaft")
+    printed = (
+        "bearings" not in kinds
+        and housing is not None
+        and shaft is not None
+        and not _same(fit.housing_material, fit.shaft_material)
+        and _same(housing.material, fit.shaft_material)
+        and _same(shaft.material, fit.housing_material)
+    )
+    expect = {"housing": fit.housing_material, "shaft": fit.shaft_material}
+    if printed:
+        expect = {"housing": fit.shaft_material, "shaft": fit.housing_material}
+    expect["bearings"] = bearing.ring_material
+    for kind, mat in expect.items():
+        mem = kinds.get(kind)
+        if mem is not None and not _same(mem.material, mat):
+            raise ValueError(
+                f"{where}: loop member {mem.name!r} material = {mem.material.key!r} differs "
+                f"from {mat.key!r}: the parameter set takes it from the "
+                f"{'rings' if kind == 'bearings' else kind} material"
+            )
+    if "bearings" in kinds:
+        ring_stack = kinds["bearings"]
+        if abs(ring_stack.length - 2.0 * bearing.width) > 1e-12 or ring_stack.area:
+            raise ValueError(
+                f"{where}: loop member 'bearings' length = {ring_stack.length!r} m must be "
+                f"2·width = {2.0 * bearing.width!r} m of bearing {bearing.key!r}, without area"
+            )
+    elif not printed:
+        raise ValueError(f"{where}: the loop lacks the member 'bearings' (the rings' widths)")
+    return kinds, "printed" if printed else "stated"
+
+
+def _loop_values(m: Mounting, bearing: BallBearing, defaults: dict) -> tuple[dict, dict]:
+    """The loop numbers of mounting ``m``; arm and spacer-material numbers it does not use come
+    from ``defaults`` (the default mounting's) with a source that says so."""
+    kinds, reading = _members(m, bearing)
+    where = f"catalogue: {catalog.origin('mountings', m.key)} [{m.key}]"
+    values = {"arrangement": m.arrangement, "loop_reading": reading, "loop_model": m.loop.model}
+    sources = {
+        "arrangement": f"{where}: arrangement (the roles of its loop members)",
+        "loop_reading": f"{where}: the materials of its loop members",
+        "loop_model": f"{where}: loop_model",
+    }
+    for kind in ("housing", "shaft", "spacer"):
+        mem = kinds.get(kind)
+        values[f"{kind}_length"] = mem.length if mem else 0.0
+        values[f"{kind}_area"] = (mem.area or 0.0) if mem else 0.0
+        for f in ("length", "area"):
+            src = m.source(f"loop.{mem.name}.{f}") if mem else ""
+            sources[f"{kind}_{f}"] = src or f"{where}: no {kind} {f} (0: none)"
+    if "spacer" in kinds:
+        v, s = _material_values("spacer", kinds["spacer"].material, poisson=False)
+    else:
+        v, s = _material_values("spacer", bearing.ring_material, poisson=False)
+        s = {k: f"not used (no spacer): the ring material's value, {src}" for k, src in s.items()}
+    values |= v
+    sources |= s
+    arms = m.loop.arms
+    if len(arms) > 1:
+        raise ValueError(f"mounting {m.key!r}: the parameter set takes one kind of yoke arm")
+    if arms and not _same(arms[0].material, m.fit.housing_material):
+        raise ValueError(
+            f"mounting {m.key!r}: arm material = {arms[0].material.key!r} differs from the "
+            f"housing material {m.fit.housing_material.key!r}"
+        )
+    for f in ("count", "length", "width", "thickness"):
+        name = f"arm_{f}"
+        if arms:
+            values[name] = getattr(arms[0], f)
+            sources[name] = m.source(f"arms.{arms[0].name}.{f}") or f"{where}: arms"
+        else:
+            values[name] = defaults[name]
+            sources[name] = f"not used (no yoke): the default mounting's value ({DEFAULT_MOUNTING})"
+    values["loop_stiffness"] = m.loop.stiffness or 0.0
+    sources["loop_stiffness"] = m.source("loop_stiffness") or (
+        "derived: 0 = from the loop members (Σ L/(E·A)) or the yoke arms"
+    )
+    return values, sources
+
+
+def _preload_values(m: Mounting) -> tuple[dict, dict]:
+    where = f"catalogue: {catalog.origin('mountings', m.key)} [{m.key}]"
+    method, loop = m.preload_method, m.loop
+    spring = method == "spring"
+    values = {
+        "preload_method": method,
+        "shim": loop.shim,
+        "assembly_preload": m.assembly_preload if method == "force" else 0.0,
+        "spring_stiffness": loop.spring_stiffness if spring else 0.0,
+        "spring_compression": loop.spring_compression if spring else 0.0,
+    }
+    unused = f"not used (preload_method = {method})"
+    sources = {
+        "preload_method": f"{where}: preload by {method}",
+        "shim": m.source("shim") or f"{where}: no shim (0)",
+        "assembly_preload": m.source("assembly_preload") if method == "force" else unused,
+        "spring_stiffness": m.source("spring_stiffness") if spring else unused,
+        "spring_compression": m.source("spring_compression") if spring else unused,
+    }
+    if method != "shim" and not m.source("shim"):
+        sources["shim"] = f"{unused}: 0"
+    return values, sources
+
+
+def _fit_values(m: Mounting) -> tuple[dict, dict]:
+    fit = m.fit
+    fields = ("housing_outer_diameter", "outer_interference", "shaft_bore", "inner_interference")
+    values = {f: float(getattr(fit, f)) for f in fields}
+    values["assembly_temperature"] = float(m.assembly_temperature)
+    sources = {f: m.source(f) for f in values}
+    for prefix, mat in (("housing", fit.housing_material), ("shaft", fit.shaft_material)):
+        v, s = _material_values(prefix, mat)
+        values |= v
+        sources |= s
+    return values, sources
+
+
+@dataclass(frozen=True)
+class Preset:
+    """A full parameter set made from catalogue entries, with each value's provenance."""
+
+    values: Mapping[str, object]
+    sources: Mapping[str, str]
+
+
+def _preset(mounting: str, lubrication: str | None, bearing: str | None,
+            lubricant: str | None) -> Preset:  # fmt: skip
+    return _cached_preset(catalog.generation(), mounting, lubrication, bearing, lubricant)
+
+
+@functools.lru_cache(maxsize=128)
+def _cached_preset(_generation: int, mounting: str, lubrication: str | None,
+                   bearing: str | None, lubricant: str | None) -> Preset:  # fmt: skip
+    mnt = catalog.mounting(mounting)
+    bear = catalog.bearing(bearing or mnt.bearing_key)
+    defaults = {} if mounting == DEFAULT_MOUNTING else _preset(DEFAULT_MOUNTING, None, None, None)
+    values, sources = {}, {}
+    parts = [
+        bearing_values(bear),
+        _fit_values(mnt),
+        _loop_values(mnt, catalog.bearing(mnt.bearing_key), getattr(defaults, "values", {})),
+        _preload_values(mnt),
+    ]
+    if lubrication not in (None, *DEFAULT_LUBRICANT):
+        raise ValueError(f"lubrication = {lubrication!r} is not one of {sorted(DEFAULT_LUBRICANT)}")
+    own = catalog.mounting_entry(mounting).get("lubricant", DEFAULT_LUBRICANT["grease"])
+    lub_key = lubricant or (DEFAULT_LUBRICANT[lubrication] if lubrication else own)
+    lub_values, lub_sources = lubricant_values(lub_key)
+    if lubrication is not None and lub_values["lubrication"] != lubrication:
+        raise ValueError(
+            f"lubricant = {lub_key!r} is a {lub_values['lubrication']} lubricant, not for "
+            f"lubrication = {lubrication!r}"
+        )
+    if lub_values["lubrication"] == "solid":  # the viscosity numbers stay the grease default's
+        grease, grease_src = lubricant_values(DEFAULT_LUBRICANT["grease"])
+        for f in LUBRICANT_FIELDS[1:]:
+            lub_values[f] = grease[f]
+            lub_sources[f] = f"not used (solid lubrication): {grease_src[f]}"
+    parts.append((lub_values, lub_sources))
+    parts.append(_coefficient_values(mounting, lub_values["lubrication"] == "solid"))
+    for v, s in parts:
+        values |= v
+        sources |= s
+    return Preset(values, sources)
+
+
+def _coefficient_values(mounting: str, solid: bool) -> tuple[dict, dict]:
+    coef = catalog.mounting_coefficients(mounting) or FrictionCoefficients()
+    fields = ("hysteresis_loss", "sliding_friction", "static_friction_ratio", "palmgren_s0")
+    values = {f: float(getattr(coef, f)) for f in fields}
+    sources = {f: coef.source(f) or "assumed: library default" for f in fields}
+    if solid:
+        values["palmgren_s0"] = 0.0
+        sources["palmgren_s0"] = "assumed: dry film, no viscous torque"
+    values |= {"regularisation_speed": 1.0e-3, "stribeck_speed": 1.0e-2}
+    values["pressure_limit"] = PRESSURE_LIMIT
+    sources |= {
+        "regularisation_speed": "assumed",
+        "stribeck_speed": "assumed",
+        "pressure_limit": "handbook: ISO 76, 4200 MPa for ball bearings",
+    }
+    return values, sources
+
+
+def default_parameters(
+    mounting: str = DEFAULT_MOUNTING,
+    lubrication: str | None = None,
+    *,
+    bearing: str | None = None,
+    lubricant: str | None = None,
+) -> dict[str, object]:
+    """The parameter set of catalogue mounting ``mounting`` (``data/mountings.toml``, or a
+    user catalogue): its bearing (or catalogue bearing ``bearing``), seats, loop and preload, its
+    friction coefficients (``data/coefficients.toml``; the library defaults when it has none),
+    and the lubricant ``lubricant`` (default: the catalogue default of ``lubrication`` when
+    given, else the mounting's own ``lubricant``, else Krytox 143AA). SI values, choices as
+    keys.
+
+    Parameters
+    ----------
+    mounting, bearing, lubricant : catalogue keys (presets)
+    lubrication : "grease" or "solid" (default: the lubricant's kind)
+
+    Returns
+    -------
+    dict
+        ``{name: value}`` for every name of :data:`PARAMETER_NAMES` (m, K, N, N/m, Pa, 1/K,
+        m²/s; choices as keys).
+
+    Examples
+    --------
+    >>> p = default_parameters("yu2017_gimbal")
+    >>> p["shim"], p["n_balls"], p["arrangement"], p["preload_method"]
+    (3e-05, 15, 'face_to_face', 'shim')
+    """
+    return dict(_preset(mounting, lubrication, bearing, lubricant).values)
+
+
+def default_sources(
+    mounting: str = DEFAULT_MOUNTING,
+    lubrication: str | None = None,
+    *,
+    bearing: str | None = None,
+    lubricant: str | None = None,
+) -> dict[str, str]:
+    """Provenance of each value of :func:`default_parameters` (same arguments), read from the
+    catalogue records ("kind: reference (record)").
+
+    >>> default_sources("yu2017_gimbal")["shim"].startswith("paper: Yu 2017")
+    True
+    """
+    return dict(_preset(mounting, lubrication, bearing, lubricant).sources)
+
+
+def resolve(base: Mapping[str, object], changes: Mapping[str, object]) -> dict[str, object]:
+    """``base`` (a full parameter set) with ``changes``: the presets a change names first —
+    ``mounting`` (that mounting's whole set, with base's lubrication unless a lubricant is
+    named), then ``bearing`` (its :data:`BEARING_FIELDS`), then ``lubricant`` (its
+    :data:`LUBRICANT_FIELDS`) — and then every number and choice named, which win over the
+    presets. The library's way of saying "this catalogue entry, but with …" (sweeps,
+    calibration); an FMU has numbers only.
+
+    >>> base = default_parameters()
+    >>> p = resolve(base, {"bearing": "7002C", "width": 0.01})
+    >>> p["bore"], p["width"], p["shim"] == base["shim"]
+    (0.015, 0.01, True)
+    """
+    params = dict(base)
+    mounting, bearing, lubricant = (changes.get(k) for k in PRESETS)
+    if mounting is not None:
+        params = default_parameters(str(mounting), None if lubricant else base["lubrication"])
+    if bearing is not None:
+        values, _ = bearing_values(catalog.bearing(str(bearing)))
+        params |= values
+    if lubricant is not None:
+        values, _ = lubricant_values(str(lubricant))
+        params |= values
+        if values["lubrication"] == "solid" and "palmgren_s0" not in changes:
+            params["palmgren_s0"] = 0.0
+    unknown = sorted(set(changes) - set(PARAMETER_NAMES) - set(PRESETS))
+    if unknown:
+        raise ValueError(f"{unknown} are neither parameters nor presets {list(PRESETS)}")
+    params |= {k: v for k, v in changes.items() if k not in PRESETS}
+    return params
