@@ -309,16 +309,22 @@ def test_each_system_binds_its_preset_in_full():
     engine."""
     from servofmu.build.ssp import SSP_DIR
 
-    for system, mounting, lubricant in (
-        ("seeker_gimbal", "yu2017_gimbal", "krytox_143aa"),
-        ("seeker_gimbal_position", "yu2017_gimbal", "krytox_143aa"),
-        ("space_bearing", "ning_space_shaft", "mos2_film"),
+    for ssv, mounting, lubricant in (
+        ("seeker_gimbal/bearing.ssv", "yu2017_gimbal", "krytox_143aa"),
+        ("seeker_gimbal_position/bearing.ssv", "yu2017_gimbal", "krytox_143aa"),
+        ("space_bearing/bearing.ssv", "ning_space_shaft", "mos2_film"),
+        # the mounting variants the main job compares (system-level names)
+        ("seeker_gimbal/variants/rigid.ssv", "yu2017_gimbal_rigid", "krytox_143aa"),
+        ("seeker_gimbal/variants/printed.ssv", "yu2017_gimbal_printed", "krytox_143aa"),
+        ("seeker_gimbal/variants/spring.ssv", "yu2017_gimbal_spring", "krytox_143aa"),
     ):
-        root = parse((SSP_DIR / system / "bearing.ssv").read_bytes(), system)
+        system = ssv
+        root = parse((SSP_DIR / ssv).read_bytes(), ssv)
         bound = {}
         for prm in root.iter("{*}Parameter"):
             (value,) = list(prm)
-            bound[prm.get("name")] = (value.tag.split("}")[1], value.get("value"))
+            name = prm.get("name").removeprefix("bearing.")
+            bound[name] = (value.tag.split("}")[1], value.get("value"))
         preset = default_parameters(mounting, lubricant=lubricant)
         for spec in PARAMETERS:
             kind, text = bound[spec.name]

@@ -9,8 +9,49 @@ import numpy as np
 
 
 @dataclass
+class Table:
+    """A further table of a scenario: a title, one header (units in the names) and rows."""
+
+    title: str
+    columns: list[str]
+    rows: list[dict]
+
+
+def _cell(v) -> str:
+    return f"{v:.4g}" if isinstance(v, float) else str(v)
+
+
+def format_table(columns: list[str], rows: list[dict]) -> list[str]:
+    """Lines of a right-aligned text table (floats to 4 significant digits)."""
+    widths = [max(10, len(c), *(len(_cell(r[c])) for r in rows)) for c in columns]
+    lines = ["  ".join(c.rjust(w) for c, w in zip(columns, widths, strict=True))]
+    for row in rows:
+        lines.append(
+            "  ".join(_cell(row[c]).rjust(w) for c, w in zip(columns, widths, strict=True))
+        )
+    return lines
+
+
+def write_csv(path: Path, columns: list[str], rows: list[dict]) -> Path:
+    """A table as CSV: one header, floats to 9 significant digits."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with path.open("w") as fh:
+        fh.write(",".join(columns) + "\n")
+        for row in rows:
+            fh.write(
+                ",".join(
+                    f"{row[c]:.9g}" if isinstance(row[c], float) else str(row[c]) for c in columns
+                )
+                + "\n"
+            )
+    return path
+
+
+@dataclass
 class ScenarioResult:
-    """A scenario's table (rows of dicts, one header), summary figures and files."""
+    """A scenario's table (rows of dicts, one header), further tables, summary figures, notes
+    and files."""
 
     name: str
     title: str
@@ -19,38 +60,21 @@ class ScenarioResult:
     summary: dict = field(default_factory=dict)
     files: list[Path] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    tables: list[Table] = field(default_factory=list)
 
     def to_text(self) -> str:
-        widths = [max(len(c), 10) for c in self.columns]
-        lines = [self.title, ""]
-        lines.append("  ".join(c.rjust(w) for c, w in zip(self.columns, widths, strict=True)))
-        for row in self.rows:
-            cells = []
-            for c, w in zip(self.columns, widths, strict=True):
-                v = row[c]
-                cells.append((f"{v:.4g}" if isinstance(v, float) else str(v)).rjust(w))
-            lines.append("  ".join(cells))
+        lines = [self.title, "", *format_table(self.columns, self.rows)]
         if self.summary:
-            lines += [""] + [
-                f"{k}: {v:.4g}" if isinstance(v, float) else f"{k}: {v}"
-                for k, v in self.summary.items()
-            ]
+            lines += [""] + [f"{k}: {_cell(v)}" for k, v in self.summary.items()]
+        for table in self.tables:
+            lines += ["", table.title, "", *format_table(table.columns, table.rows)]
         lines += [""] + self.notes + [f"file: {f}" for f in self.files]
         return "\n".join(lines)
 
-    def write_table(self, path: Path) -> Path:
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        with path.open("w") as fh:
-            fh.write(",".join(self.columns) + "\n")
-            for row in self.rows:
-                fh.write(
-                    ",".join(
-                        f"{row[c]:.9g}" if isinstance(row[c], float) else str(row[c])
-                        for c in self.columns
-                    )
-                    + "\n"
-                )
+    def write_table(self, path: Path, table: Table | None = None) -> Path:
+        """Write the main table (or ``table``) as CSV and list the file."""
+        columns, rows = (self.columns, self.rows) if table is None else (table.columns, table.rows)
+        path = write_csv(path, columns, rows)
         self.files.append(path)
         return path
 
