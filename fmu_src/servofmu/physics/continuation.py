@@ -9,57 +9,82 @@ equations from the previous step's solution:
 - the thermal state (ring growth, Lamé fits, clearance, loop closure, viscosity) is closed
   form: the equations of :func:`fits.mounted_geometry`, :func:`preload.loop_interference` and
   :func:`viscosity.walther_kinematic_viscosity`, written out on floats (:func:`thermal_floats`);
-- under pure axial load every ball of a bearing is alike (Yu 2017 eq 4): the pair's offsets
-  (p, z) solve the two conditions of :func:`preload.pair_offsets` by Newton's method with the
-  analytic Jacobian, the contact angle's effect on the Hertz constants included, started from
-  the previous solution (one unknown when the load is zero, none for a rigid loop at zero load);
-- under a radial load every ball differs (Jones 1960): the pair's (p, z, δr_A, δr_B) solve the
-  conditions of :func:`preload.pair_equilibrium` by Newton's method over the balls of half the
-  ring (the load is symmetric about the radial load's direction), one ball at a time on
+- the pair's offsets and radial displacements x = (p, z, δr_A, δr_B) [m] solve the conditions
+  of :func:`preload.pair_equilibrium` (F_A − F_B = F_ext, Fr_A = Fr_B = F_r/2,
+  (F_A + F_B)/2 = k·(C − 2p)) by Newton's method with the analytic Jacobian, the contact
+  angle's effect on the Hertz constants included, started from a predictor (the previous
+  solution moved by the secant of the last step when the inputs keep their direction). The
+  radial rows are eliminated by hand (they involve one bearing each), which leaves a 2×2
+  system in the bearings' axial offsets (:func:`newton_step`);
+- under pure axial load every ball of a bearing is alike (Yu 2017 eq 4): a bearing is one ball
+  of weight Z (one unknown less when the load is zero, none for a rigid loop at zero load);
+  under a radial load every ball differs (Jones 1960): the balls of half the ring (the load is
+  symmetric about the radial load's direction) with weights 1 or 2, one ball at a time on
   floats (faster than numpy over a dozen balls);
 - the Hertz constants of each contact need the ellipticity k, the root of the Hertz relation
   F(k) = F(ρ) (:func:`hertz.ellipticity`). Each contact keeps an *anchor*: k0 with the exact
-  K(m0), E(m0), F(k0) and dF/dk at k0 (scipy.special). Within a step k, K and E are taken to
-  first order from the anchor (one Newton step of the inverse), whose error is below
-  C·(Δk/k)² with C ≈ 2 (measured on the catalogue bearings); the anchor is renewed at the
-  current k when |Δk| exceeds :data:`ANCHOR_DRIFT`·k, which keeps every Hertz constant within
-  about 1e-12 of the exact one.
+  K(m0), E(m0), F(k0) and its derivatives (scipy.special). k, K and E are taken to second order
+  from the anchor, whose error is below C·(Δk/k)³ with C ≈ 2 (measured on the catalogue
+  bearings); the anchor is renewed for the next step at the current k when |Δk| exceeds
+  :data:`ANCHOR_DRIFT`·k, and the step is solved again when it exceeds :data:`ANCHOR_REDO`·k,
+  which keeps every Hertz constant within about 2e-11 of the exact one;
+- the Hertz constants depend on the contact angle only through γ = Dw·cos α/dm, and weakly
+  (relative derivatives in cos α of 0.01–0.08, second derivatives below 0.02 on the catalogue
+  bearings). Each ball keeps a *base*: the Hertz constants and their derivatives in cos α at
+  one contact angle of the current thermal state (:func:`contact_terms`); within
+  :data:`LINEAR_SPAN` of it in cos α the constants are taken to first order (relative error
+  below 1e-13, tests/test_continuation.py), so that only the first Newton evaluation of a step
+  with a new temperature, or a ball whose angle moved further, evaluates the Hertz relation.
 
 Newton stops at the first point whose next correction is below 1e-12 of the curvature distance
 A (about 1e-16 m, the absolute tolerance of the exact path's root finders): with the analytic
-Jacobian and a secant predictor that is two evaluations per step on a temperature ramp. A step that
+Jacobian and the predictor that is two evaluations per step on a temperature ramp. A step that
 does not converge in :data:`MAX_ITERATIONS`, a singular Jacobian (no ball in contact while the
 external load is not zero), or a non-finite value returns None, and the caller falls back to
 the exact path. The outputs equal the exact path's to a relative 1e-9 (tests check this on
 random trajectories of temperature and load).
 
-The continuation state (:meth:`PairSolver.state`) is a JSON-serialisable dict of floats: a
-restored solver continues bit for bit.
+The continuation state (:meth:`PairSolver.state`) is a JSON-serialisable dict of floats (the
+solution, the anchors' k, the bases' cos α, the predictor's history): a restored solver
+continues bit for bit.
+
+The thermal state takes the four parts' temperatures (housing, shaft, outer ring, inner ring);
+a uniform temperature is four equal ones.
 """
 
 from __future__ import annotations
 
 import math
 
-import numpy as np
 from scipy.special import ellipe, ellipk
 
-from .friction import BallSetTorques, ball_torque_terms
+from .friction import ball_torque_terms
 from .hertz import ellipticity
 from .materials import reduced_compliance
 from .pair import assembly_geometry, effective_shim, loop_stiffness
-from .pair_state import LoadState, state_flags
+from .pair_state import PointState, state_flags
 from .preload import ROLES
 
-#: Largest relative change of a contact's ellipticity from its anchor before the anchor is
-#: renewed (the second-order expansion's error is below 2e-12 there: measured 1.8e-12 for
-#: k, K and E at F = 0.85…0.97, tests/test_continuation.py).
+#: Relative change of a contact's ellipticity from its anchor beyond which the anchor is
+#: renewed for the next step (the second-order expansion's error is below 2e-12 there:
+#: measured 1.8e-12 for k, K and E at F = 0.85…0.97, tests/test_continuation.py).
 ANCHOR_DRIFT = 1e-4
+#: Relative change beyond which the step is solved again with the renewed anchors (error of
+#: the expansion below 2e-11 up to there, tests/test_continuation.py).
+ANCHOR_REDO = 2e-4
+#: Largest |Δcos α| from a ball's base within which its Hertz constants are taken to first
+#: order (relative error below 1e-13, tests/test_continuation.py).
+LINEAR_SPAN = 2e-6
 #: Newton iterations of one step before the exact path takes over.
 MAX_ITERATIONS = 12
 #: Newton stops at the first point whose next correction is below this fraction of the
 #: curvature distance A (≈ 1e-16 m for the catalogue bearings, the exact path's tolerance).
 _TOLERANCE = 1e-12
+#: ... and below this fraction of the smallest deflection of a loaded ball (a ball load
+#: Q ∝ δ^1.5 and its stiffness ∝ δ^0.5 then move by less than 3e-10 of their value), unless it
+#: is below rounding (this fraction of A).
+_DEFLECTION_TOLERANCE = 2e-10
+_ROUNDING = 1e-15
 #: Rounds of anchor renewal within one step before the exact path takes over.
 MAX_ANCHOR_ROUNDS = 6
 
@@ -68,6 +93,7 @@ _THIRD = 1.0 / 3.0
 _PI = math.pi
 _2_PI = 2.0 / math.pi
 _PI_2 = 0.5 * math.pi
+_INF = math.inf
 
 
 def _ratio(d_small, d_large):
@@ -256,9 +282,23 @@ def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -
 class Anchor:
     """Exact Hertz data of one contact at its anchor ellipticity k0 (see module docstring):
     K, E and their first and second derivatives in m, F(k0) and its first and second
-    derivatives in k."""
+    derivatives in k (``inv_f1`` = 1/F', ``f2_f1`` = F''/F')."""
 
-    __slots__ = ("e1", "e2", "e_int", "f", "f1", "f2", "k", "k1", "k2", "k_int", "m")
+    __slots__ = (
+        "e1",
+        "e2",
+        "e_int",
+        "f",
+        "f1",
+        "f2",
+        "f2_f1",
+        "inv_f1",
+        "k",
+        "k1",
+        "k2",
+        "k_int",
+        "m",
+    )
 
     def __init__(self, k: float):
         self.set(k)
@@ -274,10 +314,9 @@ class Anchor:
         """Anchor at ellipticity ``k`` > 1: K(m), E(m) by scipy.special, derivatives from
         dK/dm = (E − (1 − m)·K)/(2m(1 − m)), dE/dm = (E − K)/(2m) (Byrd & Friedman 1971,
         710.00, 710.02) and their derivatives, F(k) of :func:`hertz.hertz_relation`."""
+        k = float(k)
         m = 1.0 - 1.0 / (k * k)
-        ki, ei = ellipk(m), ellipe(m)
-        if type(k) is float:
-            ki, ei = float(ki), float(ei)
+        ki, ei = float(ellipk(m)), float(ellipe(m))
         q = 1.0 - m
         k1 = (ei - q * ki) / (2.0 * m * q)
         e1 = (ei - ki) / (2.0 * m)
@@ -302,72 +341,49 @@ class Anchor:
         self.f = n / d
         self.f1 = f1
         self.f2 = (nkk * d - n * dkk) / (d * d) - 2.0 * dk * f1 / d
+        self.inv_f1, self.f2_f1 = 1.0 / f1, self.f2 / f1
         self.k1, self.k2, self.e1, self.e2 = k1, k2, e1, e2
 
 
-class Contact:
-    """Hertz constants of one ball–groove contact (floats or per-ball arrays): the interface
-    of :class:`hertz.ContactConstants` that the friction equations use (``semi_axes``,
-    ``e_integral``, ``max_pressure``), from a :func:`contact` tuple."""
-
-    __slots__ = ("a_coef", "b_coef", "e_integral")
-
-    def __init__(self, terms):
-        _, _, a, k, e = terms
-        self.a_coef, self.b_coef, self.e_integral = a, a / k, e
-
-    def semi_axes(self, load):
-        """(a, b) [m] under the normal load ``load`` [N] ≥ 0."""
-        q3 = load**_THIRD
-        return self.a_coef * q3, self.b_coef * q3
-
-    def max_pressure(self, load):
-        """Largest Hertz pressure 3Q/(2πab) [Pa] (0 without load)."""
-        if isinstance(load, float) and load <= 0.0:
-            return 0.0
-        return 1.5 * load**_THIRD / (_PI * self.a_coef * self.b_coef)
-
-
-def contact(th: Thermal, c: PairConstants, cos_a, sin_a, inner: bool, anc: Anchor):
-    """Hertz constants of the inner or outer contact at the contact angle of cosine ``cos_a``
-    and sine ``sin_a`` (floats, or per-ball arrays with array anchors):
-    :func:`hertz.curvature_sum_difference` and :func:`hertz.contact_constants` rearranged,
-    with the ellipticity to second order from the anchor ``anc``.
+def contact_terms(th: Thermal, c: PairConstants, cos_a: float, inner: bool, anc: Anchor):
+    """Hertz constants of the inner or outer contact at the contact angle of cosine ``cos_a``:
+    :func:`hertz.curvature_sum_difference` and :func:`hertz.contact_constants` rearranged, with
+    the ellipticity to second order from the anchor ``anc``, and their derivatives in cos α
+    (γ = (Dw/dm)·cos α).
 
     Returns
     -------
     tuple
         (c_δ = K_c^(−2/3) [m/N^(2/3)] with K_c the contact's load–deflection constant,
-        d ln c_δ/dα [1/rad], a_coef [m/N^(1/3)], ellipticity k [-], E(m) [-]);
-        b_coef = a_coef/k.
+        d ln c_δ/d cos α [-], a_coef [m/N^(1/3)], d ln a_coef/d cos α [-], ellipticity k [-],
+        dk/d cos α [-], E(m) [-], dE/d cos α [-]); b_coef = a_coef/k.
     """
-    g = th.gamma_scale * cos_a
+    gs = th.gamma_scale
+    g = gs * cos_a
     if inner:
         inv_f = th.inv_f_inner
         rt = 2.0 * g / (1.0 - g)
-        drt_dg = 2.0 / ((1.0 - g) * (1.0 - g))
+        drt = 2.0 * gs / ((1.0 - g) * (1.0 - g))  # d(race term)/d cos α
     else:
         inv_f = th.inv_f_outer
         rt = -2.0 * g / (1.0 + g)
-        drt_dg = -2.0 / ((1.0 + g) * (1.0 + g))
-    denom = 4.0 - inv_f + rt
-    f1 = anc.f1
-    q = ((inv_f + rt) / denom - anc.f) / f1  # Δk to first order
-    f2q = anc.f2 * q / f1
+        drt = -2.0 * gs / ((1.0 + g) * (1.0 + g))
+    denom = 4.0 - inv_f + rt  # Σρ·Dw
+    q = ((inv_f + rt) / denom - anc.f) * anc.inv_f1  # Δk to first order
+    f2q = anc.f2_f1 * q
     k = anc.k + q * (1.0 - 0.5 * f2q)  # Δk = ΔF/F' − F''·ΔF²/(2F'³)
     k2 = k * k
-    dm_ = (1.0 - 1.0 / k2) - anc.m
-    ki = anc.k_int + (anc.k1 + 0.5 * anc.k2 * dm_) * dm_
-    ei = anc.e_int + (anc.e1 + 0.5 * anc.e2 * dm_) * dm_
-    x = (denom / (th.ball_diameter * k2 * ei)) ** _THIRD
-    # d ln c_δ/dα = d ln K + (d ln Σρ − 2·d ln k − d ln E)/3, dγ/dα = −(Dw/dm)·sin α
-    drt_da = -drt_dg * th.gamma_scale * sin_a
-    dk_da = (4.0 - 2.0 * inv_f) / (denom * denom) * drt_da * (1.0 - f2q) / f1
-    dm_da = 2.0 * dk_da / (k2 * k)
-    dln_c = (anc.k1 + anc.k2 * dm_) * dm_da / ki + (
-        drt_da / denom - 2.0 * dk_da / k - (anc.e1 + anc.e2 * dm_) * dm_da / ei
-    ) * _THIRD
-    return c.c_delta_coef * ki * x, dln_c, c.a_coef / x, k, ei
+    dm = (1.0 - 1.0 / k2) - anc.m
+    k1, e1 = anc.k1 + anc.k2 * dm, anc.e1 + anc.e2 * dm  # dK/dm, dE/dm
+    ki = anc.k_int + (anc.k1 + 0.5 * anc.k2 * dm) * dm
+    ei = anc.e_int + (anc.e1 + 0.5 * anc.e2 * dm) * dm
+    x = _cbrt(denom / (th.ball_diameter * k2 * ei))
+    # dF/d cos α = (4 − 2/f)/denom²·drt; dk = dF·(1 − F''ΔF/F'²)/F'; dm = 2·dk/k³
+    dk = (4.0 - 2.0 * inv_f) / (denom * denom) * drt * (1.0 - f2q) * anc.inv_f1
+    dm_c = 2.0 * dk / (k2 * k)
+    de = e1 * dm_c
+    dln_x = (drt / denom - 2.0 * dk / k - de / ei) * _THIRD
+    return (c.c_delta_coef * ki * x, k1 * dm_c / ki + dln_x, c.a_coef / x, -dln_x, k, dk, ei, de)
 
 
 def exact_contact_k(th: Thermal, cos_a: float, inner: bool) -> float:
@@ -379,294 +395,217 @@ def exact_contact_k(th: Thermal, cos_a: float, inner: bool) -> float:
     return float(ellipticity((inv_f + rt) / (4.0 - inv_f + rt)))
 
 
-class BearingPoint:
-    """One bearing (all balls alike) at one axial offset: force, stiffness, contacts."""
+class Ball:
+    """One ball position of a bearing: azimuth cosine cos ψ and weight (Z for the one ball of
+    pure axial load; 1 or 2 over half the ring under a radial load), the anchors of its inner
+    and outer contacts, its base (cos α0, inner and outer :func:`contact_terms`) or None, and
+    the state at the last evaluation: load Q [N], cos α, sin α."""
 
-    __slots__ = ("cos_a", "dforce", "force", "inner", "load", "outer", "sin_a", "stiffness")
+    __slots__ = ("anc_i", "anc_o", "base", "cos_a", "cos_psi", "load", "sin_a", "weight")
 
-
-def bearing_point(th: Thermal, c: PairConstants, a: float, anc_i: Anchor, anc_o: Anchor):
-    """One bearing at axial offset ``a`` [m] under pure axial load (:func:`equilibrium.
-    axial_state` on floats): ball load Q [N], Fa = Z·Q·sin α [N], dFa/da [N/m] with K_n held
-    (the output ``axial_stiffness``) and with K_n(α) varied (the Newton Jacobian)."""
-    a2 = th.radial_centre_distance
-    s = _hypot(a, a2)
-    cos_a, sin_a = a2 / s, a / s
-    delta = s - th.curvature_distance
-    ci = contact(th, c, cos_a, sin_a, True, anc_i)
-    co = contact(th, c, cos_a, sin_a, False, anc_o)
-    p = BearingPoint()
-    p.cos_a, p.sin_a, p.inner, p.outer = cos_a, sin_a, ci, co
-    if delta > 0.0:
-        csum = ci[0] + co[0]
-        k_n = csum**-1.5
-        z = c.n_balls
-        root = _sqrt(delta)
-        q = k_n * delta * root
-        p.load = q
-        p.force = z * q * sin_a
-        p.stiffness = z * (1.5 * k_n * root * sin_a * sin_a + q / s * cos_a * cos_a)
-        dkn_da = -1.5 * k_n * (ci[0] * ci[1] + co[0] * co[1]) / csum
-        p.dforce = p.stiffness + z * dkn_da * delta * root * sin_a * cos_a / s
-    else:
-        p.load = p.force = p.stiffness = p.dforce = 0.0
-    return p
+    def __init__(self, cos_psi: float, weight: float, anc_i: Anchor, anc_o: Anchor):
+        self.cos_psi, self.weight, self.anc_i, self.anc_o = cos_psi, weight, anc_i, anc_o
+        self.base = None
+        self.load = self.cos_a = self.sin_a = 0.0
 
 
-def _ball_torques(c: PairConstants, th: Thermal, q, cos_a, sin_a, ci: Contact, co: Contact):
-    """(hysteresis, spin, sliding, inner ring, outer ring) torques of single balls [N·m]:
-    :func:`friction.ball_torque_terms` at the race radii (dm ∓ Dw·cos α)/2 (floats)."""
-    dw, dm = th.ball_diameter, th.pitch_diameter
-    a_i, b_i = ci.semi_axes(q)
-    a_o, b_o = co.semi_axes(q)
-    h_i, h_o, sl_i, sl_o, sp_i, sp_o = ball_torque_terms(
-        q,
-        (a_i, b_i, ci.e_integral),
-        (a_o, b_o, co.e_integral),
-        0.5 * (dm - dw * cos_a),
-        0.5 * (dm + dw * cos_a),
-        abs(sin_a),
-        dw,
-        (th.inner_groove_radius, th.outer_groove_radius),
-        c.coefficients,
-        c.solid,
-        c.sliding,
-    )
-    return h_i + h_o, sp_i + sp_o, sl_i + sl_o, h_i + sl_i + sp_i, h_o + sl_o + sp_o
-
-
-class AxialSolution:
-    """The pair under pure axial load at one step: both bearings' points and the offsets."""
-
-    __slots__ = ("a", "b", "p", "z")
-
-
-def solve_axial(th: Thermal, c: PairConstants, f_ext: float, x0, anchors) -> AxialSolution | None:
-    """Offsets of the pair under the axial load ``f_ext`` [N] (pressing bearing A): the two
-    conditions of :func:`preload.pair_offsets`, F_A − F_B = F_ext and
-    a_A + a_B + (F_A + F_B)/(2k) = C, by Newton's method from ``x0`` = (p, z) [m] with the
-    contact ``anchors`` (A inner, A outer, B inner, B outer). Without external load z = 0 (the
-    exact path's symmetric solution) and one unknown is left; a rigid loop fixes p = C/2.
-    None when Newton does not converge (the caller falls back to the exact path)."""
-    k_loop, closure = c.loop_stiffness, th.closure
-    rigid = k_loop == math.inf
-    tol = _TOLERANCE * th.curvature_distance
-    p, z = x0
-    if rigid:
-        p = 0.5 * closure
-    symmetric = f_ext == 0.0
-    if symmetric:
-        z = 0.0
-    aa, ao, ba, bo = anchors
-    for _ in range(MAX_ITERATIONS):
-        pa = bearing_point(th, c, p + z, aa, ao)
-        if symmetric:
-            pb = pa
-            if rigid:
-                dp = dz = 0.0
-            else:
-                dp, dz = -(2.0 * p + pa.force / k_loop - closure) / (2.0 + pa.dforce / k_loop), 0.0
-        else:
-            pb = bearing_point(th, c, p - z, ba, bo)
-            r1 = pa.force - pb.force - f_ext
-            j11, j12 = pa.dforce - pb.dforce, pa.dforce + pb.dforce
-            if rigid:
-                if j12 <= 0.0:
-                    return None
-                dp, dz = 0.0, -r1 / j12
-            else:
-                r2 = 2.0 * p + 0.5 * (pa.force + pb.force) / k_loop - closure
-                j21, j22 = 2.0 + 0.5 * j12 / k_loop, 0.5 * j11 / k_loop
-                det = j11 * j22 - j12 * j21
-                if det == 0.0:
-                    return None
-                dp = -(r1 * j22 - r2 * j12) / det
-                dz = -(j11 * r2 - j21 * r1) / det
-        step = max(abs(dp), abs(dz))
-        if step <= tol:
-            sol = AxialSolution()
-            sol.p, sol.z, sol.a, sol.b = p, z, pa, pb
-            return sol
-        if not step < math.inf:
-            return None
-        p, z = p + dp, z + dz
-    return None
-
-
-class RingPoint:
-    """One bearing's balls over half the ring (ψ_j = 2πj/Z, j = 0…⌊Z/2⌋, weights w_j: the
-    load is symmetric about the radial load's direction) at axial offset a and radial
-    displacement δr: per-ball (Q, cos α, sin α, inner contact, outer contact), the ring loads
-    and their Jacobian (the contact angle's effect on the Hertz constants included)."""
-
-    __slots__ = ("axial_force", "axial_stiffness", "balls", "jacobian", "radial_force")
-
-
-def ring_point(th: Thermal, c: PairConstants, a, dr, anc_i, anc_o, cos_psi, w) -> RingPoint:
+def ring_point(th: Thermal, c: PairConstants, a: float, dr: float, balls) -> tuple:
     """One bearing at axial offset ``a`` [m] and radial displacement ``dr`` [m] (Jones 1960;
-    :func:`equilibrium.ball_loads` without tilt): ball loads Q_j [N], Fa = Σ w·Q·sin α,
-    Fr = Σ w·Q·cos α·cos ψ [N], d(Fa, Fr)/d(a, δr), and dFa/da with K_n held (the output).
-    ``anc_i``, ``anc_o``: the balls' anchors; ``cos_psi``, ``w``: the balls' cos ψ_j and
-    weights (lists of floats)."""
+    :func:`equilibrium.ball_loads` without tilt): each ball's load Q_j = K_n(α_j)·δ_j^1.5,
+    stored on the :class:`Ball`, and the ring's loads and Jacobian.
+
+    Returns
+    -------
+    tuple
+        (Fa = Σ w·Q·sin α [N], Fr = Σ w·Q·cos α·cos ψ [N], dFa/da, dFa/dδr, dFr/da, dFr/dδr
+        [N/m] with K_n(α) varied, dFa/da with K_n held [N/m], the output stiffness).
+    """
     a2_0, dist = th.radial_centre_distance, th.curvature_distance
     fa = fr = j11 = j12 = j21 = j22 = kax = 0.0
-    balls = []
-    for cp, wj, ai, ao in zip(cos_psi, w, anc_i, anc_o, strict=True):
+    d_min = dist
+    for b in balls:
+        cp = b.cos_psi
         a2 = a2_0 + dr * cp
         s = _hypot(a, a2)
         cos_a, sin_a = a2 / s, a / s
-        ci = contact(th, c, cos_a, sin_a, True, ai)
-        co = contact(th, c, cos_a, sin_a, False, ao)
+        b.cos_a, b.sin_a = cos_a, sin_a
         delta = s - dist
-        if delta > 0.0:
-            csum = ci[0] + co[0]
-            k_n = csum**-1.5
-            root = _sqrt(delta)
-            q = k_n * delta * root
-            # the share of K_n(α) in dQ/dA1 (·cos α) and dQ/dA2 (·−sin α), dα = (cos α·dA1 −
-            # sin α·dA2)/s
-            dkn = -1.5 * k_n * (ci[0] * ci[1] + co[0] * co[1]) / csum * delta * root / s
-            dq1 = 1.5 * k_n * root * sin_a + dkn * cos_a
-            dq2 = 1.5 * k_n * root * cos_a - dkn * sin_a
-            qs = q / s
-            sc = qs * sin_a * cos_a
-            wc = wj * cp
-            fa += wj * q * sin_a
-            fr += wc * q * cos_a
-            j11 += wj * (dq1 * sin_a + qs * cos_a * cos_a)
-            j12 += wc * (dq2 * sin_a - sc)
-            j21 += wc * (dq1 * cos_a - sc)
-            j22 += wc * cp * (dq2 * cos_a + qs * sin_a * sin_a)
-            kax += wj * (1.5 * k_n * root * sin_a * sin_a + qs * cos_a * cos_a)
-        else:
-            q = 0.0
-        balls.append((q, cos_a, sin_a, ci, co))
-    r = RingPoint()
-    r.balls, r.axial_force, r.radial_force = balls, fa, fr
-    r.jacobian, r.axial_stiffness = (j11, j12, j21, j22), kax
-    return r
+        if delta <= 0.0:
+            b.load = 0.0
+            continue
+        if delta < d_min:
+            d_min = delta
+        base = b.base
+        if base is None or abs(cos_a - base[0]) > LINEAR_SPAN:
+            base = b.base = (
+                cos_a,
+                contact_terms(th, c, cos_a, True, b.anc_i),
+                contact_terms(th, c, cos_a, False, b.anc_o),
+            )
+        d = cos_a - base[0]
+        ti, to = base[1], base[2]
+        ci, co = ti[0] * (1.0 + ti[1] * d), to[0] * (1.0 + to[1] * d)
+        csum = ci + co
+        k_n = 1.0 / (csum * _sqrt(csum))
+        root = _sqrt(delta)
+        knr = 1.5 * k_n * root
+        q = k_n * delta * root
+        b.load = q
+        # the share of K_n(α) in dQ/dA1 (·cos α) and dQ/dA2 (·−sin α): dα = (cos α·dA1 −
+        # sin α·dA2)/s, d ln c/dα = −sin α·d ln c/d cos α
+        g = knr * (ci * ti[1] + co * to[1]) / csum * sin_a * delta / s
+        dq1 = knr * sin_a + g * cos_a
+        dq2 = knr * cos_a - g * sin_a
+        qs = q / s
+        sc = qs * sin_a * cos_a
+        w = b.weight
+        wc = w * cp
+        fa += w * q * sin_a
+        fr += wc * q * cos_a
+        j11 += w * (dq1 * sin_a + qs * cos_a * cos_a)
+        j12 += wc * (dq2 * sin_a - sc)
+        j21 += wc * (dq1 * cos_a - sc)
+        j22 += wc * cp * (dq2 * cos_a + qs * sin_a * sin_a)
+        kax += w * (knr * sin_a * sin_a + qs * cos_a * cos_a)
+    return fa, fr, j11, j12, j21, j22, kax, d_min
 
 
-class RadialSolution:
-    """The pair under axial and radial load at one step."""
+def newton_step(jac: tuple, res: tuple, k_loop: float, radial: bool):
+    """Newton correction (dp, dz, dδr_A, dδr_B) [m] of the pair equilibrium from the bearings'
+    Jacobians ``jac`` = (dFa/da, dFa/dδr, dFr/da, dFr/dδr of A, the same of B) [N/m] and the
+    residuals ``res`` = (r1, r2, r3, r4): r1 = F_A − F_B − F_ext, r2 = Fr_A − F_r/2,
+    r3 = Fr_B − F_r/2 [N], r4 = 2p + (F_A + F_B)/(2k) − C [m]. The radial rows hold one bearing
+    each: dδr_A = (−r2 − dFr_A/da·u)/(dFr_A/dδr) with u = dp + dz, v = dp − dz the changes of
+    the offsets of A and B, which leaves
 
-    __slots__ = ("a", "b", "x")
+        e_A·u − e_B·v = g1,   (1 + e_A/2k)·u + (1 + e_B/2k)·v = g2,
 
-
-def solve_radial(th: Thermal, c: PairConstants, f_ext, f_r, x0, anchors, cos_psi, w):
-    """Pair under axial load ``f_ext`` [N] (pressing A) and radial load ``f_r`` [N] shared
-    equally: the conditions of :func:`preload.pair_equilibrium` (F_A − F_B = F_ext,
-    Fr_A = Fr_B = F_r/2, (F_A + F_B)/2 = k·(C − 2p)) by Newton's method from ``x0`` =
-    (p, z, δr_A, δr_B) [m]. None when Newton does not converge."""
-    k_loop, closure = c.loop_stiffness, th.closure
-    rigid = k_loop == math.inf
-    tol = _TOLERANCE * th.curvature_distance
-    x = np.array(x0, dtype=float)
-    if rigid:
-        x[0] = 0.5 * closure
-    half = 0.5 * f_r
-    for _ in range(MAX_ITERATIONS):
-        p, z, da, db = x
-        ra = ring_point(th, c, p + z, da, anchors[0], anchors[1], cos_psi, w)
-        rb = ring_point(th, c, p - z, db, anchors[2], anchors[3], cos_psi, w)
-        (a11, a12, a21, a22), (b11, b12, b21, b22) = ra.jacobian, rb.jacobian
-        res = [
-            ra.axial_force - rb.axial_force - f_ext,
-            ra.radial_force - half,
-            rb.radial_force - half,
-        ]
-        jac = [[a11 - b11, a11 + b11, a12, -b12], [a21, a21, a22, 0.0], [b21, -b21, 0.0, b22]]
-        if rigid:
-            jac = [row[1:] for row in jac]
-        else:
-            res.append(0.5 * (ra.axial_force + rb.axial_force) - k_loop * (closure - 2.0 * p))
-            jac.append([0.5 * (a11 + b11) + 2.0 * k_loop, 0.5 * (a11 - b11), 0.5 * a12, 0.5 * b12])
-        try:
-            dx = -np.linalg.solve(np.array(jac), np.array(res))
-        except np.linalg.LinAlgError:
+    e = dFa/da − (dFa/dδr)(dFr/da)/(dFr/dδr) each bearing's axial stiffness at balanced radial
+    load. A rigid loop (k = inf) fixes p. None when singular."""
+    a11, a12, a21, a22, b11, b12, b21, b22 = jac
+    r1, r2, r3, r4 = res
+    if radial:
+        if a22 == 0.0 or b22 == 0.0:
             return None
-        if rigid:
-            dx = np.concatenate([[0.0], dx])
-        step = float(np.max(np.abs(dx)))
-        if step <= tol:
-            sol = RadialSolution()
-            sol.x, sol.a, sol.b = tuple(float(v) for v in x), ra, rb
-            return sol
-        if not step < math.inf:
+        ta, tb = a12 / a22, b12 / b22
+        ea, eb = a11 - ta * a21, b11 - tb * b21
+        g1 = -r1 + ta * r2 - tb * r3
+    else:
+        ea, eb = a11, b11
+        g1 = -r1
+    if k_loop == _INF:
+        det = ea + eb
+        if not det > 0.0:
             return None
-        x = x + dx
-    return None
+        dz = g1 / det
+        dp, u, v = 0.0, dz, -dz
+    else:
+        g2 = -r4 + 0.5 * (ta * r2 + tb * r3) / k_loop if radial else -r4
+        ha, hb = 1.0 + 0.5 * ea / k_loop, 1.0 + 0.5 * eb / k_loop
+        det = ea * hb + eb * ha
+        if det == 0.0:
+            return None
+        u = (g1 * hb + eb * g2) / det
+        v = (ea * g2 - ha * g1) / det
+        dp, dz = 0.5 * (u + v), 0.5 * (u - v)
+    if radial:
+        return dp, dz, (-r2 - a21 * u) / a22, (-r3 - b21 * v) / b22
+    return dp, dz, 0.0, 0.0
 
 
-def _secant(x1, x0, u2, u1, u0):
-    """Secant predictor: x1 + θ·(x1 − x0), θ the projection of the input change u2 − u1 on the
-    previous change u1 − u0 when the two are parallel (cosine above 1 − 1e-6); else x1."""
-    d1 = [a - b for a, b in zip(u2, u1, strict=True)]
-    d0 = [a - b for a, b in zip(u1, u0, strict=True)]
-    dot = sum(a * b for a, b in zip(d1, d0, strict=True))
-    n0 = sum(b * b for b in d0)
-    if dot <= 0.0 or dot * dot < (1.0 - 1e-6) * n0 * sum(a * a for a in d1):
-        return x1
-    theta = dot / n0
-    return tuple(a + theta * (a - b) for a, b in zip(x1, x0, strict=True))
+def _parallel(d1, d0) -> float:
+    """θ with d1 ≈ θ·d0 when the vectors d1 and d0 are parallel (cosine above 1 − 1e-6) and
+    point the same way; else 0."""
+    dot = n0 = n1 = 0.0
+    for a, b in zip(d1, d0, strict=True):
+        dot += a * b
+        n0 += b * b
+        n1 += a * a
+    if dot <= 0.0 or dot * dot < (1.0 - 1e-6) * n0 * n1:
+        return 0.0
+    return dot / n0
 
 
 class PairSolver:
     """Continuation solve of one :class:`~.pair.BearingPair` (see module docstring).
 
     :meth:`solve` takes the thermal state of a step (:func:`thermal_floats`) and the external
-    loads, and returns the solution, or None when the warm start fails; the caller then solves
-    exactly and :meth:`seed` s the solver with that solution.
+    loads, and returns the step's :class:`~.pair_state.PointState`, or None when the warm
+    start fails; the caller then solves exactly and :meth:`seed` s the solver with that
+    solution.
     """
 
     def __init__(self, pair):
         self.pair = pair
         self.c = PairConstants(pair)
         z = self.c.n_balls
-        self.cos_psi = [math.cos(2.0 * math.pi * j / z) for j in range(z // 2 + 1)]
-        self.weights = [1.0 if j == 0 or 2 * j == z else 2.0 for j in range(z // 2 + 1)]
+        self.half_ring = tuple(
+            (math.cos(2.0 * math.pi * j / z), 1.0 if j == 0 or 2 * j == z else 2.0)
+            for j in range(z // 2 + 1)
+        )
         self.reset()
 
     def reset(self) -> None:
         """Forget the last solution: the next step solves exactly."""
         self.mode = None  # "axial" (all balls alike) or "radial" (per ball)
-        self.x = None  # (p, z) or (p, z, δr_A, δr_B) [m] of the last step
-        self.anchors = None  # A inner, A outer, B inner, B outer
-        self.previous = None  # (x, inputs) of the step before: the secant predictor
-        self.inputs = None  # inputs of the last step
+        self.x = None  # (p, z, δr_A, δr_B) [m] of the last step
+        self.rings = None  # the balls of bearings A and B
+        self.th = None  # the thermal state the balls' bases belong to
+        self.inputs = None  # inputs of the last step: (4 temperatures [K], F_ext, F_r [N])
+        self.jacobian = None  # the bearings' Jacobians at x (newton_step), or None
+        self.secant = None  # (Δx, ΔT) of the last step's temperature change, or None
+
+    def _layout(self, mode: str):
+        """(cos ψ, weight) of the balls of one bearing in ``mode``."""
+        return ((0.0, float(self.c.n_balls)),) if mode == "axial" else self.half_ring
 
     # ---------------------------------------------------------------- state
     def state(self) -> dict | None:
         """JSON-serialisable continuation state (floats), or None before the first solve."""
         if self.x is None:
             return None
-
-        def ks(a):
-            return [b.k for b in a] if isinstance(a, list) else a.k
-
-        prev = None if self.previous is None else [list(v) for v in self.previous]
         return {
             "mode": self.mode,
             "x": list(self.x),
-            "k": [ks(a) for a in self.anchors],
+            "k": [[[b.anc_i.k, b.anc_o.k] for b in ring] for ring in self.rings],
+            "base": [[None if b.base is None else b.base[0] for b in ring] for ring in self.rings],
             "inputs": list(self.inputs),
-            "previous": prev,
+            "jacobian": None if self.jacobian is None else list(self.jacobian),
+            "secant": None if self.secant is None else [list(v) for v in self.secant],
         }
 
-    def restore(self, state: dict | None) -> None:
-        """Inverse of :meth:`state`: a restored solver continues bit for bit."""
+    def restore(self, state: dict | None, th: Thermal | None = None) -> None:
+        """Inverse of :meth:`state`, with ``th`` the thermal state at the state's inputs (the
+        balls' bases are evaluated again there): a restored solver continues bit for bit."""
         self.reset()
         if state is None:
             return
         self.mode = state["mode"]
         self.x = tuple(float(v) for v in state["x"])
-        self.anchors = [
-            [Anchor(float(v)) for v in k] if isinstance(k, list) else Anchor(float(k))
-            for k in state["k"]
+        layout = self._layout(self.mode)
+        self.rings = [
+            [
+                Ball(cp, w, Anchor(float(ki)), Anchor(float(ko)))
+                for (cp, w), (ki, ko) in zip(layout, ks, strict=True)
+            ]
+            for ks in state["k"]
         ]
+        self.th = th
+        for ring, bases in zip(self.rings, state.get("base") or [[], []], strict=False):
+            for b, cos0 in zip(ring, bases, strict=False):
+                if cos0 is not None and th is not None:
+                    b.base = self._base(th, float(cos0), b)
         self.inputs = tuple(float(v) for v in state["inputs"])
-        prev = state["previous"]
-        self.previous = None if prev is None else tuple(tuple(float(v) for v in p) for p in prev)
+        jac, sec = state.get("jacobian"), state.get("secant")
+        self.jacobian = None if jac is None else tuple(float(v) for v in jac)
+        self.secant = None if sec is None else tuple(tuple(float(v) for v in p) for p in sec)
+
+    def _base(self, th: Thermal, cos_a: float, b: Ball) -> tuple:
+        return (
+            cos_a,
+            contact_terms(th, self.c, cos_a, True, b.anc_i),
+            contact_terms(th, self.c, cos_a, False, b.anc_o),
+        )
 
     def seed(self, th: Thermal, inputs, x, ball_cosines=None) -> None:
         """Start from an exactly solved state: ``x`` = (p, z) (axial) or (p, z, δr_A, δr_B)
@@ -678,173 +617,276 @@ class PairSolver:
         if len(x) == 2:
             self.mode = "axial"
             p, z = x
-            cosines = [a2 / _hypot(p + z, a2), a2 / _hypot(p - z, a2)]
+            cosines = [[a2 / _hypot(p + z, a2)], [a2 / _hypot(p - z, a2)]]
+            x = (p, z, 0.0, 0.0)
         else:
             self.mode = "radial"
-            cosines = list(ball_cosines)
-        anchors = []
-        for cos_a in cosines:
-            for inner in (True, False):
-                if np.ndim(cos_a):
-                    anchors.append([Anchor(exact_contact_k(th, float(v), inner)) for v in cos_a])
-                else:
-                    anchors.append(Anchor(exact_contact_k(th, float(cos_a), inner)))
-        self.x, self.anchors, self.inputs = tuple(float(v) for v in x), anchors, tuple(inputs)
+            cosines = [[float(v) for v in cs] for cs in ball_cosines]
+        layout = self._layout(self.mode)
+        self.rings = [
+            [
+                Ball(
+                    cp,
+                    w,
+                    Anchor(exact_contact_k(th, cos_a, True)),
+                    Anchor(exact_contact_k(th, cos_a, False)),
+                )
+                for (cp, w), cos_a in zip(layout, cs, strict=True)
+            ]
+            for cs in cosines
+        ]
+        self.th = th
+        self.x, self.inputs = tuple(float(v) for v in x), tuple(inputs)
 
     def _switch(self, mode: str) -> None:
-        """Carry the anchors and offsets over between the axial and the radial form."""
-        n = len(self.cos_psi)
-        if mode == "radial":
-            self.anchors = [[a.copy() for _ in range(n)] for a in self.anchors]
-            self.x = (*self.x, 0.0, 0.0)
-        else:
-            self.anchors = [a[0].copy() for a in self.anchors]
-            self.x = self.x[:2]
-        self.mode, self.previous = mode, None
+        """Carry the anchors over between the axial and the radial form (the radial balls
+        start from the axial ball's anchors; the axial ball from the ball at ψ = 0)."""
+        layout = self._layout(mode)
+        self.rings = [
+            [Ball(cp, w, ring[0].anc_i.copy(), ring[0].anc_o.copy()) for cp, w in layout]
+            for ring in self.rings
+        ]
+        if mode == "axial":
+            self.x = (*self.x[:2], 0.0, 0.0)
+        self.mode, self.jacobian, self.secant = mode, None, None
 
     # ---------------------------------------------------------------- solve
-    def evaluate(self, th: Thermal, axial_load: float, radial_load: float):
-        """The solution object at the current offsets and anchors, without a Newton step: the
-        last step's solution again, bit for bit (after :meth:`restore`)."""
-        if self.mode == "axial":
-            p, z = self.x
-            sol = AxialSolution()
-            sol.p, sol.z = p, z
-            sol.a = bearing_point(th, self.c, p + z, self.anchors[0], self.anchors[1])
-            sol.b = (
-                sol.a
-                if axial_load == 0.0
-                else bearing_point(th, self.c, p - z, self.anchors[2], self.anchors[3])
-            )
-            return sol
-        p, z, da, db = self.x
-        sol = RadialSolution()
-        sol.x = self.x
-        args = (self.cos_psi, self.weights)
-        sol.a = ring_point(th, self.c, p + z, da, *self.anchors[:2], *args)
-        sol.b = ring_point(th, self.c, p - z, db, *self.anchors[2:], *args)
-        return sol
-
-    def solve(self, th: Thermal, axial_load: float, radial_load: float):
-        """The pair at the thermal state ``th`` under ``axial_load`` and ``radial_load`` [N]:
-        an :class:`AxialSolution` (no radial load) or a :class:`RadialSolution`, or None."""
+    def solve(self, th: Thermal, axial_load: float, radial_load: float) -> PointState | None:
+        """The pair at the thermal state ``th`` under ``axial_load`` (pressing A) and
+        ``radial_load`` [N]: the step's :class:`~.pair_state.PointState`, or None."""
         if self.x is None:
             return None
         mode = "axial" if radial_load == 0.0 else "radial"
         if mode != self.mode:
             self._switch(mode)
+        if th is not self.th:  # the bases belong to another thermal state
+            for ring in self.rings:
+                for b in ring:
+                    b.base = None
+            self.th = th
         inputs = (*th.temperatures, axial_load, radial_load)
-        x = self.x
-        if self.previous is not None:
-            x = _secant(self.x, self.previous[0], inputs, self.inputs, self.previous[1])
-        anchors = self.anchors
+        x = self._predict(inputs)
         for _ in range(MAX_ANCHOR_ROUNDS):
-            if mode == "axial":
-                sol = solve_axial(th, self.c, axial_load, x, anchors)
-                if sol is None:
-                    return None
-                x = (sol.p, sol.z)
-                drift = _drifted(anchors, (sol.a.inner, sol.a.outer, sol.b.inner, sol.b.outer))
-                if drift and axial_load == 0.0:  # B mirrors A
-                    anchors[2], anchors[3] = anchors[0].copy(), anchors[1].copy()
-            else:
-                sol = solve_radial(
-                    th, self.c, axial_load, radial_load, x, anchors, self.cos_psi, self.weights
-                )
-                if sol is None:
-                    return None
-                x = sol.x
-                drift = False
-                for ring, (anc_i, anc_o) in ((sol.a, anchors[:2]), (sol.b, anchors[2:])):
-                    cons = [b[3] for b in ring.balls] + [b[4] for b in ring.balls]
-                    drift |= _drifted(anc_i + anc_o, cons)
-            if not drift:
-                self.previous = (self.x, self.inputs)
-                self.x, self.inputs = x, inputs
-                return sol
+            sol = self._newton(th, axial_load, radial_load, x)
+            if sol is None and x is not self.x:  # the predictor overshot: from the last step
+                x = self.x
+                sol = self._newton(th, axial_load, radial_load, x)
+            if sol is None:
+                return None
+            x, ka, kb, jac = sol
+            point = self._point(th, x, ka, kb, axial_load == 0.0 and mode == "axial")
+            if not self._renew_anchors(axial_load == 0.0 and mode == "axial"):
+                self._advance(x, inputs, jac)
+                return point
         return None
 
+    def _load_step(self, jac, inputs_new, inputs_old):
+        """First-order change of x [m] from the loads of ``inputs_old`` to those of
+        ``inputs_new`` (the Newton step of the load change alone), or None."""
+        d_ext, d_r = inputs_new[4] - inputs_old[4], inputs_new[5] - inputs_old[5]
+        if d_ext == 0.0 and d_r == 0.0:
+            return (0.0, 0.0, 0.0, 0.0)
+        res = (-d_ext, -0.5 * d_r, -0.5 * d_r, 0.0)
+        return newton_step(jac, res, self.c.loop_stiffness, self.mode == "radial")
 
-def _drifted(anchors, contacts) -> bool:
-    """Renew every anchor whose contact's ellipticity moved more than :data:`ANCHOR_DRIFT`
-    from it (at the contact's current k); True when one was renewed."""
-    drift = False
-    for anc, con in zip(anchors, contacts, strict=True):
-        k = con[3]
-        if abs(k - anc.k) > ANCHOR_DRIFT * anc.k:
-            anc.set(k)
-            drift = True
-    return drift
+    def _predict(self, inputs):
+        """Start of a step at ``inputs``: the last solution moved by the tangent of the load
+        change (the last Jacobian) and by the secant of the temperature change (the last step's
+        change of x less its load part, when the temperatures move on in the same direction)."""
+        x = self.x
+        if self.jacobian is not None:
+            dx = self._load_step(self.jacobian, inputs, self.inputs)
+            if dx is not None:
+                x = tuple(a + b for a, b in zip(x, dx, strict=True))
+        if self.secant is not None:
+            d_t = tuple(a - b for a, b in zip(inputs[:4], self.inputs[:4], strict=True))
+            theta = _parallel(d_t, self.secant[1])
+            if theta:
+                x = tuple(a + theta * b for a, b in zip(x, self.secant[0], strict=True))
+        return x
+
+    def _advance(self, x, inputs, jac) -> None:
+        """Make ``x`` at ``inputs`` (Jacobian ``jac``) the last solution, and keep the secant of
+        the temperature change from the solution before."""
+        d_t = tuple(a - b for a, b in zip(inputs[:4], self.inputs[:4], strict=True))
+        self.secant = None
+        if any(d_t):
+            dx = self._load_step(jac, inputs, self.inputs)
+            if dx is not None:
+                d_x = tuple(a - b - c for a, b, c in zip(x, self.x, dx, strict=True))
+                self.secant = (d_x, d_t)
+        self.x, self.inputs, self.jacobian = x, inputs, jac
+
+    def _newton(self, th: Thermal, f_ext: float, f_r: float, x0):
+        """Newton's method from ``x0`` = (p, z, δr_A, δr_B) [m]: the solution, the bearings'
+        output stiffnesses [N/m] and their Jacobians there (the balls hold its loads), or None
+        (see :func:`newton_step`).
+        Without external load z = 0 and B mirrors A (the exact path's symmetric solution)."""
+        c = self.c
+        k_loop, closure = c.loop_stiffness, th.closure
+        rigid = k_loop == _INF
+        tol = _TOLERANCE * th.curvature_distance
+        floor = _ROUNDING * th.curvature_distance
+        p, z, da, db = x0
+        radial = f_r != 0.0
+        if rigid:
+            p = 0.5 * closure
+        symmetric = f_ext == 0.0 and not radial
+        if symmetric:
+            z = 0.0
+        ring_a, ring_b = self.rings
+        half = 0.5 * f_r
+        for _ in range(MAX_ITERATIONS):
+            ra = ring_point(th, c, p + z, da, ring_a)
+            rb = ra if symmetric else ring_point(th, c, p - z, db, ring_b)
+            res = (
+                ra[0] - rb[0] - f_ext,
+                ra[1] - half,
+                rb[1] - half,
+                0.0 if rigid else 2.0 * p + 0.5 * (ra[0] + rb[0]) / k_loop - closure,
+            )
+            if symmetric:
+                dx = (0.0 if rigid else -res[3] / (2.0 + ra[2] / k_loop), 0.0, 0.0, 0.0)
+            elif radial and (ra[5] == 0.0 or rb[5] == 0.0):
+                # a bearing with no ball in contact has no radial stiffness: move it radially
+                # until its ball nearest the load's direction carries about F_r/2, and go on
+                da = self._touch(th, p + z, half, ring_a) if ra[5] == 0.0 else da
+                db = self._touch(th, p - z, half, ring_b) if rb[5] == 0.0 else db
+                if da is None or db is None:
+                    return None
+                continue
+            else:
+                dx = newton_step((*ra[2:6], *rb[2:6]), res, k_loop, radial)
+                if dx is None:
+                    return None
+            step = max(abs(dx[0]), abs(dx[1]), abs(dx[2]), abs(dx[3]))
+            if step <= tol and (step <= _DEFLECTION_TOLERANCE * min(ra[7], rb[7]) or step <= floor):
+                return (p, z, da, db), ra[6], rb[6], (*ra[2:6], *rb[2:6])
+            if not step < _INF:
+                return None
+            p, z, da, db = p + dx[0], z + dx[1], da + dx[2], db + dx[3]
+        return None
+
+    def _touch(self, th: Thermal, a: float, f: float, balls) -> float | None:
+        """Radial displacement [m] of a bearing at axial offset ``a`` [m] at which its ball
+        nearest the direction of the radial force ``f`` [N] carries |f| with the other balls
+        free (Hertz: δ = (|f|/(K_n·cos α))^(2/3)): a start for Newton's method where no ball
+        touches. None when no radial displacement brings that ball into contact."""
+        dist, a2_0 = th.curvature_distance, th.radial_centre_distance
+        b = max(balls, key=lambda ball: ball.cos_psi * f)
+        cp = b.cos_psi
+        if abs(a) >= dist or cp * f <= 0.0:
+            return None
+        a2 = _sqrt(dist * dist - a * a)
+        cos_a = a2 / dist
+        ci = contact_terms(th, self.c, cos_a, True, b.anc_i)[0]
+        co = contact_terms(th, self.c, cos_a, False, b.anc_o)[0]
+        delta = (abs(f) * (ci + co) ** 1.5 / cos_a) ** (2.0 / 3.0)
+        s = dist + delta
+        return (_sqrt(s * s - a * a) - a2_0) / cp
+
+    def _renew_anchors(self, symmetric: bool) -> bool:
+        """Renew every anchor whose contact's ellipticity (at the balls' last evaluation) moved
+        more than :data:`ANCHOR_DRIFT` from it; True when one moved more than
+        :data:`ANCHOR_REDO` (the step is then solved again). B mirrors A when symmetric."""
+        redo = False
+        rings = self.rings[:1] if symmetric else self.rings
+        for ring in rings:
+            for b in ring:
+                if b.load <= 0.0:
+                    continue
+                cos0, ti, to = b.base
+                d = b.cos_a - cos0
+                renewed = False
+                for anc, t in ((b.anc_i, ti), (b.anc_o, to)):
+                    k = t[4] + t[5] * d
+                    drift = abs(k - anc.k)
+                    if drift > ANCHOR_DRIFT * anc.k:
+                        redo |= drift > ANCHOR_REDO * anc.k
+                        anc.set(k)
+                        renewed = True
+                if renewed:
+                    b.base = None
+        if symmetric:
+            for a, b in zip(*self.rings, strict=True):
+                if b.anc_i.k != a.anc_i.k or b.anc_o.k != a.anc_o.k:
+                    b.anc_i, b.anc_o = a.anc_i.copy(), a.anc_o.copy()
+                b.base = None
+        return redo
+
+    def _point(self, th: Thermal, x, ka: float, kb: float, symmetric: bool) -> PointState:
+        """The step's :class:`~.pair_state.PointState` from the balls' last evaluation:
+        torques [N·m] summed with the balls' weights, forces [N], the pair's stiffness [N/m],
+        the load-weighted contact angle of A [rad], the largest pressure [Pa], flags."""
+        c = self.c
+        ring_a, ring_b = self.rings
+        sa = _ring_sums(th, c, ring_a)
+        sb = sa if symmetric else _ring_sums(th, c, ring_b)
+        fa, fb = sa[8], sb[8]
+        hyst, spin, slide = sa[0] + sb[0], sa[1] + sb[1], sa[2] + sb[2]
+        p_max = max(sa[5], sb[5])
+        angle = sa[7] / sa[6] if sa[6] > 0.0 else th.free_contact_angle
+        flags = state_flags(self.pair, th.clearance, p_max, fa, fb)
+        return PointState.of(
+            self.pair,
+            th,
+            (hyst, spin, slide, sa[3] + sb[3], sa[4] + sb[4]),
+            (
+                0.5 * (fa + fb),
+                angle,
+                _pair_stiffness(ka, kb, c.loop_stiffness),
+                p_max,
+                fa,
+                fb,
+                x[1],
+            ),
+            (flags["overloaded"], flags["locked"], flags["unloaded"]),
+        )
+
+
+def _ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
+    """Weighted sums over one bearing's balls at their last evaluation: (hysteresis, spin,
+    sliding, inner ring, outer ring torques [N·m], largest pressure [Pa], Σ w·Q [N],
+    Σ w·Q·α [N·rad], Fa [N]) with :func:`friction.ball_torque_terms` at the race radii
+    (dm ∓ Dw·cos α)/2 and the Hertz constants from the balls' bases."""
+    dw, dm = th.ball_diameter, th.pitch_diameter
+    radii = (th.inner_groove_radius, th.outer_groove_radius)
+    hyst = spin = slide = inner = outer = p_max = qsum = qalpha = fa = 0.0
+    for b in balls:
+        q = b.load
+        if q <= 0.0:
+            continue
+        w, cos_a, sin_a = b.weight, b.cos_a, b.sin_a
+        cos0, ti, to = b.base
+        d = cos_a - cos0
+        a_i, a_o = ti[2] * (1.0 + ti[3] * d), to[2] * (1.0 + to[3] * d)
+        b_i, b_o = a_i / (ti[4] + ti[5] * d), a_o / (to[4] + to[5] * d)
+        q3 = q**_THIRD
+        h_i, h_o, sl_i, sl_o, sp_i, sp_o = ball_torque_terms(
+            q,
+            (a_i * q3, b_i * q3, ti[6] + ti[7] * d),
+            (a_o * q3, b_o * q3, to[6] + to[7] * d),
+            0.5 * (dm - dw * cos_a),
+            0.5 * (dm + dw * cos_a),
+            abs(sin_a),
+            dw,
+            radii,
+            c.coefficients,
+            c.solid,
+            c.sliding,
+        )
+        hyst += w * (h_i + h_o)
+        spin += w * (sp_i + sp_o)
+        slide += w * (sl_i + sl_o)
+        inner += w * (h_i + sl_i + sp_i)
+        outer += w * (h_o + sl_o + sp_o)
+        p_max = max(p_max, 1.5 * q3 / (_PI * min(a_i * b_i, a_o * b_o)))
+        qsum += w * q
+        qalpha += w * q * _atan2(sin_a, cos_a)
+        fa += w * q * sin_a
+    return hyst, spin, slide, inner, outer, p_max, qsum, qalpha, fa
 
 
 def _pair_stiffness(ka: float, kb: float, k: float) -> float:
     """:func:`preload.pair_axial_stiffness` on floats [N/m]."""
-    return ka + kb if k == math.inf else ka + kb - (ka - kb) ** 2 / (4.0 * k + ka + kb)
-
-
-def axial_state_of(pair, c: PairConstants, th: Thermal, sol: AxialSolution) -> LoadState:
-    """The :class:`~.pair_state.LoadState` (floats) of an axial solution: forces [N], torques
-    [N·m] of Z balls per bearing, stiffness [N/m], contact angle [rad], pressure [Pa], flags."""
-    z = c.n_balls
-    sums = [0.0] * 5
-    p_max = 0.0
-    for pt in (sol.a, sol.b):
-        if pt.load > 0.0:
-            ci, co = Contact(pt.inner), Contact(pt.outer)
-            t = _ball_torques(c, th, pt.load, pt.cos_a, pt.sin_a, ci, co)
-            sums = [s + z * v for s, v in zip(sums, t, strict=True)]
-            p_max = max(p_max, ci.max_pressure(pt.load), co.max_pressure(pt.load))
-    fa, fb = sol.a.force, sol.b.force
-    angle = _atan2(sol.a.sin_a, sol.a.cos_a) if sol.a.load > 0.0 else th.free_contact_angle
-    return LoadState(
-        force_a=fa,
-        force_b=fb,
-        preload=0.5 * (fa + fb),
-        contact_angle=angle,
-        axial_stiffness=_pair_stiffness(sol.a.stiffness, sol.b.stiffness, c.loop_stiffness),
-        max_contact_pressure=p_max,
-        **state_flags(pair, th.clearance, p_max, fa, fb),
-        torques=BallSetTorques(*sums),
-        axial_displacement=sol.z,
-        offset_a=sol.p + sol.z,
-        offset_b=sol.p - sol.z,
-    )
-
-
-def radial_state_of(pair, solver: PairSolver, th: Thermal, sol: RadialSolution) -> LoadState:
-    """The :class:`~.pair_state.LoadState` (floats) of a radial solution: ball sums weighted
-    over half the ring."""
-    c, w = solver.c, solver.weights
-    sums = [0.0] * 5
-    p_max = 0.0
-    for ring in (sol.a, sol.b):
-        for wj, (q, cos_a, sin_a, ti, to) in zip(w, ring.balls, strict=True):
-            if q > 0.0:
-                ci, co = Contact(ti), Contact(to)
-                t = _ball_torques(c, th, q, cos_a, sin_a, ci, co)
-                sums = [s + wj * v for s, v in zip(sums, t, strict=True)]
-                p_max = max(p_max, ci.max_pressure(q), co.max_pressure(q))
-    fa, fb = sol.a.axial_force, sol.b.axial_force
-    qsum = qalpha = 0.0
-    for wj, (q, cos_a, sin_a, _, _) in zip(w, sol.a.balls, strict=True):
-        qsum += wj * q
-        qalpha += wj * q * _atan2(sin_a, cos_a)
-    angle = qalpha / qsum if qsum > 0.0 else th.free_contact_angle
-    p, z, da, db = sol.x
-    return LoadState(
-        force_a=fa,
-        force_b=fb,
-        preload=0.5 * (fa + fb),
-        contact_angle=angle,
-        axial_stiffness=_pair_stiffness(
-            sol.a.axial_stiffness, sol.b.axial_stiffness, c.loop_stiffness
-        ),
-        max_contact_pressure=p_max,
-        **state_flags(pair, th.clearance, p_max, fa, fb),
-        torques=BallSetTorques(*sums),
-        axial_displacement=z,
-        offset_a=p + z,
-        offset_b=p - z,
-        radial_a=da,
-        radial_b=db,
-    )
+    return ka + kb if k == _INF else ka + kb - (ka - kb) ** 2 / (4.0 * k + ka + kb)
