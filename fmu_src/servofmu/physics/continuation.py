@@ -152,10 +152,22 @@ class PairConstants:
         self.housing_outer_diameter = float(fit.housing_outer_diameter)
         self.shaft_bore = float(fit.shaft_bore)
         self.coupled = bool(pair.thermal_coupling)
-        # loop closure C = 2·h(T0) + s − Σ σ·L·α·(T_part − T0)
-        self.loop_terms = tuple(
-            (ROLES[mm.role] * mm.length * mm.material.expansion, mm.part) for mm in loop.members
-        )
+        # the Lamé terms of fits.mounted_geometry whose diameters grow together (ring with its
+        # groove): ring compliances per diameter, and the groove's change per unit pressure
+        od, og, bo, ig = self.outer_diameter, self.outer_groove, self.bore, self.inner_groove
+        e_r, nu_r = self.e_ring, self.nu_ring
+        self.seat_outer = od - self.outer_interference  # housing bore at T0
+        self.seat_inner = bo + self.inner_interference  # shaft seat at T0
+        self.outer_ring_compliance = (_ratio(og, od) - nu_r) / e_r
+        self.inner_ring_compliance = (_ratio(bo, ig) + nu_r) / e_r
+        self.outer_groove_per_pressure = 2.0 * od * od * og / (e_r * (od * od - og * og))
+        self.inner_groove_per_pressure = 2.0 * bo * bo * ig / (e_r * (ig * ig - bo * bo))
+        # loop closure C = 2·h(T0) + s − Σ σ·L·α·(T_part − T0), summed by part
+        terms = [(ROLES[mm.role] * mm.length * mm.material.expansion, mm.part) for mm in loop.members]
+        self.loop_terms = tuple(terms)
+        self.closure_housing = sum(k for k, part in terms if part == "housing")
+        self.closure_shaft = sum(k for k, part in terms if part == "shaft")
+        self.closure_rings = sum(k for k, part in terms if part not in ("housing", "shaft"))
         self.closure0 = 2.0 * float(assembly_geometry(pair).first_contact_offset) + float(
             effective_shim(pair)
         )
@@ -170,35 +182,35 @@ class PairConstants:
 
 
 class Thermal:
-    """Thermal state of one step, as floats (the fields of :class:`~.bearing.ThermalState`
-    that the outputs read, plus the race geometry of :class:`~.geometry.RaceGeometry`)."""
+    """Thermal state of one step, as floats: the fields of :class:`~.bearing.ThermalState`
+    that the outputs read, and the race geometry of :class:`~.geometry.RaceGeometry` that the
+    contacts need (γ scale Dw/dm, 1/f = Dw/r of each groove)."""
 
     __slots__ = (
         "ball_diameter",
         "clearance",
         "closure",
         "curvature_distance",
-        "first_contact_offset",
-        "free_contact_angle",
         "gamma_scale",
-        "inner_curvature",
         "inner_fit_pressure",
         "inner_groove_radius",
         "inner_interference",
-        "inner_race_diameter",
         "inv_f_inner",
         "inv_f_outer",
         "kinematic_viscosity",
-        "loop_stiffness",
-        "outer_curvature",
         "outer_fit_pressure",
         "outer_groove_radius",
         "outer_interference",
-        "outer_race_diameter",
         "pitch_diameter",
         "radial_centre_distance",
         "temperatures",
     )
+
+    @property
+    def free_contact_angle(self) -> float:
+        """Free contact angle at the operating clearance [rad] (:class:`RaceGeometry`)."""
+        a, pd = self.curvature_distance, self.clearance
+        return math.acos(min(max(1.0 - max(pd, 0.0) / (2.0 * a), -1.0), 1.0))
 
 
 def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -> Thermal:
@@ -216,59 +228,44 @@ def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -
     t_b = 0.5 * (t_o + t_i)
     grow_o = 1.0 + c.alpha_ring * (t_o - t0)
     grow_i = 1.0 + c.alpha_ring * (t_i - t0)
-    grow_b = 1.0 + c.alpha_ball * (t_b - t0)
     grow_h = 1.0 + c.alpha_housing * (t_h - t0)
     grow_s = 1.0 + c.alpha_shaft * (t_s - t0)
     d_ring_o = c.outer_diameter * grow_o
-    d_groove_o = c.outer_groove * grow_o
     d_ring_i = c.bore * grow_i
+    d_groove_o = c.outer_groove * grow_o
     d_groove_i = c.inner_groove * grow_i
-    delta_o = d_ring_o - (c.outer_diameter - c.outer_interference) * grow_h
-    delta_i = (c.bore + c.inner_interference) * grow_s - d_ring_i
+    delta_o = d_ring_o - c.seat_outer * grow_h
+    delta_i = c.seat_inner * grow_s - d_ring_i
     th = Thermal()
     if c.coupled:
-        e_r, nu_r = c.e_ring, c.nu_ring
         d_h = c.housing_outer_diameter * grow_h
         d_sb = c.shaft_bore * grow_s
-        k_in = d_ring_o / e_r * (_ratio(d_groove_o, d_ring_o) - nu_r)
-        k_out = d_ring_o / c.e_housing * (_ratio(d_ring_o, d_h) + c.nu_housing)
-        p_o = max(delta_o, 0.0) / (k_in + k_out)
-        k_in = d_ring_i / c.e_shaft * (_ratio(d_sb, d_ring_i) - c.nu_shaft)
-        k_out = d_ring_i / e_r * (_ratio(d_ring_i, d_groove_i) + nu_r)
-        p_i = max(delta_i, 0.0) / (k_in + k_out)
-        d_groove_o = d_groove_o + (
-            -2.0 * p_o * d_ring_o**2 * d_groove_o / (e_r * (d_ring_o**2 - d_groove_o**2))
-        )
-        d_groove_i = d_groove_i + (
-            2.0 * p_i * d_ring_i**2 * d_groove_i / (e_r * (d_groove_i**2 - d_ring_i**2))
-        )
+        k_out = (_ratio(d_ring_o, d_h) + c.nu_housing) / c.e_housing
+        p_o = max(delta_o, 0.0) / (d_ring_o * (c.outer_ring_compliance + k_out))
+        k_in = (_ratio(d_sb, d_ring_i) - c.nu_shaft) / c.e_shaft
+        p_i = max(delta_i, 0.0) / (d_ring_i * (k_in + c.inner_ring_compliance))
+        d_groove_o = d_groove_o - p_o * grow_o * c.outer_groove_per_pressure
+        d_groove_i = d_groove_i + p_i * grow_i * c.inner_groove_per_pressure
     else:
         p_o = p_i = 0.0
-    dw = c.ball_diameter * grow_b
+    dw = c.ball_diameter * (1.0 + c.alpha_ball * (t_b - t0))
     r_i = c.inner_curvature * c.ball_diameter * grow_i
     r_o = c.outer_curvature * c.ball_diameter * grow_o
     pd = d_groove_o - d_groove_i - 2.0 * dw
     a = r_i + r_o - dw
+    dm = 0.5 * (d_groove_i + d_groove_o)
     th.temperatures = temps
     th.ball_diameter = dw
-    th.pitch_diameter = 0.5 * (d_groove_i + d_groove_o)
-    th.inner_race_diameter, th.outer_race_diameter = d_groove_i, d_groove_o
+    th.pitch_diameter = dm
     th.inner_groove_radius, th.outer_groove_radius = r_i, r_o
-    th.inner_curvature, th.outer_curvature = r_i / dw, r_o / dw
     th.inv_f_inner, th.inv_f_outer = dw / r_i, dw / r_o
-    th.gamma_scale = dw / th.pitch_diameter
+    th.gamma_scale = dw / dm
     th.clearance = pd
     th.curvature_distance = a
     th.radial_centre_distance = a - 0.5 * pd
-    pd_c = min(max(pd, 0.0), 2.0 * a)
-    th.first_contact_offset = _sqrt(max(a * a - (a - 0.5 * pd_c) ** 2, 0.0))
-    th.free_contact_angle = math.acos(min(max(1.0 - max(pd, 0.0) / (2.0 * a), -1.0), 1.0))
-    growth = 0.0
-    for coef, part in c.loop_terms:
-        t_part = t_h if part == "housing" else t_s if part == "shaft" else t_b
-        growth = growth + coef * (t_part - t0)
-    th.closure = c.closure0 - growth
-    th.loop_stiffness = c.loop_stiffness
+    th.closure = c.closure0 - (
+        c.closure_housing * (t_h - t0) + c.closure_shaft * (t_s - t0) + c.closure_rings * (t_b - t0)
+    )
     if c.walther is None:
         th.kinematic_viscosity = 0.0
     else:
@@ -514,14 +511,13 @@ def newton_step(jac: tuple, res: tuple, k_loop: float, radial: bool):
 
 
 def _parallel(d1, d0) -> float:
-    """θ with d1 ≈ θ·d0 when the vectors d1 and d0 are parallel (cosine above 1 − 1e-6) and
-    point the same way; else 0."""
-    dot = n0 = n1 = 0.0
-    for a, b in zip(d1, d0, strict=True):
-        dot += a * b
-        n0 += b * b
-        n1 += a * a
-    if dot <= 0.0 or dot * dot < (1.0 - 1e-6) * n0 * n1:
+    """θ with d1 ≈ θ·d0 for the 4-vectors d1 and d0 when they are parallel (cosine above
+    1 − 1e-6) and point the same way; else 0."""
+    a0, a1, a2, a3 = d1
+    b0, b1, b2, b3 = d0
+    dot = a0 * b0 + a1 * b1 + a2 * b2 + a3 * b3
+    n0 = b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3
+    if dot <= 0.0 or dot * dot < (1.0 - 1e-6) * n0 * (a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3):
         return 0.0
     return dot / n0
 
@@ -674,8 +670,8 @@ class PairSolver:
             if sol is None:
                 return None
             x, ka, kb, jac = sol
-            point = self._point(th, x, ka, kb, axial_load == 0.0 and mode == "axial")
-            if not self._renew_anchors(axial_load == 0.0 and mode == "axial"):
+            point, redo = self._point(th, x, ka, kb, axial_load == 0.0 and mode == "axial")
+            if not redo:
                 self._advance(x, inputs, jac)
                 return point
         return None
@@ -693,28 +689,41 @@ class PairSolver:
         """Start of a step at ``inputs``: the last solution moved by the tangent of the load
         change (the last Jacobian) and by the secant of the temperature change (the last step's
         change of x less its load part, when the temperatures move on in the same direction)."""
-        x = self.x
-        if self.jacobian is not None:
-            dx = self._load_step(self.jacobian, inputs, self.inputs)
+        x, u = self.x, self.inputs
+        p, z, da, db = x
+        moved = False
+        if self.jacobian is not None and (inputs[4] != u[4] or inputs[5] != u[5]):
+            dx = self._load_step(self.jacobian, inputs, u)
             if dx is not None:
-                x = tuple(a + b for a, b in zip(x, dx, strict=True))
-        if self.secant is not None:
-            d_t = tuple(a - b for a, b in zip(inputs[:4], self.inputs[:4], strict=True))
+                p, z, da, db = p + dx[0], z + dx[1], da + dx[2], db + dx[3]
+                moved = True
+        if self.secant is not None and inputs[:4] != u[:4]:
+            d_t = (inputs[0] - u[0], inputs[1] - u[1], inputs[2] - u[2], inputs[3] - u[3])
             theta = _parallel(d_t, self.secant[1])
             if theta:
-                x = tuple(a + theta * b for a, b in zip(x, self.secant[0], strict=True))
-        return x
+                s0, s1, s2, s3 = self.secant[0]
+                p, z, da, db = p + theta * s0, z + theta * s1, da + theta * s2, db + theta * s3
+                moved = True
+        return (p, z, da, db) if moved else x
 
     def _advance(self, x, inputs, jac) -> None:
         """Make ``x`` at ``inputs`` (Jacobian ``jac``) the last solution, and keep the secant of
         the temperature change from the solution before."""
-        d_t = tuple(a - b for a, b in zip(inputs[:4], self.inputs[:4], strict=True))
+        u = self.inputs
         self.secant = None
-        if any(d_t):
-            dx = self._load_step(jac, inputs, self.inputs)
+        if inputs[:4] != u[:4]:
+            dx = self._load_step(jac, inputs, u)
             if dx is not None:
-                d_x = tuple(a - b - c for a, b, c in zip(x, self.x, dx, strict=True))
-                self.secant = (d_x, d_t)
+                x0 = self.x
+                self.secant = (
+                    (
+                        x[0] - x0[0] - dx[0],
+                        x[1] - x0[1] - dx[1],
+                        x[2] - x0[2] - dx[2],
+                        x[3] - x0[3] - dx[3],
+                    ),
+                    (inputs[0] - u[0], inputs[1] - u[1], inputs[2] - u[2], inputs[3] - u[3]),
+                )
         self.x, self.inputs, self.jacobian = x, inputs, jac
 
     def _newton(self, th: Thermal, f_ext: float, f_r: float, x0):
@@ -785,55 +794,32 @@ class PairSolver:
         s = dist + delta
         return (_sqrt(s * s - a * a) - a2_0) / cp
 
-    def _renew_anchors(self, symmetric: bool) -> bool:
-        """Renew every anchor whose contact's ellipticity (at the balls' last evaluation) moved
-        more than :data:`ANCHOR_DRIFT` from it; True when one moved more than
-        :data:`ANCHOR_REDO` (the step is then solved again). B mirrors A when symmetric."""
-        redo = False
-        rings = self.rings[:1] if symmetric else self.rings
-        for ring in rings:
-            for b in ring:
-                if b.load <= 0.0:
-                    continue
-                cos0, ti, to = b.base
-                d = b.cos_a - cos0
-                renewed = False
-                for anc, t in ((b.anc_i, ti), (b.anc_o, to)):
-                    k = t[4] + t[5] * d
-                    drift = abs(k - anc.k)
-                    if drift > ANCHOR_DRIFT * anc.k:
-                        redo |= drift > ANCHOR_REDO * anc.k
-                        anc.set(k)
-                        renewed = True
-                if renewed:
-                    b.base = None
-        if symmetric:
-            for a, b in zip(*self.rings, strict=True):
-                if b.anc_i.k != a.anc_i.k or b.anc_o.k != a.anc_o.k:
-                    b.anc_i, b.anc_o = a.anc_i.copy(), a.anc_o.copy()
-                b.base = None
-        return redo
-
-    def _point(self, th: Thermal, x, ka: float, kb: float, symmetric: bool) -> PointState:
-        """The step's :class:`~.pair_state.PointState` from the balls' last evaluation:
-        torques [N·m] summed with the balls' weights, forces [N], the pair's stiffness [N/m],
-        the load-weighted contact angle of A [rad], the largest pressure [Pa], flags."""
+    def _point(self, th: Thermal, x, ka: float, kb: float, symmetric: bool):
+        """The step's :class:`~.pair_state.PointState` from the balls' last evaluation
+        (:func:`ring_sums`): torques [N·m], forces [N], the pair's stiffness [N/m], the
+        load-weighted contact angle of A [rad], the largest pressure [Pa], flags; and whether
+        an anchor moved so far that the step must be solved again. B mirrors A when
+        ``symmetric`` (its anchors follow A's)."""
         c = self.c
         ring_a, ring_b = self.rings
-        sa = _ring_sums(th, c, ring_a)
-        sb = sa if symmetric else _ring_sums(th, c, ring_b)
+        sa = ring_sums(th, c, ring_a)
+        if symmetric:
+            sb = sa
+            for a, b in zip(ring_a, ring_b, strict=True):
+                if b.anc_i.k != a.anc_i.k or b.anc_o.k != a.anc_o.k:
+                    b.anc_i, b.anc_o, b.base = a.anc_i.copy(), a.anc_o.copy(), None
+        else:
+            sb = ring_sums(th, c, ring_b)
         fa, fb = sa[8], sb[8]
-        hyst, spin, slide = sa[0] + sb[0], sa[1] + sb[1], sa[2] + sb[2]
         p_max = max(sa[5], sb[5])
-        angle = sa[7] / sa[6] if sa[6] > 0.0 else th.free_contact_angle
         flags = state_flags(self.pair, th.clearance, p_max, fa, fb)
-        return PointState.of(
+        point = PointState.of(
             self.pair,
             th,
-            (hyst, spin, slide, sa[3] + sb[3], sa[4] + sb[4]),
+            (sa[0] + sb[0], sa[1] + sb[1], sa[2] + sb[2], sa[3] + sb[3], sa[4] + sb[4]),
             (
                 0.5 * (fa + fb),
-                angle,
+                sa[7] / sa[6] if sa[6] > 0.0 else th.free_contact_angle,
                 _pair_stiffness(ka, kb, c.loop_stiffness),
                 p_max,
                 fa,
@@ -842,16 +828,23 @@ class PairSolver:
             ),
             (flags["overloaded"], flags["locked"], flags["unloaded"]),
         )
+        return point, sa[9] or sb[9]
 
 
-def _ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
+def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
     """Weighted sums over one bearing's balls at their last evaluation: (hysteresis, spin,
     sliding, inner ring, outer ring torques [N·m], largest pressure [Pa], Σ w·Q [N],
-    Σ w·Q·α [N·rad], Fa [N]) with :func:`friction.ball_torque_terms` at the race radii
-    (dm ∓ Dw·cos α)/2 and the Hertz constants from the balls' bases."""
+    Σ w·Q·α [N·rad], Fa [N], redo) with :func:`friction.ball_torque_terms` at the race radii
+    (dm ∓ Dw·cos α)/2 and the Hertz constants from the balls' bases.
+
+    Every anchor whose contact's ellipticity moved more than :data:`ANCHOR_DRIFT` from it is
+    renewed at the current k (for the next step; the ball's base is dropped); ``redo`` is True
+    when one moved more than :data:`ANCHOR_REDO` (the step is then solved again)."""
     dw, dm = th.ball_diameter, th.pitch_diameter
     radii = (th.inner_groove_radius, th.outer_groove_radius)
+    coefficients, solid, sliding = c.coefficients, c.solid, c.sliding
     hyst = spin = slide = inner = outer = p_max = qsum = qalpha = fa = 0.0
+    redo = False
     for b in balls:
         q = b.load
         if q <= 0.0:
@@ -860,7 +853,8 @@ def _ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
         cos0, ti, to = b.base
         d = cos_a - cos0
         a_i, a_o = ti[2] * (1.0 + ti[3] * d), to[2] * (1.0 + to[3] * d)
-        b_i, b_o = a_i / (ti[4] + ti[5] * d), a_o / (to[4] + to[5] * d)
+        k_i, k_o = ti[4] + ti[5] * d, to[4] + to[5] * d
+        b_i, b_o = a_i / k_i, a_o / k_o
         q3 = q**_THIRD
         h_i, h_o, sl_i, sl_o, sp_i, sp_o = ball_torque_terms(
             q,
@@ -871,20 +865,30 @@ def _ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
             abs(sin_a),
             dw,
             radii,
-            c.coefficients,
-            c.solid,
-            c.sliding,
+            coefficients,
+            solid,
+            sliding,
         )
         hyst += w * (h_i + h_o)
         spin += w * (sp_i + sp_o)
         slide += w * (sl_i + sl_o)
         inner += w * (h_i + sl_i + sp_i)
         outer += w * (h_o + sl_o + sp_o)
-        p_max = max(p_max, 1.5 * q3 / (_PI * min(a_i * b_i, a_o * b_o)))
+        p = 1.5 * q3 / (_PI * min(a_i * b_i, a_o * b_o))
+        if p > p_max:
+            p_max = p
         qsum += w * q
         qalpha += w * q * _atan2(sin_a, cos_a)
         fa += w * q * sin_a
-    return hyst, spin, slide, inner, outer, p_max, qsum, qalpha, fa
+        anc_i, anc_o = b.anc_i, b.anc_o
+        drift_i, drift_o = abs(k_i - anc_i.k), abs(k_o - anc_o.k)
+        if drift_i > ANCHOR_DRIFT * anc_i.k or drift_o > ANCHOR_DRIFT * anc_o.k:
+            for anc, k, drift in ((anc_i, k_i, drift_i), (anc_o, k_o, drift_o)):
+                if drift > ANCHOR_DRIFT * anc.k:
+                    redo |= drift > ANCHOR_REDO * anc.k
+                    anc.set(k)
+            b.base = None
+    return hyst, spin, slide, inner, outer, p_max, qsum, qalpha, fa, redo
 
 
 def _pair_stiffness(ka: float, kb: float, k: float) -> float:
