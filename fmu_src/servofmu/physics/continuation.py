@@ -58,7 +58,7 @@ import math
 
 from scipy.special import ellipe, ellipk
 
-from .friction import ball_torque_terms
+from .friction import _heathcote, _hysteresis, _spin
 from .hertz import ellipticity
 from .materials import reduced_compliance
 from .pair import assembly_geometry, effective_shim, loop_stiffness
@@ -279,9 +279,11 @@ def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -
 class Anchor:
     """Exact Hertz data of one contact at its anchor ellipticity k0 (see module docstring):
     K, E and their first and second derivatives in m, F(k0) and its first and second
-    derivatives in k (``inv_f1`` = 1/F', ``f2_f1`` = F''/F')."""
+    derivatives in k (``inv_f1`` = 1/F', ``f2_f1`` = F''/F'); ``data`` holds them as one tuple
+    (k, m, K, E, F, 1/F', F''/F', K', K'', E', E'') for the per-step arithmetic."""
 
     __slots__ = (
+        "data",
         "e1",
         "e2",
         "e_int",
@@ -340,6 +342,7 @@ class Anchor:
         self.f2 = (nkk * d - n * dkk) / (d * d) - 2.0 * dk * f1 / d
         self.inv_f1, self.f2_f1 = 1.0 / f1, self.f2 / f1
         self.k1, self.k2, self.e1, self.e2 = k1, k2, e1, e2
+        self.data = (k, m, ki, ei, self.f, self.inv_f1, self.f2_f1, k1, k2, e1, e2)
 
 
 def contact_terms(th: Thermal, c: PairConstants, cos_a: float, inner: bool, anc: Anchor):
@@ -366,21 +369,22 @@ def contact_terms(th: Thermal, c: PairConstants, cos_a: float, inner: bool, anc:
         rt = -2.0 * g / (1.0 + g)
         drt = -2.0 * gs / ((1.0 + g) * (1.0 + g))
     denom = 4.0 - inv_f + rt  # Σρ·Dw
-    q = ((inv_f + rt) / denom - anc.f) * anc.inv_f1  # Δk to first order
-    f2q = anc.f2_f1 * q
-    k = anc.k + q * (1.0 - 0.5 * f2q)  # Δk = ΔF/F' − F''·ΔF²/(2F'³)
-    k2 = k * k
-    dm = (1.0 - 1.0 / k2) - anc.m
-    k1, e1 = anc.k1 + anc.k2 * dm, anc.e1 + anc.e2 * dm  # dK/dm, dE/dm
-    ki = anc.k_int + (anc.k1 + 0.5 * anc.k2 * dm) * dm
-    ei = anc.e_int + (anc.e1 + 0.5 * anc.e2 * dm) * dm
-    x = _cbrt(denom / (th.ball_diameter * k2 * ei))
+    k0, m0, ki0, ei0, f0, inv_f1, f2_f1, k1, k2, e1, e2 = anc.data
+    q = ((inv_f + rt) / denom - f0) * inv_f1  # Δk to first order
+    f2q = f2_f1 * q
+    k = k0 + q * (1.0 - 0.5 * f2q)  # Δk = ΔF/F' − F''·ΔF²/(2F'³)
+    k2_ = k * k
+    dm = (1.0 - 1.0 / k2_) - m0
+    ki = ki0 + (k1 + 0.5 * k2 * dm) * dm
+    ei = ei0 + (e1 + 0.5 * e2 * dm) * dm
+    dki, dei = k1 + k2 * dm, e1 + e2 * dm  # dK/dm, dE/dm
+    x = _cbrt(denom / (th.ball_diameter * k2_ * ei))
     # dF/d cos α = (4 − 2/f)/denom²·drt; dk = dF·(1 − F''ΔF/F'²)/F'; dm = 2·dk/k³
-    dk = (4.0 - 2.0 * inv_f) / (denom * denom) * drt * (1.0 - f2q) * anc.inv_f1
-    dm_c = 2.0 * dk / (k2 * k)
-    de = e1 * dm_c
+    dk = (4.0 - 2.0 * inv_f) / (denom * denom) * drt * (1.0 - f2q) * inv_f1
+    dm_c = 2.0 * dk / (k2_ * k)
+    de = dei * dm_c
     dln_x = (drt / denom - 2.0 * dk / k - de / ei) * _THIRD
-    return (c.c_delta_coef * ki * x, k1 * dm_c / ki + dln_x, c.a_coef / x, -dln_x, k, dk, ei, de)
+    return (c.c_delta_coef * ki * x, dki * dm_c / ki + dln_x, c.a_coef / x, -dln_x, k, dk, ei, de)
 
 
 def exact_contact_k(th: Thermal, cos_a: float, inner: bool) -> float:
@@ -395,8 +399,8 @@ def exact_contact_k(th: Thermal, cos_a: float, inner: bool) -> float:
 class Ball:
     """One ball position of a bearing: azimuth cosine cos ψ and weight (Z for the one ball of
     pure axial load; 1 or 2 over half the ring under a radial load), the anchors of its inner
-    and outer contacts, its base (cos α0, inner and outer :func:`contact_terms`) or None, and
-    the state at the last evaluation: load Q [N], cos α, sin α."""
+    and outer contacts, its base (:func:`ball_base`) or None, and the state at the last
+    evaluation: load Q [N], cos α, sin α."""
 
     __slots__ = ("anc_i", "anc_o", "base", "cos_a", "cos_psi", "load", "sin_a", "weight")
 
@@ -404,6 +408,15 @@ class Ball:
         self.cos_psi, self.weight, self.anc_i, self.anc_o = cos_psi, weight, anc_i, anc_o
         self.base = None
         self.load = self.cos_a = self.sin_a = 0.0
+
+
+def ball_base(th: Thermal, c: PairConstants, cos_a: float, b: Ball) -> tuple:
+    """The base of ball ``b`` at the contact angle of cosine ``cos_a``: (cos α0, c_i, dc_i/d cos α,
+    c_o, dc_o/d cos α, inner terms, outer terms) with c = c_δ [m/N^(2/3)] and the terms of
+    :func:`contact_terms`; within :data:`LINEAR_SPAN` the constants are c + dc·Δcos α."""
+    ti = contact_terms(th, c, cos_a, True, b.anc_i)
+    to = contact_terms(th, c, cos_a, False, b.anc_o)
+    return (cos_a, ti[0], ti[0] * ti[1], to[0], to[0] * to[1], ti, to)
 
 
 def ring_point(th: Thermal, c: PairConstants, a: float, dr: float, balls) -> tuple:
@@ -434,14 +447,9 @@ def ring_point(th: Thermal, c: PairConstants, a: float, dr: float, balls) -> tup
             d_min = delta
         base = b.base
         if base is None or abs(cos_a - base[0]) > LINEAR_SPAN:
-            base = b.base = (
-                cos_a,
-                contact_terms(th, c, cos_a, True, b.anc_i),
-                contact_terms(th, c, cos_a, False, b.anc_o),
-            )
+            base = b.base = ball_base(th, c, cos_a, b)
         d = cos_a - base[0]
-        ti, to = base[1], base[2]
-        ci, co = ti[0] * (1.0 + ti[1] * d), to[0] * (1.0 + to[1] * d)
+        ci, co = base[1] + base[2] * d, base[3] + base[4] * d
         csum = ci + co
         k_n = 1.0 / (csum * _sqrt(csum))
         root = _sqrt(delta)
@@ -450,7 +458,7 @@ def ring_point(th: Thermal, c: PairConstants, a: float, dr: float, balls) -> tup
         b.load = q
         # the share of K_n(α) in dQ/dA1 (·cos α) and dQ/dA2 (·−sin α): dα = (cos α·dA1 −
         # sin α·dA2)/s, d ln c/dα = −sin α·d ln c/d cos α
-        g = knr * (ci * ti[1] + co * to[1]) / csum * sin_a * delta / s
+        g = knr * (base[2] + base[4]) / csum * sin_a * delta / s
         dq1 = knr * sin_a + g * cos_a
         dq2 = knr * cos_a - g * sin_a
         qs = q / s
@@ -590,18 +598,11 @@ class PairSolver:
         for ring, bases in zip(self.rings, state.get("base") or [[], []], strict=False):
             for b, cos0 in zip(ring, bases, strict=False):
                 if cos0 is not None and th is not None:
-                    b.base = self._base(th, float(cos0), b)
+                    b.base = ball_base(th, self.c, float(cos0), b)
         self.inputs = tuple(float(v) for v in state["inputs"])
         jac, sec = state.get("jacobian"), state.get("secant")
         self.jacobian = None if jac is None else tuple(float(v) for v in jac)
         self.secant = None if sec is None else tuple(tuple(float(v) for v in p) for p in sec)
-
-    def _base(self, th: Thermal, cos_a: float, b: Ball) -> tuple:
-        return (
-            cos_a,
-            contact_terms(th, self.c, cos_a, True, b.anc_i),
-            contact_terms(th, self.c, cos_a, False, b.anc_o),
-        )
 
     def seed(self, th: Thermal, inputs, x, ball_cosines=None) -> None:
         """Start from an exactly solved state: ``x`` = (p, z) (axial) or (p, z, δr_A, δr_B)
@@ -834,15 +835,20 @@ class PairSolver:
 def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
     """Weighted sums over one bearing's balls at their last evaluation: (hysteresis, spin,
     sliding, inner ring, outer ring torques [N·m], largest pressure [Pa], Σ w·Q [N],
-    Σ w·Q·α [N·rad], Fa [N], redo) with :func:`friction.ball_torque_terms` at the race radii
-    (dm ∓ Dw·cos α)/2 and the Hertz constants from the balls' bases.
+    Σ w·Q·α [N·rad], Fa [N], redo), with the Hertz constants from the balls' bases.
+
+    The torques are those of :func:`friction.ball_torque_terms` (Yu 2017 eq 1–3, 5–7; Ning)
+    at the race radii (dm ∓ Dw·cos α)/2: each term is a product of powers of the load, the
+    semi-axes and E(e), so its coefficient is the friction function at unit arguments
+    (:func:`torque_coefficients`) and a ball costs a few products (a call of
+    ball_torque_terms per ball cost 0.9 µs; tests/test_continuation.py checks the two agree).
 
     Every anchor whose contact's ellipticity moved more than :data:`ANCHOR_DRIFT` from it is
     renewed at the current k (for the next step; the ball's base is dropped); ``redo`` is True
     when one moved more than :data:`ANCHOR_REDO` (the step is then solved again)."""
     dw, dm = th.ball_diameter, th.pitch_diameter
-    radii = (th.inner_groove_radius, th.outer_groove_radius)
-    coefficients, solid, sliding = c.coefficients, c.solid, c.sliding
+    c_h, c_sl_i, c_sl_o, c_sp = torque_coefficients(th, c)
+    solid = c.solid
     hyst = spin = slide = inner = outer = p_max = qsum = qalpha = fa = 0.0
     redo = False
     for b in balls:
@@ -850,25 +856,24 @@ def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
         if q <= 0.0:
             continue
         w, cos_a, sin_a = b.weight, b.cos_a, b.sin_a
-        cos0, ti, to = b.base
-        d = cos_a - cos0
-        a_i, a_o = ti[2] * (1.0 + ti[3] * d), to[2] * (1.0 + to[3] * d)
+        base = b.base
+        ti, to = base[5], base[6]
+        d = cos_a - base[0]
+        a_i, a_o = ti[2] * (1.0 + ti[3] * d), to[2] * (1.0 + to[3] * d)  # a_coef
         k_i, k_o = ti[4] + ti[5] * d, to[4] + to[5] * d
-        b_i, b_o = a_i / k_i, a_o / k_o
+        b_i, b_o = a_i / k_i, a_o / k_o  # b_coef
         q3 = q**_THIRD
-        h_i, h_o, sl_i, sl_o, sp_i, sp_o = ball_torque_terms(
-            q,
-            (a_i * q3, b_i * q3, ti[6] + ti[7] * d),
-            (a_o * q3, b_o * q3, to[6] + to[7] * d),
-            0.5 * (dm - dw * cos_a),
-            0.5 * (dm + dw * cos_a),
-            abs(sin_a),
-            dw,
-            radii,
-            coefficients,
-            solid,
-            sliding,
-        )
+        qa_i, qa_o = q * q3 * a_i, q * q3 * a_o  # Q·a
+        r_in, r_out = 0.5 * (dm - dw * cos_a), 0.5 * (dm + dw * cos_a)
+        h_i, h_o = c_h * q * q3 * b_i * r_in, c_h * q * q3 * b_o * r_out
+        sl_i, sl_o = c_sl_i * qa_i * a_i * q3 * r_in, c_sl_o * qa_o * a_o * q3 * r_out
+        sin_abs = abs(sin_a)
+        sp_i = c_sp * qa_i * (ti[6] + ti[7] * d) * sin_abs
+        sp_o = c_sp * qa_o * (to[6] + to[7] * d) * sin_abs
+        if solid or sp_i >= sp_o:  # Ning: the inner race spins; Yu eq 7: the larger moment
+            sp_o = 0.0
+        else:
+            sp_i = 0.0
         hyst += w * (h_i + h_o)
         spin += w * (sp_i + sp_o)
         slide += w * (sl_i + sl_o)
@@ -889,6 +894,21 @@ def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
                     anc.set(k)
             b.base = None
     return hyst, spin, slide, inner, outer, p_max, qsum, qalpha, fa, redo
+
+
+def torque_coefficients(th: Thermal, c: PairConstants) -> tuple:
+    """Coefficients of one ball's torque terms at the thermal state ``th``: (hysteresis
+    3·α_r/(8·Dw) [1/m] per Q·b·r, Heathcote sliding of the inner and outer race [1/m²] per
+    Q·a²·r (0 without differential sliding), spin 3μ/8 [-] per Q·a·E(e)): the functions of
+    :mod:`.friction` at unit load, semi-axes and E(e)."""
+    dw, mu = th.ball_diameter, c.coefficients.sliding_friction
+    c_h = _hysteresis(1.0, 1.0, dw, c.coefficients.hysteresis_loss)
+    if c.sliding:
+        c_sl_i = _heathcote(1.0, 1.0, dw, th.inner_groove_radius, mu)
+        c_sl_o = _heathcote(1.0, 1.0, dw, th.outer_groove_radius, mu)
+    else:
+        c_sl_i = c_sl_o = 0.0
+    return c_h, c_sl_i, c_sl_o, _spin(1.0, 1.0, 1.0, mu)
 
 
 def _pair_stiffness(ka: float, kb: float, k: float) -> float:
