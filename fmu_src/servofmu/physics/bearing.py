@@ -182,11 +182,19 @@ class BearingModel:
         self._th = th
         return point
 
-    def _update(self, temperature, axial_load, radial_load) -> None:
-        """Solve the state at a new operating point, if it is one."""
+    def update(self, temperature, axial_load: float = 0.0, radial_load: float = 0.0) -> PointState:
+        """The state at (temperature, axial_load, radial_load) (arguments as :meth:`evaluate`):
+        solved when it is a new operating point, else the last one.
+
+        Returns
+        -------
+        PointState
+            Every output of :meth:`evaluate` that does not move with speed (torques [N·m],
+            forces [N], angle [rad], lengths [m], stiffness [N/m], pressures [Pa], flags).
+        """
         temps = _temperatures(temperature)
         if temps == self._temps and axial_load == self._axial and radial_load == self._radial:
-            return
+            return self._point
         for name, v in (("axial_load", axial_load), ("radial_load", radial_load)):
             if not math.isfinite(v):
                 raise ValueError(f"{name} = {v!r} N is outside the valid range (-inf, inf)")
@@ -194,6 +202,7 @@ class BearingModel:
         self._point = self._solve(temps, fa, fr)
         self._temps, self._axial, self._radial = temps, fa, fr
         self.steps += 1
+        return self._point
 
     def evaluate(
         self, temperature, speed: float, axial_load: float = 0.0, radial_load: float = 0.0
@@ -219,10 +228,10 @@ class BearingModel:
         >>> round(out.running_torque * 1e3, 3)  # N·mm
         1.614
         """
-        self._update(temperature, axial_load, radial_load)
+        point = self.update(temperature, axial_load, radial_load)
         if not math.isfinite(speed):
             raise ValueError(f"speed = {speed!r} rad/s is outside the valid range (-inf, inf)")
-        return self._point.outputs(self.pair, float(speed))
+        return point.outputs(self.pair, float(speed))
 
     def speed_outputs(self, speed: float) -> tuple[float, float, float, float]:
         """(friction_torque [N·m], running_torque [N·m], viscous_torque [N·m], power_loss [W])
