@@ -475,10 +475,10 @@ def ring_point(th: Thermal, c: PairConstants, a: float, dr: float, balls) -> tup
     return fa, fr, j11, j12, j21, j22, kax, d_min
 
 
-def newton_step(jac: tuple, res: tuple, k_loop: float, radial: bool):
+def newton_step(ra: tuple, rb: tuple, r1, r2, r3, r4, k_loop: float, radial: bool):
     """Newton correction (dp, dz, dδr_A, dδr_B) [m] of the pair equilibrium from the bearings'
-    Jacobians ``jac`` = (dFa/da, dFa/dδr, dFr/da, dFr/dδr of A, the same of B) [N/m] and the
-    residuals ``res`` = (r1, r2, r3, r4): r1 = F_A − F_B − F_ext, r2 = Fr_A − F_r/2,
+    :func:`ring_point` results ``ra``, ``rb`` (their Jacobians dFa/da, dFa/dδr, dFr/da,
+    dFr/dδr [N/m]) and the residuals r1 = F_A − F_B − F_ext, r2 = Fr_A − F_r/2,
     r3 = Fr_B − F_r/2 [N], r4 = 2p + (F_A + F_B)/(2k) − C [m]. The radial rows hold one bearing
     each: dδr_A = (−r2 − dFr_A/da·u)/(dFr_A/dδr) with u = dp + dz, v = dp − dz the changes of
     the offsets of A and B, which leaves
@@ -487,8 +487,8 @@ def newton_step(jac: tuple, res: tuple, k_loop: float, radial: bool):
 
     e = dFa/da − (dFa/dδr)(dFr/da)/(dFr/dδr) each bearing's axial stiffness at balanced radial
     load. A rigid loop (k = inf) fixes p. None when singular."""
-    a11, a12, a21, a22, b11, b12, b21, b22 = jac
-    r1, r2, r3, r4 = res
+    _, _, a11, a12, a21, a22, _, _ = ra
+    _, _, b11, b12, b21, b22, _, _ = rb
     if radial:
         if a22 == 0.0 or b22 == 0.0:
             return None
@@ -556,7 +556,7 @@ class PairSolver:
         self.rings = None  # the balls of bearings A and B
         self.th = None  # the thermal state the balls' bases belong to
         self.inputs = None  # inputs of the last step: (4 temperatures [K], F_ext, F_r [N])
-        self.jacobian = None  # the bearings' Jacobians at x (newton_step), or None
+        self.jacobian = None  # the bearings' ring_point results at x (newton_step), or None
         self.secant = None  # (Δx, ΔT) of the last step's temperature change, or None
 
     def _layout(self, mode: str):
@@ -574,7 +574,7 @@ class PairSolver:
             "k": [[[b.anc_i.k, b.anc_o.k] for b in ring] for ring in self.rings],
             "base": [[None if b.base is None else b.base[0] for b in ring] for ring in self.rings],
             "inputs": list(self.inputs),
-            "jacobian": None if self.jacobian is None else list(self.jacobian),
+            "jacobian": None if self.jacobian is None else [list(r) for r in self.jacobian],
             "secant": None if self.secant is None else [list(v) for v in self.secant],
         }
 
@@ -601,7 +601,7 @@ class PairSolver:
                     b.base = ball_base(th, self.c, float(cos0), b)
         self.inputs = tuple(float(v) for v in state["inputs"])
         jac, sec = state.get("jacobian"), state.get("secant")
-        self.jacobian = None if jac is None else tuple(float(v) for v in jac)
+        self.jacobian = None if jac is None else tuple(tuple(float(v) for v in r) for r in jac)
         self.secant = None if sec is None else tuple(tuple(float(v) for v in p) for p in sec)
 
     def seed(self, th: Thermal, inputs, x, ball_cosines=None) -> None:
@@ -683,8 +683,8 @@ class PairSolver:
         d_ext, d_r = inputs_new[4] - inputs_old[4], inputs_new[5] - inputs_old[5]
         if d_ext == 0.0 and d_r == 0.0:
             return (0.0, 0.0, 0.0, 0.0)
-        res = (-d_ext, -0.5 * d_r, -0.5 * d_r, 0.0)
-        return newton_step(jac, res, self.c.loop_stiffness, self.mode == "radial")
+        half = -0.5 * d_r
+        return newton_step(*jac, -d_ext, half, half, 0.0, self.c.loop_stiffness, self.mode == "radial")
 
     def _predict(self, inputs):
         """Start of a step at ``inputs``: the last solution moved by the tangent of the load
@@ -749,14 +749,10 @@ class PairSolver:
         for _ in range(MAX_ITERATIONS):
             ra = ring_point(th, c, p + z, da, ring_a)
             rb = ra if symmetric else ring_point(th, c, p - z, db, ring_b)
-            res = (
-                ra[0] - rb[0] - f_ext,
-                ra[1] - half,
-                rb[1] - half,
-                0.0 if rigid else 2.0 * p + 0.5 * (ra[0] + rb[0]) / k_loop - closure,
-            )
+            r4 = 0.0 if rigid else 2.0 * p + 0.5 * (ra[0] + rb[0]) / k_loop - closure
             if symmetric:
-                dx = (0.0 if rigid else -res[3] / (2.0 + ra[2] / k_loop), 0.0, 0.0, 0.0)
+                dp = 0.0 if rigid else -r4 / (2.0 + ra[2] / k_loop)
+                dz = dda = ddb = 0.0
             elif radial and (ra[5] == 0.0 or rb[5] == 0.0):
                 # a bearing with no ball in contact has no radial stiffness: move it radially
                 # until its ball nearest the load's direction carries about F_r/2, and go on
@@ -766,15 +762,17 @@ class PairSolver:
                     return None
                 continue
             else:
-                dx = newton_step((*ra[2:6], *rb[2:6]), res, k_loop, radial)
+                r1 = ra[0] - rb[0] - f_ext
+                dx = newton_step(ra, rb, r1, ra[1] - half, rb[1] - half, r4, k_loop, radial)
                 if dx is None:
                     return None
-            step = max(abs(dx[0]), abs(dx[1]), abs(dx[2]), abs(dx[3]))
+                dp, dz, dda, ddb = dx
+            step = max(abs(dp), abs(dz), abs(dda), abs(ddb))
             if step <= tol and (step <= _DEFLECTION_TOLERANCE * min(ra[7], rb[7]) or step <= floor):
-                return (p, z, da, db), ra[6], rb[6], (*ra[2:6], *rb[2:6])
+                return (p, z, da, db), ra[6], rb[6], (ra, rb)
             if not step < _INF:
                 return None
-            p, z, da, db = p + dx[0], z + dx[1], da + dx[2], db + dx[3]
+            p, z, da, db = p + dp, z + dz, da + dda, db + ddb
         return None
 
     def _touch(self, th: Thermal, a: float, f: float, balls) -> float | None:
