@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from scipy.special import ellipe, ellipk
 
-from servofmu.physics import continuation
+from servofmu.physics import catalog, continuation
 from servofmu.physics.bearing import (
     BearingModel,
     BearingPair,
@@ -22,6 +22,8 @@ from servofmu.physics.bearing import (
     operating_outputs,
     with_mounting,
 )
+from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
+from servofmu.physics.friction import ball_torque_terms
 from servofmu.physics.hertz import curvature_difference_of_ellipticity, ellipticity
 
 REL = 1e-9
@@ -216,3 +218,177 @@ def test_state_restore_right_after_an_exact_solve_repeats_bit_for_bit():
     b.restore(saved)
     assert b.evaluate(322.0, 0.0, 0.0, 1.0) == first
     assert b.evaluate(322.5, 0.0, 0.0, 1.0) == nxt
+
+
+def _bench_ramp(k):
+    """benchmarks/bench_fmus.py's ramp: −60 → +80 °C over 1000 steps and back [K]."""
+    phase = (k % 2000) / 1000.0
+    return 213.15 + 140.0 * (phase if phase <= 1.0 else 2.0 - phase)
+
+
+def test_radial_load_through_zero_while_bearing_b_unloads():
+    # bench_fmus.py's radial ramp at steps 2700–2724: warm (≈ 40 °C), 21 N axial lifts bearing
+    # B almost off, and the radial load passes within 2e-5 N of zero: B's balls leave contact
+    # between steps, and the solver moves B radially back into touch (no exact fallback)
+    pair = pair_from_parameters(default_parameters("yu2017_gimbal"))
+    model = BearingModel(pair)
+    for k in range(2700, 2725):
+        args = (
+            _bench_ramp(k),
+            0.2 * math.sin(1e-3 * k),
+            20.0 + 10.0 * math.sin(7e-3 * k),
+            10.0 + 10.0 * math.sin(1.1e-2 * k),
+        )
+        out = model.evaluate(*args)
+        assert_equal_outputs(out, operating_outputs(pair, *args), f"step {k}")
+    assert model.exact_steps == 1  # the first step only
+
+
+def test_radial_load_changing_sign_and_axial_load_crossing_zero():
+    pair = PAIRS["yu_yoke"]()
+    model = BearingModel(pair)
+    n = 30
+    t = np.linspace(263.15, 283.15, n)
+    fa = np.linspace(-6.0, 8.0, n)  # through zero: bearing A takes over from B
+    fr = 3.0 * np.cos(np.linspace(0.0, np.pi, n))  # +3 N → −3 N, never exactly 0
+    for i in range(n):
+        args = (float(t[i]), 0.1, float(fa[i]), float(fr[i]))
+        out = model.evaluate(*args)
+        if i % 3 == 0:
+            assert_equal_outputs(out, operating_outputs(pair, *args), f"step {i}")
+    assert model.exact_steps <= 2
+
+
+def test_state_restore_mid_radial_ramp_repeats_bit_for_bit():
+    # the restored state carries the balls' anchors and bases, the last Jacobian (load
+    # predictor) and the secant of the temperature change
+    pair = PAIRS["yu_printed"]()
+    steps = [(253.15 + 0.2 * k, 0.1, 10.0 + 0.3 * k, 5.0 + 0.2 * math.sin(k)) for k in range(40)]
+    a = BearingModel(pair)
+    for args in steps[:20]:
+        a.evaluate(*args)
+    saved = json.loads(json.dumps(a.state()))
+    rest_a = [a.evaluate(*args) for args in steps[20:]]
+    b = BearingModel(pair)
+    b.restore(saved)
+    rest_b = [b.evaluate(*args) for args in steps[20:]]
+    assert rest_a == rest_b
+    assert b.exact_steps == 0
+
+
+@pytest.mark.parametrize("key", ["71803", "6000", "7204C", "71807C", "61804"])
+def test_hertz_constants_are_linear_in_cos_alpha_within_the_span(key):
+    # c_δ, a_coef, k and E from a ball's base at cos α0, moved by LINEAR_SPAN, against
+    # contact_terms anchored exactly at the new angle: relative error below 1e-12 (measured
+    # 2.2e-13 at most, for k of the deep-groove 6000)
+    c = continuation.PairConstants(PAIRS["yu_printed"]())  # steel on steel
+    geom = catalog.bearing(key).race_geometry()
+    th = continuation.Thermal()  # the race geometry the contacts read, as at assembly
+    th.ball_diameter = float(geom.ball_diameter)
+    th.gamma_scale = th.ball_diameter / float(geom.pitch_diameter)
+    th.inv_f_inner, th.inv_f_outer = 1.0 / geom.inner_curvature, 1.0 / geom.outer_curvature
+    for alpha in np.radians([2.0, 15.0, 25.0, 40.0]):
+        cos0 = float(np.cos(alpha))
+        for step in (continuation.LINEAR_SPAN, -continuation.LINEAR_SPAN):
+            cos1 = cos0 + step
+            for inner in (True, False):
+                k0 = continuation.exact_contact_k(th, cos0, inner)
+                t0 = continuation.contact_terms(th, c, cos0, inner, continuation.Anchor(k0))
+                k1 = continuation.exact_contact_k(th, cos1, inner)
+                t1 = continuation.contact_terms(th, c, cos1, inner, continuation.Anchor(k1))
+                lin = (
+                    t0[0] * (1.0 + t0[1] * step),
+                    t0[2] * (1.0 + t0[3] * step),
+                    t0[4] + t0[5] * step,
+                    t0[6] + t0[7] * step,
+                )
+                ref = (t1[0], t1[2], t1[4], t1[6])
+                np.testing.assert_allclose(lin, ref, rtol=1e-12, atol=0.0)
+
+
+@pytest.mark.parametrize("f_rho", [0.85, 0.93, 0.97])
+def test_anchor_expansion_error_at_the_redo_threshold(f_rho):
+    # beyond ANCHOR_DRIFT an anchor is renewed for the next step; a step is solved again only
+    # beyond ANCHOR_REDO: up to there the expansion's error stays below 2e-11
+    k0 = ellipticity(f_rho)
+    anchor = continuation.Anchor(k0)
+    k_true = k0 * (1.0 + continuation.ANCHOR_REDO)
+    q = (curvature_difference_of_ellipticity(k_true) - anchor.f) / anchor.f1
+    k = anchor.k + q * (1.0 - 0.5 * anchor.f2 * q / anchor.f1)
+    dm = (1.0 - 1.0 / k**2) - anchor.m
+    m_true = 1.0 - 1.0 / k_true**2
+    assert k == pytest.approx(k_true, rel=2e-11)
+    k_int = anchor.k_int + (anchor.k1 + 0.5 * anchor.k2 * dm) * dm
+    e_int = anchor.e_int + (anchor.e1 + 0.5 * anchor.e2 * dm) * dm
+    assert k_int == pytest.approx(float(ellipk(m_true)), rel=2e-11)
+    assert e_int == pytest.approx(float(ellipe(m_true)), rel=2e-11)
+
+
+@pytest.mark.parametrize("name", ["yu_printed", "ning_solid"])
+def test_ring_torques_equal_ball_torque_terms(name):
+    # ring_sums writes the torques as coefficients × products; friction.ball_torque_terms is
+    # the definition: the same numbers ball by ball, radial load (8 different balls)
+    pair = PAIRS[name]()
+    model = BearingModel(pair)
+    model.evaluate(273.15, 0.1, 15.0, 6.0)
+    model.evaluate(273.25, 0.1, 15.2, 6.1)  # a continuation step: the balls hold its state
+    th, c = model.solver.th, model.solver.c
+    for ring in model.solver.rings:
+        expected = np.zeros(5)
+        for b in ring:
+            if b.load <= 0.0:
+                continue
+            cos0, ti, to = b.base[0], b.base[5], b.base[6]
+            d = b.cos_a - cos0
+            q3 = b.load ** (1.0 / 3.0)
+            contacts = []
+            for t in (ti, to):
+                a_coef, k = t[2] * (1.0 + t[3] * d), t[4] + t[5] * d
+                contacts.append((a_coef * q3, a_coef / k * q3, t[6] + t[7] * d))
+            dw, dm = th.ball_diameter, th.pitch_diameter
+            h_i, h_o, sl_i, sl_o, sp_i, sp_o = ball_torque_terms(
+                b.load,
+                contacts[0],
+                contacts[1],
+                0.5 * (dm - dw * b.cos_a),
+                0.5 * (dm + dw * b.cos_a),
+                abs(b.sin_a),
+                dw,
+                (th.inner_groove_radius, th.outer_groove_radius),
+                pair.coefficients,
+                pair.lubrication == "solid",
+                pair.sliding,
+            )
+            w = b.weight
+            expected += w * np.array(
+                [h_i + h_o, sp_i + sp_o, sl_i + sl_o, h_i + sl_i + sp_i, h_o + sl_o + sp_o]
+            )
+        anchors = [(b.anc_i.k, b.anc_o.k) for b in ring]
+        got = continuation.ring_sums(th, c, ring)[:5]
+        assert [(b.anc_i.k, b.anc_o.k) for b in ring] == anchors  # no renewal in between
+        np.testing.assert_allclose(got, expected, rtol=1e-13, atol=0.0)
+
+
+def test_failed_warm_start_and_failed_exact_solve_name_the_point(monkeypatch):
+    # a warm start that fails falls back to the exact path; when that fails too, the call
+    # raises a ValueError naming temperatures and loads, and the model keeps its last state
+    from servofmu.physics import bearing as bm
+
+    pair = PAIRS["yu_printed"]()
+    model = BearingModel(pair)
+    good = model.evaluate(293.15, 0.1, 5.0)
+    monkeypatch.setattr(model.solver, "solve", lambda *a: None)
+    fallback = model.evaluate(294.15, 0.1, 6.0)
+    assert model.exact_steps == 2
+    assert_equal_outputs(fallback, operating_outputs(pair, 294.15, 0.1, 6.0))
+
+    def broken(*a, **k):
+        raise ArithmeticError("no equilibrium")
+
+    monkeypatch.setattr(bm, "load_state", broken)
+    where = r"\(295\.15, 295\.15, 295\.15, 295\.15\) K, axial_load = 7\.0 N, radial_load = 0\.0 N"
+    with pytest.raises(ValueError, match=where + ": no equilibrium"):
+        model.evaluate(295.15, 0.1, 7.0)
+    assert model.evaluate(294.15, 0.1, 6.0) == fallback  # the last state is kept
+    monkeypatch.undo()
+    assert_equal_outputs(model.evaluate(293.15, 0.1, 5.0), good)  # and it carries on

@@ -627,7 +627,9 @@ def _range_checker(checks: tuple[tuple[str, float, float], ...]):
     tests = [f"lo{i} <= slave.{name} <= hi{i}" for i, (name, _, _) in enumerate(checks)]
     for i, (_, lo, hi) in enumerate(checks):
         namespace[f"lo{i}"], namespace[f"hi{i}"] = lo, hi
-    exec(f"def ok(slave):\n    return {' and '.join(tests) or 'True'}\n", namespace)  # names checked
+    exec(
+        f"def ok(slave):\n    return {' and '.join(tests) or 'True'}\n", namespace
+    )  # names checked
     return namespace["ok"]
 
 

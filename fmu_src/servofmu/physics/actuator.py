@@ -176,11 +176,16 @@ class _Floats:
     per-step path of :class:`ActuatorModel` runs the same equations as the vectorised
     functions (which pass numpy), at a fraction of a microsecond per call."""
 
-    sin, cos, tan, sqrt = staticmethod(math.sin), staticmethod(math.cos), staticmethod(
-        math.tan
-    ), staticmethod(math.sqrt)
-    arcsin, arccos, arctan = staticmethod(math.asin), staticmethod(math.acos), staticmethod(
-        math.atan
+    sin, cos, tan, sqrt = (
+        staticmethod(math.sin),
+        staticmethod(math.cos),
+        staticmethod(math.tan),
+        staticmethod(math.sqrt),
+    )
+    arcsin, arccos, arctan = (
+        staticmethod(math.asin),
+        staticmethod(math.acos),
+        staticmethod(math.atan),
     )
     arctan2, abs, maximum = staticmethod(math.atan2), staticmethod(abs), staticmethod(max)
 
