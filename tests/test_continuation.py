@@ -7,6 +7,7 @@ offsets to 1e-16 m).
 """
 
 import dataclasses
+import itertools
 import json
 import math
 
@@ -276,34 +277,58 @@ def test_state_restore_mid_radial_ramp_repeats_bit_for_bit():
     assert b.exact_steps == 0
 
 
-@pytest.mark.parametrize("key", ["71803", "6000", "7204C", "71807C", "61804"])
-def test_hertz_constants_are_linear_in_cos_alpha_within_the_span(key):
-    # c_δ, a_coef, k and E from a ball's base at cos α0, moved by LINEAR_SPAN, against
-    # contact_terms anchored exactly at the new angle: relative error below 1e-12 (measured
-    # 2.2e-13 at most, for k of the deep-groove 6000)
+@pytest.mark.parametrize("key", ["71803", "6000", "7204C", "71807C", "61804", "7000C"])
+def test_hertz_constants_follow_a_base_within_its_spans(key):
+    # c_δ, a_coef, k and E from a ball's base at (γ0, 1/f0), moved by up to GAMMA_SPAN in γ and
+    # INV_F_SPAN in 1/f, against contact_terms anchored exactly at the new point: relative
+    # error below 2e-12 (second order in γ, first in 1/f)
     c = continuation.PairConstants(PAIRS["yu_printed"]())  # steel on steel
     geom = catalog.bearing(key).race_geometry()
-    th = continuation.Thermal()  # the race geometry the contacts read, as at assembly
-    th.ball_diameter = float(geom.ball_diameter)
-    th.gamma_scale = th.ball_diameter / float(geom.pitch_diameter)
-    th.inv_f_inner, th.inv_f_outer = 1.0 / geom.inner_curvature, 1.0 / geom.outer_curvature
-    for alpha in np.radians([2.0, 15.0, 25.0, 40.0]):
-        cos0 = float(np.cos(alpha))
-        for step in (continuation.LINEAR_SPAN, -continuation.LINEAR_SPAN):
-            cos1 = cos0 + step
-            for inner in (True, False):
-                k0 = continuation.exact_contact_k(th, cos0, inner)
-                t0 = continuation.contact_terms(th, c, cos0, inner, continuation.Anchor(k0))
-                k1 = continuation.exact_contact_k(th, cos1, inner)
-                t1 = continuation.contact_terms(th, c, cos1, inner, continuation.Anchor(k1))
-                lin = (
-                    t0[0] * (1.0 + t0[1] * step),
-                    t0[2] * (1.0 + t0[3] * step),
-                    t0[4] + t0[5] * step,
-                    t0[6] + t0[7] * step,
+    gs = float(geom.ball_diameter / geom.pitch_diameter)
+    spans = (continuation.GAMMA_SPAN, continuation.INV_F_SPAN)
+    worst = 0.0
+    for alpha in np.radians([0.0, 15.0, 25.0, 40.0]):
+        g0 = gs * float(np.cos(alpha))
+        for inner, curvature in ((True, geom.inner_curvature), (False, geom.outer_curvature)):
+            f0 = 1.0 / float(curvature)
+            anchor = continuation.Anchor(_exact_k(g0, f0, inner))
+            t0 = continuation.contact_terms(c, g0, f0, inner, anchor)
+            for dg, df in itertools.product((-spans[0], spans[0]), (-spans[1], 0.0, spans[1])):
+                g1, f1 = g0 + dg, f0 + df
+                t1 = continuation.contact_terms(
+                    c, g1, f1, inner, continuation.Anchor(_exact_k(g1, f1, inner))
                 )
-                ref = (t1[0], t1[2], t1[4], t1[6])
-                np.testing.assert_allclose(lin, ref, rtol=1e-12, atol=0.0)
+                for q in range(4):  # c_δ, a_coef, k, E
+                    v0, v1, v2, vf = t0[4 * q : 4 * q + 4]
+                    follow = v0 + dg * (v1 + v2 * dg) + vf * df
+                    worst = max(worst, abs(follow / t1[4 * q] - 1.0))
+    assert worst < 2e-12
+
+
+def _exact_k(gamma, inv_f, inner):
+    rt = 2.0 * gamma / (1.0 - gamma) if inner else -2.0 * gamma / (1.0 + gamma)
+    return float(ellipticity((inv_f + rt) / (4.0 - inv_f + rt)))
+
+
+def test_contact_terms_derivatives_against_finite_differences():
+    c = continuation.PairConstants(PAIRS["yu_printed"]())
+    g0, f0, h = 0.107, 1.92, 1e-6
+    for inner in (True, False):
+        anchor = continuation.Anchor(_exact_k(g0, f0, inner))
+
+        def terms(g, f, inner=inner, anchor=anchor):
+            return continuation.contact_terms(c, g, f, inner, anchor)
+
+        t0, gp, gm = terms(g0, f0), terms(g0 + h, f0), terms(g0 - h, f0)
+        fp, fm = terms(g0, f0 + h), terms(g0, f0 - h)
+        h2 = 1e-4  # the second differences' step: rounding below 1e-6 of the value
+        gp2, gm2 = terms(g0 + h2, f0), terms(g0 - h2, f0)
+        for q in range(4):
+            i = 4 * q
+            assert t0[i + 1] == pytest.approx((gp[i] - gm[i]) / (2 * h), rel=1e-6)
+            assert t0[i + 3] == pytest.approx((fp[i] - fm[i]) / (2 * h), rel=1e-6)
+            second = (gp2[i] - 2 * t0[i] + gm2[i]) / h2**2
+            assert 2 * t0[i + 2] == pytest.approx(second, rel=1e-3, abs=1e-9 * abs(t0[i]))
 
 
 @pytest.mark.parametrize("f_rho", [0.85, 0.93, 0.97])
@@ -332,19 +357,23 @@ def test_ring_torques_equal_ball_torque_terms(name):
     model = BearingModel(pair)
     model.evaluate(273.15, 0.1, 15.0, 6.0)
     model.evaluate(273.25, 0.1, 15.2, 6.1)  # a continuation step: the balls hold its state
-    th, c = model.solver.th, model.solver.c
+    th, c = model._th, model.solver.c
     for ring in model.solver.rings:
         expected = np.zeros(5)
         for b in ring:
             if b.load <= 0.0:
                 continue
-            cos0, ti, to = b.base[0], b.base[5], b.base[6]
-            d = b.cos_a - cos0
+            g0, fi0, fo0, _, terms = b.base
+            d = th.gamma_scale * b.cos_a - g0
+            shifts = (th.inv_f_inner - fi0, th.inv_f_outer - fo0)
             q3 = b.load ** (1.0 / 3.0)
             contacts = []
-            for t in (ti, to):
-                a_coef, k = t[2] * (1.0 + t[3] * d), t[4] + t[5] * d
-                contacts.append((a_coef * q3, a_coef / k * q3, t[6] + t[7] * d))
+            for t, df in zip((terms[:12], terms[12:]), shifts, strict=True):
+                a_coef, k, e = (
+                    t[j] + d * (t[j + 1] + t[j + 2] * d) + t[j + 3] * df for j in (0, 4, 8)
+                )
+                a_coef *= th.dw_third
+                contacts.append((a_coef * q3, a_coef / k * q3, e))
             dw, dm = th.ball_diameter, th.pitch_diameter
             h_i, h_o, sl_i, sl_o, sp_i, sp_o = ball_torque_terms(
                 b.load,

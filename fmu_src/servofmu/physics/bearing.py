@@ -143,14 +143,13 @@ class BearingModel:
         continuation from there, so that the next steps repeat bit for bit."""
         state = state or {"solver": None, "point": None, "values": None}
         self._temps = self._axial = self._radial = self._th = self._point = None
+        self.solver.restore(state["solver"])
         point = state["point"]
         if point is None:
-            self.solver.restore(state["solver"])
             return
         self._temps = tuple(float(t) for t in point[:4])
         self._axial, self._radial = float(point[4]), float(point[5])
         self._th = thermal_floats(self.solver.c, self._temps)
-        self.solver.restore(state["solver"], self._th)
         self._point = PointState(**state["values"])
 
     # ---------------------------------------------------------------- per step

@@ -12,10 +12,13 @@ equations from the previous step's solution:
 - the pair's offsets and radial displacements x = (p, z, δr_A, δr_B) [m] solve the conditions
   of :func:`preload.pair_equilibrium` (F_A − F_B = F_ext, Fr_A = Fr_B = F_r/2,
   (F_A + F_B)/2 = k·(C − 2p)) by Newton's method with the analytic Jacobian, the contact
-  angle's effect on the Hertz constants included, started from a predictor (the previous
-  solution moved by the secant of the last step when the inputs keep their direction). The
+  angle's effect on the Hertz constants included, started from a predictor: the previous
+  solution moved by the tangent of the load change (the last Jacobian) and by the secant of
+  the last temperature change when the temperatures move on in the same direction. The
   radial rows are eliminated by hand (they involve one bearing each), which leaves a 2×2
-  system in the bearings' axial offsets (:func:`newton_step`);
+  system in the bearings' axial offsets (:func:`newton_step`). A bearing with no ball in
+  contact under a radial load (its radial row is empty) is first moved radially until its
+  ball nearest the load's direction touches (:meth:`PairSolver._touch`);
 - under pure axial load every ball of a bearing is alike (Yu 2017 eq 4): a bearing is one ball
   of weight Z (one unknown less when the load is zero, none for a rigid loop at zero load);
   under a radial load every ball differs (Jones 1960): the balls of half the ring (the load is
@@ -28,25 +31,31 @@ equations from the previous step's solution:
   bearings); the anchor is renewed for the next step at the current k when |Δk| exceeds
   :data:`ANCHOR_DRIFT`·k, and the step is solved again when it exceeds :data:`ANCHOR_REDO`·k,
   which keeps every Hertz constant within about 2e-11 of the exact one;
-- the Hertz constants depend on the contact angle only through γ = Dw·cos α/dm, and weakly
-  (relative derivatives in cos α of 0.01–0.08, second derivatives below 0.02 on the catalogue
-  bearings). Each ball keeps a *base*: the Hertz constants and their derivatives in cos α at
-  one contact angle of the current thermal state (:func:`contact_terms`); within
-  :data:`LINEAR_SPAN` of it in cos α the constants are taken to first order (relative error
-  below 1e-12, tests/test_continuation.py), so that only the first Newton evaluation of a step
-  with a new temperature, or a ball whose angle moved further, evaluates the Hertz relation.
+- the Hertz constants depend on the contact angle only through γ = Dw·cos α/dm, on the
+  thermal state through γ, the grooves' 1/f = Dw/r and Dw^(∓1/3), and weakly on γ (relative
+  first derivatives of 0.1–0.8, second of 0.1–0.2 on the catalogue bearings). Each ball
+  keeps a *base*: the Hertz constants with their first and second derivatives in γ and first
+  in 1/f at one (γ0, 1/f0) (:func:`contact_terms`); within :data:`GAMMA_SPAN` and
+  :data:`INV_F_SPAN` of it they follow to second order in γ and first order in 1/f (relative
+  error below 2e-12, tests/test_continuation.py), at any temperature: on a ramp a ball
+  evaluates the Hertz relation again every ten to twenty steps, not every step (1/f is
+  constant while balls and rings share their temperature and expansion).
 
 Newton stops at the first point whose next correction is below 1e-12 of the curvature distance
-A (about 1e-16 m, the absolute tolerance of the exact path's root finders): with the analytic
-Jacobian and the predictor that is two evaluations per step on a temperature ramp. A step that
+A (about 1e-16 m, the absolute tolerance of the exact path's root finders) and below 2e-10 of
+the smallest deflection of a loaded ball (a ball load Q ∝ δ^1.5 and its stiffness ∝ δ^0.5 then
+move by less than 3e-10 of their value; a ball that barely touches needs the finer step), or
+at rounding (1e-15·A): with the analytic Jacobian and the predictor that is about two
+evaluations per step on a temperature ramp (measured 2.1 with 20 N axial load, 2.6 with the
+axial and radial loads changing every step: benchmarks/bench_fmus.py's loops). A step that
 does not converge in :data:`MAX_ITERATIONS`, a singular Jacobian (no ball in contact while the
 external load is not zero), or a non-finite value returns None, and the caller falls back to
 the exact path. The outputs equal the exact path's to a relative 1e-9 (tests check this on
 random trajectories of temperature and load).
 
 The continuation state (:meth:`PairSolver.state`) is a JSON-serialisable dict of floats (the
-solution, the anchors' k, the bases' cos α, the predictor's history): a restored solver
-continues bit for bit.
+solution and its inputs, the anchors' k, the bases' γ0 and 1/f0, the last Jacobian and
+temperature secant of the predictor): a restored solver continues bit for bit.
 
 The thermal state takes the four parts' temperatures (housing, shaft, outer ring, inner ring);
 a uniform temperature is four equal ones.
@@ -62,7 +71,7 @@ from .friction import _heathcote, _hysteresis, _spin
 from .hertz import ellipticity
 from .materials import reduced_compliance
 from .pair import assembly_geometry, effective_shim, loop_stiffness
-from .pair_state import PointState, state_flags
+from .pair_state import PointState, rest_torque, state_flags
 from .preload import ROLES
 
 #: Relative change of a contact's ellipticity from its anchor beyond which the anchor is
@@ -72,9 +81,11 @@ ANCHOR_DRIFT = 1e-4
 #: Relative change beyond which the step is solved again with the renewed anchors (error of
 #: the expansion below 2e-11 up to there, tests/test_continuation.py).
 ANCHOR_REDO = 2e-4
-#: Largest |Δcos α| from a ball's base within which its Hertz constants are taken to first
-#: order (relative error below 1e-12: at most 2.2e-13 measured, tests/test_continuation.py).
-LINEAR_SPAN = 2e-6
+#: Largest |Δγ| (γ = Dw·cos α/dm) and |Δ(1/f)| from a ball's base within which its Hertz
+#: constants are taken to second order in γ and first order in 1/f (relative error below 2e-12
+#: on the catalogue bearings, tests/test_continuation.py).
+GAMMA_SPAN = 5e-5
+INV_F_SPAN = 3e-9
 #: Newton iterations of one step before the exact path takes over.
 MAX_ITERATIONS = 12
 #: Newton stops at the first point whose next correction is below this fraction of the
@@ -193,6 +204,7 @@ class Thermal:
         "clearance",
         "closure",
         "curvature_distance",
+        "dw_third",
         "gamma_scale",
         "inner_fit_pressure",
         "inner_groove_radius",
@@ -205,7 +217,9 @@ class Thermal:
         "outer_interference",
         "pitch_diameter",
         "radial_centre_distance",
+        "rest_torque",
         "temperatures",
+        "torque_coefficients",
     )
 
     @property
@@ -257,7 +271,8 @@ def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -
     a = r_i + r_o - dw
     dm = 0.5 * (d_groove_i + d_groove_o)
     th.temperatures = temps
-    th.ball_diameter = dw
+    th.ball_diameter, th.dw_third = dw, _cbrt(dw)
+    th.rest_torque = th.torque_coefficients = None  # evaluated when first needed
     th.pitch_diameter = dm
     th.inner_groove_radius, th.outer_groove_radius = r_i, r_o
     th.inv_f_inner, th.inv_f_outer = dw / r_i, dw / r_o
@@ -347,46 +362,78 @@ class Anchor:
         self.data = (k, m, ki, ei, self.f, self.inv_f1, self.f2_f1, k1, k2, e1, e2)
 
 
-def contact_terms(th: Thermal, c: PairConstants, cos_a: float, inner: bool, anc: Anchor):
-    """Hertz constants of the inner or outer contact at the contact angle of cosine ``cos_a``:
+def contact_terms(c: PairConstants, gamma: float, inv_f: float, inner: bool, anc: Anchor):
+    """Hertz constants of the inner or outer contact at γ = Dw·cos α/dm and 1/f = Dw/r:
     :func:`hertz.curvature_sum_difference` and :func:`hertz.contact_constants` rearranged, with
-    the ellipticity to second order from the anchor ``anc``, and their derivatives in cos α
-    (γ = (Dw/dm)·cos α).
+    the ellipticity to second order from the anchor ``anc``; each with its first and second
+    derivatives in γ and its first derivative in 1/f (chain rule through the race term,
+    F(ρ), k, m = 1 − 1/k² and the anchor's expansions of K and E).
+
+    The constants depend on the ball diameter only through Dw^(∓1/3): c_δ·Dw^(1/3) and
+    a_coef/Dw^(1/3) are returned.
 
     Returns
     -------
     tuple
-        (c_δ = K_c^(−2/3) [m/N^(2/3)] with K_c the contact's load–deflection constant,
-        d ln c_δ/d cos α [-], a_coef [m/N^(1/3)], d ln a_coef/d cos α [-], ellipticity k [-],
-        dk/d cos α [-], E(m) [-], dE/d cos α [-]); b_coef = a_coef/k.
+        16 floats, four per quantity (value, d/dγ, ½·d²/dγ², ∂/∂(1/f)) of: c_δ·Dw^(1/3)
+        [m^(4/3)/N^(2/3)] (c_δ = K_c^(−2/3), K_c the contact's load–deflection constant),
+        a_coef/Dw^(1/3) [m^(2/3)/N^(1/3)], the ellipticity k [-] and E(m) [-]
+        (b_coef = a_coef/k).
     """
-    gs = th.gamma_scale
-    g = gs * cos_a
     if inner:
-        inv_f = th.inv_f_inner
-        rt = 2.0 * g / (1.0 - g)
-        drt = 2.0 * gs / ((1.0 - g) * (1.0 - g))  # d(race term)/d cos α
+        u = 1.0 / (1.0 - gamma)
+        rt, r1, r2 = 2.0 * gamma * u, 2.0 * u * u, 4.0 * u * u * u  # race term, d/dγ, d²/dγ²
     else:
-        inv_f = th.inv_f_outer
-        rt = -2.0 * g / (1.0 + g)
-        drt = -2.0 * gs / ((1.0 + g) * (1.0 + g))
-    denom = 4.0 - inv_f + rt  # Σρ·Dw
+        u = 1.0 / (1.0 + gamma)
+        rt, r1, r2 = -2.0 * gamma * u, -2.0 * u * u, 4.0 * u * u * u
+    den = 4.0 - inv_f + rt  # Σρ·Dw
+    g4 = (4.0 - 2.0 * inv_f) / (den * den)
+    f_g = g4 * r1  # dF/dγ
+    f_gg = g4 * (r2 - 2.0 * r1 * r1 / den)
+    f_f = (4.0 + 2.0 * rt) / (den * den)  # ∂F/∂(1/f)
     k0, m0, ki0, ei0, f0, inv_f1, f2_f1, k1, k2, e1, e2 = anc.data
-    q = ((inv_f + rt) / denom - f0) * inv_f1  # Δk to first order
-    f2q = f2_f1 * q
-    k = k0 + q * (1.0 - 0.5 * f2q)  # Δk = ΔF/F' − F''·ΔF²/(2F'³)
-    k2_ = k * k
-    dm = (1.0 - 1.0 / k2_) - m0
+    q = ((inv_f + rt) / den - f0) * inv_f1  # Δk to first order
+    k = k0 + q * (1.0 - 0.5 * f2_f1 * q)  # Δk = ΔF/F' − F''·ΔF²/(2F'³)
+    k_f = (1.0 - f2_f1 * q) * inv_f1  # dk/dF
+    k_ff = -f2_f1 * inv_f1 * inv_f1
+    kg, kgg, kf = k_f * f_g, k_ff * f_g * f_g + k_f * f_gg, k_f * f_f
+    ik = 1.0 / k
+    m_k = 2.0 * ik * ik * ik  # m = 1 − 1/k²
+    mg, mgg, mf = m_k * kg, m_k * (kgg - 3.0 * ik * kg * kg), m_k * kf
+    dm = (1.0 - ik * ik) - m0
     ki = ki0 + (k1 + 0.5 * k2 * dm) * dm
     ei = ei0 + (e1 + 0.5 * e2 * dm) * dm
-    dki, dei = k1 + k2 * dm, e1 + e2 * dm  # dK/dm, dE/dm
-    x = _cbrt(denom / (th.ball_diameter * k2_ * ei))
-    # dF/d cos α = (4 − 2/f)/denom²·drt; dk = dF·(1 − F''ΔF/F'²)/F'; dm = 2·dk/k³
-    dk = (4.0 - 2.0 * inv_f) / (denom * denom) * drt * (1.0 - f2q) * inv_f1
-    dm_c = 2.0 * dk / (k2_ * k)
-    de = dei * dm_c
-    dln_x = (drt / denom - 2.0 * dk / k - de / ei) * _THIRD
-    return (c.c_delta_coef * ki * x, dki * dm_c / ki + dln_x, c.a_coef / x, -dln_x, k, dk, ei, de)
+    km, em = k1 + k2 * dm, e1 + e2 * dm  # dK/dm, dE/dm
+    lk_g, lk_gg, lk_f = km * mg / ki, (k2 * mg * mg + km * mgg) / ki, km * mf / ki
+    le_g, le_gg, le_f = em * mg / ei, (e2 * mg * mg + em * mgg) / ei, em * mf / ei
+    # ln X = (ln Σρ·Dw − 2 ln k − ln E)/3, X·Dw^(−1/3) = (Σρ/(k²·E))^(1/3)
+    lx_g = (r1 / den - 2.0 * kg * ik - le_g) * _THIRD
+    lx_gg = (
+        r2 / den - (r1 / den) ** 2 - 2.0 * (kgg * ik - (kg * ik) ** 2) - (le_gg - le_g * le_g)
+    ) * _THIRD
+    lx_f = (-1.0 / den - 2.0 * kf * ik - le_f) * _THIRD
+    x = _cbrt(den / (k * k * ei))
+    cd = c.c_delta_coef * ki * x  # c_δ = C·K·X
+    lc_g = lk_g + lx_g
+    ac = c.a_coef / x  # a_coef = C_a/X
+    return (
+        cd,
+        cd * lc_g,
+        0.5 * cd * (lc_g * lc_g + lk_gg - lk_g * lk_g + lx_gg),
+        cd * (lk_f + lx_f),
+        ac,
+        -ac * lx_g,
+        0.5 * ac * (lx_g * lx_g - lx_gg),
+        -ac * lx_f,
+        k,
+        kg,
+        0.5 * kgg,
+        kf,
+        ei,
+        ei * le_g,
+        0.5 * ei * le_gg,
+        ei * le_f,
+    )
 
 
 def exact_contact_k(th: Thermal, cos_a: float, inner: bool) -> float:
@@ -412,13 +459,15 @@ class Ball:
         self.load = self.cos_a = self.sin_a = 0.0
 
 
-def ball_base(th: Thermal, c: PairConstants, cos_a: float, b: Ball) -> tuple:
-    """The base of ball ``b`` at the contact angle of cosine ``cos_a``: (cos α0, c_i, dc_i/d cos α,
-    c_o, dc_o/d cos α, inner terms, outer terms) with c = c_δ [m/N^(2/3)] and the terms of
-    :func:`contact_terms`; within :data:`LINEAR_SPAN` the constants are c + dc·Δcos α."""
-    ti = contact_terms(th, c, cos_a, True, b.anc_i)
-    to = contact_terms(th, c, cos_a, False, b.anc_o)
-    return (cos_a, ti[0], ti[0] * ti[1], to[0], to[0] * to[1], ti, to)
+def ball_base(c: PairConstants, gamma: float, inv_f_i: float, inv_f_o: float, b: Ball) -> tuple:
+    """The base of ball ``b`` at γ = Dw·cos α/dm and the grooves' 1/f: (γ0, 1/f_i0, 1/f_o0,
+    the c_δ terms of the inner and outer contact (8 floats), their a_coef, k and E terms (24
+    floats)) from :func:`contact_terms`. Within :data:`GAMMA_SPAN` in γ and :data:`INV_F_SPAN`
+    in 1/f the Hertz constants are taken to second order in γ and first order in 1/f, at any
+    thermal state."""
+    ti = contact_terms(c, gamma, inv_f_i, True, b.anc_i)
+    to = contact_terms(c, gamma, inv_f_o, False, b.anc_o)
+    return gamma, inv_f_i, inv_f_o, (*ti[:4], *to[:4]), (*ti[4:], *to[4:])
 
 
 def ring_point(th: Thermal, c: PairConstants, a: float, dr: float, balls) -> tuple:
@@ -433,6 +482,8 @@ def ring_point(th: Thermal, c: PairConstants, a: float, dr: float, balls) -> tup
         [N/m] with K_n(α) varied, dFa/da with K_n held [N/m], the output stiffness).
     """
     a2_0, dist = th.radial_centre_distance, th.curvature_distance
+    gs, f_i, f_o, dw_m13 = th.gamma_scale, th.inv_f_inner, th.inv_f_outer, 1.0 / th.dw_third
+    gs_dw = gs * dw_m13  # d c_δ/d cos α = (d c_δ·Dw^(1/3)/dγ)·(Dw/dm)·Dw^(−1/3)
     fa = fr = j11 = j12 = j21 = j22 = kax = 0.0
     d_min = dist
     for b in balls:
@@ -448,10 +499,19 @@ def ring_point(th: Thermal, c: PairConstants, a: float, dr: float, balls) -> tup
         if delta < d_min:
             d_min = delta
         base = b.base
-        if base is None or abs(cos_a - base[0]) > LINEAR_SPAN:
-            base = b.base = ball_base(th, c, cos_a, b)
-        d = cos_a - base[0]
-        ci, co = base[1] + base[2] * d, base[3] + base[4] * d
+        gamma = gs * cos_a
+        if (
+            base is None
+            or abs(gamma - base[0]) > GAMMA_SPAN
+            or abs(f_i - base[1]) > INV_F_SPAN
+            or abs(f_o - base[2]) > INV_F_SPAN
+        ):
+            base = b.base = ball_base(c, gamma, f_i, f_o, b)
+        g0, fi0, fo0, terms, _ = base
+        d, d_i, d_o = gamma - g0, f_i - fi0, f_o - fo0
+        ci0, ci1, ci2, cif, co0, co1, co2, cof = terms
+        ci = (ci0 + d * (ci1 + ci2 * d) + cif * d_i) * dw_m13
+        co = (co0 + d * (co1 + co2 * d) + cof * d_o) * dw_m13
         csum = ci + co
         k_n = 1.0 / (csum * _sqrt(csum))
         root = _sqrt(delta)
@@ -460,7 +520,7 @@ def ring_point(th: Thermal, c: PairConstants, a: float, dr: float, balls) -> tup
         b.load = q
         # the share of K_n(α) in dQ/dA1 (·cos α) and dQ/dA2 (·−sin α): dα = (cos α·dA1 −
         # sin α·dA2)/s, d ln c/dα = −sin α·d ln c/d cos α
-        g = knr * (base[2] + base[4]) / csum * sin_a * delta / s
+        g = knr * (ci1 + co1) * gs_dw / csum * sin_a * delta / s
         dq1 = knr * sin_a + g * cos_a
         dq2 = knr * cos_a - g * sin_a
         qs = q / s
@@ -556,7 +616,6 @@ class PairSolver:
         self.mode = None  # "axial" (all balls alike) or "radial" (per ball)
         self.x = None  # (p, z, δr_A, δr_B) [m] of the last step
         self.rings = None  # the balls of bearings A and B
-        self.th = None  # the thermal state the balls' bases belong to
         self.inputs = None  # inputs of the last step: (4 temperatures [K], F_ext, F_r [N])
         self.jacobian = None  # the bearings' ring_point results at x (newton_step), or None
         self.secant = None  # (Δx, ΔT) of the last step's temperature change, or None
@@ -574,15 +633,17 @@ class PairSolver:
             "mode": self.mode,
             "x": list(self.x),
             "k": [[[b.anc_i.k, b.anc_o.k] for b in ring] for ring in self.rings],
-            "base": [[None if b.base is None else b.base[0] for b in ring] for ring in self.rings],
+            "base": [
+                [None if b.base is None else list(b.base[:3]) for b in ring] for ring in self.rings
+            ],
             "inputs": list(self.inputs),
             "jacobian": None if self.jacobian is None else [list(r) for r in self.jacobian],
             "secant": None if self.secant is None else [list(v) for v in self.secant],
         }
 
-    def restore(self, state: dict | None, th: Thermal | None = None) -> None:
-        """Inverse of :meth:`state`, with ``th`` the thermal state at the state's inputs (the
-        balls' bases are evaluated again there): a restored solver continues bit for bit."""
+    def restore(self, state: dict | None) -> None:
+        """Inverse of :meth:`state` (the balls' bases are evaluated again from their γ and
+        1/f): a restored solver continues bit for bit."""
         self.reset()
         if state is None:
             return
@@ -596,11 +657,10 @@ class PairSolver:
             ]
             for ks in state["k"]
         ]
-        self.th = th
-        for ring, bases in zip(self.rings, state.get("base") or [[], []], strict=False):
-            for b, cos0 in zip(ring, bases, strict=False):
-                if cos0 is not None and th is not None:
-                    b.base = ball_base(th, self.c, float(cos0), b)
+        for ring, bases in zip(self.rings, state["base"], strict=True):
+            for b, at in zip(ring, bases, strict=True):
+                if at is not None:
+                    b.base = ball_base(self.c, *(float(v) for v in at), b)
         self.inputs = tuple(float(v) for v in state["inputs"])
         jac, sec = state.get("jacobian"), state.get("secant")
         self.jacobian = None if jac is None else tuple(tuple(float(v) for v in r) for r in jac)
@@ -634,7 +694,6 @@ class PairSolver:
             ]
             for cs in cosines
         ]
-        self.th = th
         self.x, self.inputs = tuple(float(v) for v in x), tuple(inputs)
 
     def _switch(self, mode: str) -> None:
@@ -658,11 +717,6 @@ class PairSolver:
         mode = "axial" if radial_load == 0.0 else "radial"
         if mode != self.mode:
             self._switch(mode)
-        if th is not self.th:  # the bases belong to another thermal state
-            for ring in self.rings:
-                for b in ring:
-                    b.base = None
-            self.th = th
         inputs = (*th.temperatures, axial_load, radial_load)
         x = self._predict(inputs)
         for _ in range(MAX_ANCHOR_ROUNDS):
@@ -791,8 +845,9 @@ class PairSolver:
             return None
         a2 = _sqrt(dist * dist - a * a)
         cos_a = a2 / dist
-        ci = contact_terms(th, self.c, cos_a, True, b.anc_i)[0]
-        co = contact_terms(th, self.c, cos_a, False, b.anc_o)[0]
+        gamma = th.gamma_scale * cos_a
+        ci = contact_terms(self.c, gamma, th.inv_f_inner, True, b.anc_i)[0] / th.dw_third
+        co = contact_terms(self.c, gamma, th.inv_f_outer, False, b.anc_o)[0] / th.dw_third
         delta = (abs(f) * (ci + co) ** 1.5 / cos_a) ** (2.0 / 3.0)
         s = dist + delta
         return (_sqrt(s * s - a * a) - a2_0) / cp
@@ -816,6 +871,8 @@ class PairSolver:
         fa, fb = sa[8], sb[8]
         p_max = max(sa[5], sb[5])
         flags = state_flags(self.pair, th.clearance, p_max, fa, fb)
+        if th.rest_torque is None:
+            th.rest_torque = rest_torque(self.pair, th.kinematic_viscosity, th.pitch_diameter)
         point = PointState.of(
             self.pair,
             th,
@@ -830,6 +887,7 @@ class PairSolver:
                 x[1],
             ),
             (flags["overloaded"], flags["locked"], flags["unloaded"]),
+            th.rest_torque,
         )
         return point, sa[9] or sb[9]
 
@@ -849,7 +907,10 @@ def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
     renewed at the current k (for the next step; the ball's base is dropped); ``redo`` is True
     when one moved more than :data:`ANCHOR_REDO` (the step is then solved again)."""
     dw, dm = th.ball_diameter, th.pitch_diameter
-    c_h, c_sl_i, c_sl_o, c_sp = torque_coefficients(th, c)
+    gs, f_i, f_o, dw_third = th.gamma_scale, th.inv_f_inner, th.inv_f_outer, th.dw_third
+    if th.torque_coefficients is None:
+        th.torque_coefficients = torque_coefficients(th, c)
+    c_h, c_sl_i, c_sl_o, c_sp = th.torque_coefficients
     solid = c.solid
     hyst = spin = slide = inner = outer = p_max = qsum = qalpha = fa = 0.0
     redo = False
@@ -858,11 +919,16 @@ def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
         if q <= 0.0:
             continue
         w, cos_a, sin_a = b.weight, b.cos_a, b.sin_a
-        base = b.base
-        ti, to = base[5], base[6]
-        d = cos_a - base[0]
-        a_i, a_o = ti[2] * (1.0 + ti[3] * d), to[2] * (1.0 + to[3] * d)  # a_coef
-        k_i, k_o = ti[4] + ti[5] * d, to[4] + to[5] * d
+        g0, fi0, fo0, _, terms = b.base
+        d, d_i, d_o = gs * cos_a - g0, f_i - fi0, f_o - fo0
+        (ai0, ai1, ai2, aif, ki0, ki1, ki2, kif, ei0, ei1, ei2, eif) = terms[:12]
+        (ao0, ao1, ao2, aof, ko0, ko1, ko2, kof, eo0, eo1, eo2, eof) = terms[12:]
+        a_i = (ai0 + d * (ai1 + ai2 * d) + aif * d_i) * dw_third  # a_coef
+        a_o = (ao0 + d * (ao1 + ao2 * d) + aof * d_o) * dw_third
+        k_i = ki0 + d * (ki1 + ki2 * d) + kif * d_i
+        k_o = ko0 + d * (ko1 + ko2 * d) + kof * d_o
+        e_i = ei0 + d * (ei1 + ei2 * d) + eif * d_i
+        e_o = eo0 + d * (eo1 + eo2 * d) + eof * d_o
         b_i, b_o = a_i / k_i, a_o / k_o  # b_coef
         q3 = q**_THIRD
         qa_i, qa_o = q * q3 * a_i, q * q3 * a_o  # Q·a
@@ -870,8 +936,8 @@ def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
         h_i, h_o = c_h * q * q3 * b_i * r_in, c_h * q * q3 * b_o * r_out
         sl_i, sl_o = c_sl_i * qa_i * a_i * q3 * r_in, c_sl_o * qa_o * a_o * q3 * r_out
         sin_abs = abs(sin_a)
-        sp_i = c_sp * qa_i * (ti[6] + ti[7] * d) * sin_abs
-        sp_o = c_sp * qa_o * (to[6] + to[7] * d) * sin_abs
+        sp_i = c_sp * qa_i * e_i * sin_abs
+        sp_o = c_sp * qa_o * e_o * sin_abs
         if solid or sp_i >= sp_o:  # Ning: the inner race spins; Yu eq 7: the larger moment
             sp_o = 0.0
         else:

@@ -383,7 +383,7 @@ def _coulomb_excess(pair: BearingPair, hysteresis, spin, sliding):
     return hysteresis + spin + sliding, excess
 
 
-def _rest_torque(pair: BearingPair, viscosity, pitch_diameter):
+def rest_torque(pair: BearingPair, viscosity, pitch_diameter):
     """Viscous torque of the pair at rest (Palmgren's eq 8 below its threshold) [N·m]."""
     s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
     return 2.0 * _palmgren(viscosity, 0.0, pitch_diameter, s0)
@@ -401,7 +401,7 @@ def bearing_outputs(
     return BearingOutputs(
         friction_torque=signed,
         running_torque=running,
-        breakaway_torque=coulomb + excess + _rest_torque(pair, nu, dm),
+        breakaway_torque=coulomb + excess + rest_torque(pair, nu, dm),
         hysteresis_torque=t.hysteresis,
         spin_torque=t.spin,
         sliding_torque=t.sliding,
@@ -463,12 +463,13 @@ class PointState:
     unloaded: bool
 
     @classmethod
-    def of(cls, pair: BearingPair, thermal, torques, load, flags) -> PointState:
+    def of(cls, pair: BearingPair, thermal, torques, load, flags, rest=None) -> PointState:
         """From the thermal state ``thermal`` (clearance, viscosity, pitch diameter, fits),
         ``torques`` = (hysteresis, spin, sliding, inner ring, outer ring) [N·m], ``load`` =
         (preload [N], contact angle [rad], axial stiffness [N/m], largest pressure [Pa],
-        force_a, force_b [N], axial displacement [m]) and ``flags`` = (overloaded, locked,
-        unloaded) (:func:`state_flags`)."""
+        force_a, force_b [N], axial displacement [m]), ``flags`` = (overloaded, locked,
+        unloaded) (:func:`state_flags`) and the viscous torque at rest [N·m]
+        (:func:`rest_torque`, evaluated when not given)."""
         hyst, spin, slide, inner, outer = torques
         nu, dm = thermal.kinematic_viscosity, thermal.pitch_diameter
         coulomb, excess = _coulomb_excess(pair, hyst, spin, slide)
@@ -480,7 +481,7 @@ class PointState:
             outer,
             coulomb,
             excess,
-            coulomb + excess + _rest_torque(pair, nu, dm),
+            coulomb + excess + (rest_torque(pair, nu, dm) if rest is None else rest),
             load[0],
             load[1],
             thermal.clearance,
