@@ -84,6 +84,14 @@ def _temperatures(temperature) -> tuple[float, float, float, float]:
     """(housing, shaft, outer ring, inner ring) [K] as floats from a uniform temperature, a
     :class:`PartTemperatures` or a 4-tuple; ValueError naming a non-finite or non-positive
     one."""
+    if type(temperature) is float and 0.0 < temperature < math.inf:  # the per-step cases
+        return (temperature, temperature, temperature, temperature)
+    if type(temperature) is tuple and len(temperature) == 4:
+        h, s, o, i = temperature
+        if type(h) is type(s) is type(o) is type(i) is float and (
+            0.0 < h < math.inf and 0.0 < s < math.inf and 0.0 < o < math.inf and 0.0 < i < math.inf
+        ):
+            return temperature
     if isinstance(temperature, PartTemperatures):
         temps = tuple(float(getattr(temperature, p)) for p in PARTS)
     elif isinstance(temperature, tuple):
