@@ -467,7 +467,7 @@ def stiffness_breakdown(
     extension) for output angle δ [rad], hinge moment M [N·m] and temperature T [K], all
     broadcast together. Elastic moduli are temperature-independent; the support-bearing
     preload follows the thermal coupling of :mod:`bearing`. ``support(F3, T)`` may replace
-    :func:`support_axial_stiffness` (the FMU passes its cached, tabulated version)."""
+    :func:`support_axial_stiffness` (:class:`ActuatorModel` has its own per-step path)."""
     delta, m, t = np.broadcast_arrays(
         np.asarray(check_finite("output_angle", output_angle, "rad"), dtype=float),
         np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float),
