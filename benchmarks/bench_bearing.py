@@ -1,11 +1,15 @@
 """Benchmarks of the bearing model (run on demand: ``make bench``; not part of the tests).
 
-1. Per-step cost inside an FMU: BearingModel.evaluate at a fixed temperature with a changing
-   speed, and with a changing speed and axial load; and at a new temperature every step (a
-   ramp: the thermal state and the unloaded state are solved again).
+1. Per-step cost inside an FMU, BearingModel.evaluate on the default BearingFriction pair
+   (Yu's gimbal with the compliant yoke) in the loops of benchmarks/bench_fmus.py: speed
+   changing at a fixed temperature and load (only the speed terms); speed and axial load
+   changing (the continuation at a fixed thermal state); a −60 → +80 °C ramp over 1000 steps
+   at 20 N (a new thermal state every step); the same ramp with the axial load 10–30 N and
+   the radial load 0–20 N changing every step (every ball differs); and the first call, which
+   the exact path solves. Best of ``--repeat`` runs (the least disturbed by other load).
 2. A 1000-point temperature curve: vectorised (BearingModel.curves) versus a scalar loop over
-   the same temperatures (thermal_state + load_state + bearing_outputs per point), measured
-   in one run; the ratio is what matters.
+   the same temperatures (thermal_state + load_state + bearing_outputs per point, the exact
+   path), measured in one run; the ratio is what matters.
 
 Prints a small table; ``--json`` prints the figures as JSON.
 """
@@ -14,87 +18,104 @@ from __future__ import annotations
 
 import argparse
 import json
-import statistics
+import math
 import time
 
 import numpy as np
 
 from servofmu.physics.bearing import (
     BearingModel,
-    BearingPair,
     bearing_outputs,
     load_state,
     thermal_state,
 )
+from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
 
 
-def _per_call(fn, n: int, repeat: int = 5) -> float:
-    """Median over ``repeat`` runs of the time per call of ``fn(i)``, i = 0..n−1 [s]."""
-    runs = []
+def _ramp(k: int) -> float:
+    """−60 → +80 °C over 1000 steps and back (a triangle of period 2000 steps) [K]."""
+    phase = (k % 2000) / 1000.0
+    return 213.15 + 140.0 * (phase if phase <= 1.0 else 2.0 - phase)
+
+
+#: (temperature [K], speed [rad/s], axial load [N], radial load [N]) at step k
+LOOPS = {
+    "speed changes": lambda k: (253.15, 0.2 * math.sin(1e-3 * k), 5.0, 0.0),
+    "speed and axial load change": lambda k: (
+        253.15,
+        0.2 * math.sin(1e-3 * k),
+        5.0 + math.sin(2e-3 * k),
+        0.0,
+    ),
+    "ramp -60..+80 degC, 20 N axial": lambda k: (_ramp(k), 0.2 * math.sin(1e-3 * k), 20.0, 0.0),
+    "ramp, axial 10-30 N, radial 0-20 N": lambda k: (
+        _ramp(k),
+        0.2 * math.sin(1e-3 * k),
+        20.0 + 10.0 * math.sin(7e-3 * k),
+        10.0 + 10.0 * math.sin(1.1e-2 * k),
+    ),
+}
+
+
+def per_step(pair, values, steps: int, repeat: int) -> tuple[float, int]:
+    """Best time per evaluate call [s] over ``repeat`` runs of ``steps`` steps (each run a new
+    model whose first, exact call is not timed), and the exact steps of the last run."""
+    series = [values(k) for k in range(steps + 1)]
+    best = math.inf
     for _ in range(repeat):
+        model = BearingModel(pair)
+        model.evaluate(*series[0])
         t0 = time.perf_counter()
-        for i in range(n):
-            fn(i)
-        runs.append((time.perf_counter() - t0) / n)
-    return statistics.median(runs)
+        for args in series[1:]:
+            model.evaluate(*args)
+        best = min(best, (time.perf_counter() - t0) / steps)
+    return best, model.exact_steps - 1
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--json", action="store_true")
     parser.add_argument("--points", type=int, default=1000)
+    parser.add_argument("--steps", type=int, default=4000)
+    parser.add_argument("--repeat", type=int, default=5)
     args = parser.parse_args()
 
-    pair = BearingPair.from_catalog("yu2017_gimbal_printed", "krytox_143aa")
+    pair = pair_from_parameters(default_parameters("yu2017_gimbal"))
+    figures = {}
+    for label, values in LOOPS.items():
+        secs, fallbacks = per_step(pair, values, args.steps, args.repeat)
+        figures[f"step: {label} [us]"] = secs * 1e6
+        figures[f"step: {label}, exact fallbacks"] = fallbacks
+    firsts = []
+    for _ in range(3):
+        t0 = time.perf_counter()
+        BearingModel(pair).evaluate(253.15, 0.1, 20.0)
+        firsts.append(time.perf_counter() - t0)
+    figures["first call, exact path [ms]"] = min(firsts) * 1e3
+
     model = BearingModel(pair)
-    t = 293.15
-    n = 20000
-    speeds = np.linspace(-1.0, 1.0, n).tolist()
-    loads = np.linspace(-150.0, 150.0, n).tolist()
-    model.evaluate(t, 0.1, 10.0)  # warm the caches (thermal state, axial-load table)
-    step_speed = _per_call(lambda i: model.evaluate(t, speeds[i]), n)
-    step_load = _per_call(lambda i: model.evaluate(t, speeds[i], loads[i]), n)
-    ramp = np.linspace(253.15, 263.15, 500).tolist()
-    step_temperature = _per_call(lambda i: model.evaluate(ramp[i], 0.1), len(ramp), repeat=3)
-    t0 = time.perf_counter()
-    BearingModel(pair).evaluate(t, 0.1, 10.0)
-    table_build = time.perf_counter() - t0
-
     temps = np.linspace(233.15, 333.15, args.points)
-    vec = _per_call(lambda i: model.curves(temps, 0.1), 1, repeat=5)
-
-    def scalar_curve(_):
-        for ti in temps:
-            th = thermal_state(pair, float(ti))
-            bearing_outputs(pair, th, load_state(pair, th), 0.1)
-
-    loop = _per_call(scalar_curve, 1, repeat=1)
-    figures = {
-        "step_speed_us": step_speed * 1e6,
-        "step_speed_and_axial_load_us": step_load * 1e6,
-        "step_new_temperature_ms": step_temperature * 1e3,
-        "axial_load_table_build_ms": table_build * 1e3,
-        "curve_points": args.points,
-        "curve_vectorised_ms": vec * 1e3,
-        "curve_scalar_loop_ms": loop * 1e3,
-        "curve_speedup": loop / vec,
+    vec = math.inf
+    for _ in range(5):
+        t0 = time.perf_counter()
+        model.curves(temps, 0.1)
+        vec = min(vec, time.perf_counter() - t0)
+    t0 = time.perf_counter()
+    for ti in temps:
+        th = thermal_state(pair, float(ti))
+        bearing_outputs(pair, th, load_state(pair, th), 0.1)
+    loop = time.perf_counter() - t0
+    figures |= {
+        "curve points": args.points,
+        "curve vectorised [ms]": vec * 1e3,
+        "curve scalar loop [ms]": loop * 1e3,
+        "curve speed-up [x]": loop / vec,
     }
     if args.json:
         print(json.dumps(figures, indent=2))
         return
-    print(f"per step, speed changes                 {figures['step_speed_us']:8.2f} µs")
-    print(
-        f"per step, speed and axial load change   {figures['step_speed_and_axial_load_us']:8.2f} µs"
-    )
-    print(f"per step, new temperature (a ramp)      {figures['step_new_temperature_ms']:8.2f} ms")
-    print(f"axial-load table, once per temperature  {figures['axial_load_table_build_ms']:8.2f} ms")
-    print(
-        f"{args.points}-point curve, vectorised          {figures['curve_vectorised_ms']:8.2f} ms"
-    )
-    print(
-        f"{args.points}-point curve, scalar loop         {figures['curve_scalar_loop_ms']:8.2f} ms"
-    )
-    print(f"vectorised / loop speed-up              {figures['curve_speedup']:8.1f} ×")
+    for name, value in figures.items():
+        print(f"{name:58s} {value:10.2f}" if isinstance(value, float) else f"{name:58s} {value:7d}")
 
 
 if __name__ == "__main__":

@@ -2,10 +2,13 @@
 on the same .ssp, measured in one run (on demand: ``make bench``; not part of the tests).
 
 The system is ``seeker_gimbal`` (ServoController, DCMotor, BearingFriction; 1 ms step, the
-speed loop at 10 °/s). Each engine runs ``--short`` and ``--long`` seconds of simulated
-time; the stepping rate is (long − short) / (wall_long − wall_short), which takes loading,
-unpacking and instantiation out; the wall time of the long run with its set-up is reported
-too. Median of ``--repeat`` runs.
+speed loop at 10 °/s), at its fixed temperature and, through the harness, under a
+temperature ramp: a triangle −60 → +80 → −60 °C of period 2 s, 0.14 K per 1 ms step (the
+ramp of benchmarks/bench_fmus.py), so that every step solves a new thermal state. Each run
+covers ``--short`` and ``--long`` seconds of simulated time; the stepping rate is
+(long − short) / (wall_long − wall_short), which takes loading, unpacking and instantiation
+out; the wall time of the long run with its set-up is reported too. Median of ``--repeat``
+runs.
 """
 
 from __future__ import annotations
@@ -19,16 +22,26 @@ from pathlib import Path
 from servofmu.harness import load_system, run
 from servofmu.harness.libcosim import run_libcosim
 from servofmu.harness.scenarios.common import system_path
+from servofmu.harness.signals import Cycle
 
 SYSTEM = "seeker_gimbal"
 RECORD = ["motor.speed", "motor.current", "bearing.running_torque"]
+#: −60 → +80 → −60 °C in 2 s: 0.14 K per 1 ms step [K]
+RAMP = {"bearing.temperature": Cycle(213.15, 353.15, 2.0, "triangle")}
 
 
-def harness_wall(ssp: Path, stop: float, algorithm: str) -> float:
+def harness_wall(ssp: Path, stop: float, algorithm: str, signals=None) -> float:
     t0 = time.perf_counter()
     system = load_system(ssp)
     try:
-        run(system, stop=stop, record=RECORD, algorithm=algorithm, progress=False)
+        run(
+            system,
+            stop=stop,
+            record=RECORD,
+            algorithm=algorithm,
+            progress=False,
+            signals=signals,
+        )
     finally:
         system.close()
     return time.perf_counter() - t0
@@ -51,6 +64,7 @@ def main(argv=None) -> dict:
     engines = {
         "harness, Gauss-Seidel": lambda stop: harness_wall(ssp, stop, "gauss-seidel"),
         "harness, Jacobi": lambda stop: harness_wall(ssp, stop, "jacobi"),
+        "harness, Gauss-Seidel, ramp": lambda stop: harness_wall(ssp, stop, "gauss-seidel", RAMP),
         "libcosim (fixed step, Jacobi)": lambda stop: libcosim_wall(ssp, stop),
     }
     results = {}

@@ -1,4 +1,5 @@
 import dataclasses
+import json
 import math
 import re
 
@@ -217,3 +218,65 @@ def test_new_examples_run():
         for t in tests:
             runner.run(t)
         assert tests and runner.summarize(verbose=False).failed == 0
+
+
+def _breakdown_fields():
+    return [f.name for f in dataclasses.fields(A.StiffnessBreakdown)]
+
+
+@pytest.mark.parametrize("support", [True, False])
+def test_per_step_model_equals_the_vectorised_path_along_a_trajectory(act, bare, support):
+    # ActuatorModel (floats, the support pair by continuation) against stiffness_breakdown
+    # (numpy, the support pair solved exactly): angle, moment (through zero, where the
+    # linkage takes its secant at SMALLEST_MOMENT and the support pair its tangent) and
+    # temperature change every step
+    a = act if support else bare
+    model = A.ActuatorModel(a)
+    rng = np.random.default_rng(5)
+    n = 40
+    angles = 0.3 * np.sin(np.linspace(0.0, 3.0, n))
+    moments = np.linspace(-120.0, 250.0, n) + rng.normal(0.0, 2.0, n)
+    moments[n // 3] = 0.0
+    temps = np.linspace(233.15, 343.15, n)
+    for i in range(n):
+        fast = model.evaluate(float(angles[i]), float(moments[i]), float(temps[i]))
+        exact = A.stiffness_breakdown(a, angles[i], moments[i], temps[i])
+        for name in _breakdown_fields():
+            want = float(getattr(exact, name))
+            assert getattr(fast, name) == pytest.approx(want, rel=1e-9, abs=0.0), (i, name)
+    if support:
+        assert model._bearings.exact_steps <= 2
+
+
+def test_per_step_model_restores_bit_for_bit(act):
+    steps = [(0.17 + 0.01 * k, 150.0 + 5.0 * k, 263.15 + 0.5 * k) for k in range(30)]
+    a = A.ActuatorModel(act)
+    for args in steps[:15]:
+        a.evaluate(*args)
+    saved = json.loads(json.dumps(a.state()))
+    rest_a = [a.evaluate(*args) for args in steps[15:]]
+    b = A.ActuatorModel(act)
+    b.restore(saved)
+    assert [b.evaluate(*args) for args in steps[15:]] == rest_a
+
+
+@pytest.mark.parametrize(
+    "args, match",
+    [
+        ((float("nan"), 100.0, 293.15), "output_angle = nan rad"),
+        ((0.1, float("inf"), 293.15), "load_torque = inf N·m"),
+        ((0.1, 100.0, -3.0), "temperature = -3.0 K"),
+    ],
+)
+def test_per_step_model_names_bad_input(act, args, match):
+    with pytest.raises(ValueError, match=re.escape(match)):
+        A.ActuatorModel(act).evaluate(*args)
+
+
+def test_per_step_model_refuses_angles_beyond_the_reach_like_the_vectorised_path(bare):
+    short = dataclasses.replace(bare, rod_length=0.03)  # sin γ reaches −1 near δ = 1.3 rad
+    with pytest.raises(ValueError, match="outside the linkage's reach") as vectorised:
+        A.stiffness_breakdown(short, 1.5, 100.0)
+    with pytest.raises(ValueError) as per_step:
+        A.ActuatorModel(short).evaluate(1.5, 100.0, 293.15)
+    assert str(per_step.value) == str(vectorised.value)

@@ -7,6 +7,7 @@ offsets to 1e-16 m).
 """
 
 import dataclasses
+import itertools
 import json
 import math
 
@@ -14,7 +15,7 @@ import numpy as np
 import pytest
 from scipy.special import ellipe, ellipk
 
-from servofmu.physics import continuation
+from servofmu.physics import catalog, continuation
 from servofmu.physics.bearing import (
     BearingModel,
     BearingPair,
@@ -22,6 +23,8 @@ from servofmu.physics.bearing import (
     operating_outputs,
     with_mounting,
 )
+from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
+from servofmu.physics.friction import ball_torque_terms
 from servofmu.physics.hertz import curvature_difference_of_ellipticity, ellipticity
 
 REL = 1e-9
@@ -216,3 +219,205 @@ def test_state_restore_right_after_an_exact_solve_repeats_bit_for_bit():
     b.restore(saved)
     assert b.evaluate(322.0, 0.0, 0.0, 1.0) == first
     assert b.evaluate(322.5, 0.0, 0.0, 1.0) == nxt
+
+
+def _bench_ramp(k):
+    """benchmarks/bench_fmus.py's ramp: −60 → +80 °C over 1000 steps and back [K]."""
+    phase = (k % 2000) / 1000.0
+    return 213.15 + 140.0 * (phase if phase <= 1.0 else 2.0 - phase)
+
+
+def test_radial_load_through_zero_while_bearing_b_unloads():
+    # bench_fmus.py's radial ramp at steps 2700–2724: warm (≈ 40 °C), 21 N axial lifts bearing
+    # B almost off, and the radial load passes within 2e-5 N of zero: B's balls leave contact
+    # between steps, and the solver moves B radially back into touch (no exact fallback)
+    pair = pair_from_parameters(default_parameters("yu2017_gimbal"))
+    model = BearingModel(pair)
+    for k in range(2700, 2725):
+        args = (
+            _bench_ramp(k),
+            0.2 * math.sin(1e-3 * k),
+            20.0 + 10.0 * math.sin(7e-3 * k),
+            10.0 + 10.0 * math.sin(1.1e-2 * k),
+        )
+        out = model.evaluate(*args)
+        assert_equal_outputs(out, operating_outputs(pair, *args), f"step {k}")
+    assert model.exact_steps == 1  # the first step only
+
+
+def test_radial_load_changing_sign_and_axial_load_crossing_zero():
+    pair = PAIRS["yu_yoke"]()
+    model = BearingModel(pair)
+    n = 30
+    t = np.linspace(263.15, 283.15, n)
+    fa = np.linspace(-6.0, 8.0, n)  # through zero: bearing A takes over from B
+    fr = 3.0 * np.cos(np.linspace(0.0, np.pi, n))  # +3 N → −3 N, never exactly 0
+    for i in range(n):
+        args = (float(t[i]), 0.1, float(fa[i]), float(fr[i]))
+        out = model.evaluate(*args)
+        if i % 3 == 0:
+            assert_equal_outputs(out, operating_outputs(pair, *args), f"step {i}")
+    assert model.exact_steps <= 2
+
+
+def test_state_restore_mid_radial_ramp_repeats_bit_for_bit():
+    # the restored state carries the balls' anchors and bases, the last Jacobian (load
+    # predictor) and the secant of the temperature change
+    pair = PAIRS["yu_printed"]()
+    steps = [(253.15 + 0.2 * k, 0.1, 10.0 + 0.3 * k, 5.0 + 0.2 * math.sin(k)) for k in range(40)]
+    a = BearingModel(pair)
+    for args in steps[:20]:
+        a.evaluate(*args)
+    saved = json.loads(json.dumps(a.state()))
+    rest_a = [a.evaluate(*args) for args in steps[20:]]
+    b = BearingModel(pair)
+    b.restore(saved)
+    rest_b = [b.evaluate(*args) for args in steps[20:]]
+    assert rest_a == rest_b
+    assert b.exact_steps == 0
+
+
+@pytest.mark.parametrize("key", ["71803", "6000", "7204C", "71807C", "61804", "7000C"])
+def test_hertz_constants_follow_a_base_within_its_spans(key):
+    # c_δ, a_coef, k and E from a ball's base at (γ0, 1/f0), moved by up to GAMMA_SPAN in γ and
+    # INV_F_SPAN in 1/f, against contact_terms anchored exactly at the new point: relative
+    # error below 2e-12 (second order in γ, first in 1/f)
+    c = continuation.PairConstants(PAIRS["yu_printed"]())  # steel on steel
+    geom = catalog.bearing(key).race_geometry()
+    gs = float(geom.ball_diameter / geom.pitch_diameter)
+    spans = (continuation.GAMMA_SPAN, continuation.INV_F_SPAN)
+    worst = 0.0
+    for alpha in np.radians([0.0, 15.0, 25.0, 40.0]):
+        g0 = gs * float(np.cos(alpha))
+        for inner, curvature in ((True, geom.inner_curvature), (False, geom.outer_curvature)):
+            f0 = 1.0 / float(curvature)
+            anchor = continuation.Anchor(_exact_k(g0, f0, inner))
+            t0 = continuation.contact_terms(c, g0, f0, inner, anchor)
+            for dg, df in itertools.product((-spans[0], spans[0]), (-spans[1], 0.0, spans[1])):
+                g1, f1 = g0 + dg, f0 + df
+                t1 = continuation.contact_terms(
+                    c, g1, f1, inner, continuation.Anchor(_exact_k(g1, f1, inner))
+                )
+                for q in range(4):  # c_δ, a_coef, k, E
+                    v0, v1, v2, vf = t0[4 * q : 4 * q + 4]
+                    follow = v0 + dg * (v1 + v2 * dg) + vf * df
+                    worst = max(worst, abs(follow / t1[4 * q] - 1.0))
+    assert worst < 2e-12
+
+
+def _exact_k(gamma, inv_f, inner):
+    rt = 2.0 * gamma / (1.0 - gamma) if inner else -2.0 * gamma / (1.0 + gamma)
+    return float(ellipticity((inv_f + rt) / (4.0 - inv_f + rt)))
+
+
+def test_contact_terms_derivatives_against_finite_differences():
+    c = continuation.PairConstants(PAIRS["yu_printed"]())
+    g0, f0, h = 0.107, 1.92, 1e-6
+    for inner in (True, False):
+        anchor = continuation.Anchor(_exact_k(g0, f0, inner))
+
+        def terms(g, f, inner=inner, anchor=anchor):
+            return continuation.contact_terms(c, g, f, inner, anchor)
+
+        t0, gp, gm = terms(g0, f0), terms(g0 + h, f0), terms(g0 - h, f0)
+        fp, fm = terms(g0, f0 + h), terms(g0, f0 - h)
+        h2 = 1e-4  # the second differences' step: rounding below 1e-6 of the value
+        gp2, gm2 = terms(g0 + h2, f0), terms(g0 - h2, f0)
+        for q in range(4):
+            i = 4 * q
+            assert t0[i + 1] == pytest.approx((gp[i] - gm[i]) / (2 * h), rel=1e-6)
+            assert t0[i + 3] == pytest.approx((fp[i] - fm[i]) / (2 * h), rel=1e-6)
+            second = (gp2[i] - 2 * t0[i] + gm2[i]) / h2**2
+            assert 2 * t0[i + 2] == pytest.approx(second, rel=1e-3, abs=1e-9 * abs(t0[i]))
+
+
+@pytest.mark.parametrize("f_rho", [0.85, 0.93, 0.97])
+def test_anchor_expansion_error_at_the_redo_threshold(f_rho):
+    # beyond ANCHOR_DRIFT an anchor is renewed for the next step; a step is solved again only
+    # beyond ANCHOR_REDO: up to there the expansion's error stays below 2e-11
+    k0 = ellipticity(f_rho)
+    anchor = continuation.Anchor(k0)
+    k_true = k0 * (1.0 + continuation.ANCHOR_REDO)
+    q = (curvature_difference_of_ellipticity(k_true) - anchor.f) / anchor.f1
+    k = anchor.k + q * (1.0 - 0.5 * anchor.f2 * q / anchor.f1)
+    dm = (1.0 - 1.0 / k**2) - anchor.m
+    m_true = 1.0 - 1.0 / k_true**2
+    assert k == pytest.approx(k_true, rel=2e-11)
+    k_int = anchor.k_int + (anchor.k1 + 0.5 * anchor.k2 * dm) * dm
+    e_int = anchor.e_int + (anchor.e1 + 0.5 * anchor.e2 * dm) * dm
+    assert k_int == pytest.approx(float(ellipk(m_true)), rel=2e-11)
+    assert e_int == pytest.approx(float(ellipe(m_true)), rel=2e-11)
+
+
+@pytest.mark.parametrize("name", ["yu_printed", "ning_solid"])
+def test_ring_torques_equal_ball_torque_terms(name):
+    # ring_sums writes the torques as coefficients × products; friction.ball_torque_terms is
+    # the definition: the same numbers ball by ball, radial load (8 different balls)
+    pair = PAIRS[name]()
+    model = BearingModel(pair)
+    model.evaluate(273.15, 0.1, 15.0, 6.0)
+    model.evaluate(273.25, 0.1, 15.2, 6.1)  # a continuation step: the balls hold its state
+    th, c = model._th, model.solver.c
+    for ring in model.solver.rings:
+        expected = np.zeros(5)
+        for b in ring:
+            if b.load <= 0.0:
+                continue
+            g0, fi0, fo0, _, terms = b.base
+            d = th.gamma_scale * b.cos_a - g0
+            shifts = (th.inv_f_inner - fi0, th.inv_f_outer - fo0)
+            q3 = b.load ** (1.0 / 3.0)
+            contacts = []
+            for t, df in zip((terms[:12], terms[12:]), shifts, strict=True):
+                a_coef, k, e = (
+                    t[j] + d * (t[j + 1] + t[j + 2] * d) + t[j + 3] * df for j in (0, 4, 8)
+                )
+                a_coef *= th.dw_third
+                contacts.append((a_coef * q3, a_coef / k * q3, e))
+            dw, dm = th.ball_diameter, th.pitch_diameter
+            h_i, h_o, sl_i, sl_o, sp_i, sp_o = ball_torque_terms(
+                b.load,
+                contacts[0],
+                contacts[1],
+                0.5 * (dm - dw * b.cos_a),
+                0.5 * (dm + dw * b.cos_a),
+                abs(b.sin_a),
+                dw,
+                (th.inner_groove_radius, th.outer_groove_radius),
+                pair.coefficients,
+                pair.lubrication == "solid",
+                pair.sliding,
+            )
+            w = b.weight
+            expected += w * np.array(
+                [h_i + h_o, sp_i + sp_o, sl_i + sl_o, h_i + sl_i + sp_i, h_o + sl_o + sp_o]
+            )
+        anchors = [(b.anc_i.k, b.anc_o.k) for b in ring]
+        got = continuation.ring_sums(th, c, ring)[:5]
+        assert [(b.anc_i.k, b.anc_o.k) for b in ring] == anchors  # no renewal in between
+        np.testing.assert_allclose(got, expected, rtol=1e-13, atol=0.0)
+
+
+def test_failed_warm_start_and_failed_exact_solve_name_the_point(monkeypatch):
+    # a warm start that fails falls back to the exact path; when that fails too, the call
+    # raises a ValueError naming temperatures and loads, and the model keeps its last state
+    from servofmu.physics import bearing as bm
+
+    pair = PAIRS["yu_printed"]()
+    model = BearingModel(pair)
+    good = model.evaluate(293.15, 0.1, 5.0)
+    monkeypatch.setattr(model.solver, "solve", lambda *a: None)
+    fallback = model.evaluate(294.15, 0.1, 6.0)
+    assert model.exact_steps == 2
+    assert_equal_outputs(fallback, operating_outputs(pair, 294.15, 0.1, 6.0))
+
+    def broken(*a, **k):
+        raise ArithmeticError("no equilibrium")
+
+    monkeypatch.setattr(bm, "load_state", broken)
+    where = r"\(295\.15, 295\.15, 295\.15, 295\.15\) K, axial_load = 7\.0 N, radial_load = 0\.0 N"
+    with pytest.raises(ValueError, match=where + ": no equilibrium"):
+        model.evaluate(295.15, 0.1, 7.0)
+    assert model.evaluate(294.15, 0.1, 6.0) == fallback  # the last state is kept
+    monkeypatch.undo()
+    assert_equal_outputs(model.evaluate(293.15, 0.1, 5.0), good)  # and it carries on

@@ -210,6 +210,29 @@ def test_bad_input_is_discarded_with_a_message_and_the_instance_recovers(
     fmu.close()
 
 
+def test_bearing_step_without_a_state_is_discarded_naming_the_point(fmus, monkeypatch):
+    # the warm start fails and the exact solve fails too: the step is discarded with a message
+    # naming temperatures and loads, and the instance carries on once a state exists again
+    from servofmu.physics import bearing as bm
+
+    fmu = Fmu(fmus["BearingFriction"], "nostate").init(temperature=293.15, axial_load=5.0)
+
+    def no_equilibrium(*args, **kwargs):
+        raise ArithmeticError("no equilibrium")
+
+    monkeypatch.setattr(bm.PairSolver, "solve", lambda *args: None)
+    monkeypatch.setattr(bm, "load_state", no_equilibrium)
+    fmu.set(temperature=300.0, axial_load=6.0)
+    with pytest.raises(FMICallException, match="status 2"):
+        fmu.slave.doStep(0.0, 1e-3)
+    text = "(300.0, 300.0, 300.0, 300.0) K, axial_load = 6.0 N, radial_load = 0.0 N"
+    assert any(text in m and "no equilibrium" in m for _, m in fmu.log), fmu.log
+    monkeypatch.undo()
+    fmu.slave.doStep(0.0, 1e-3)
+    assert math.isfinite(fmu.get("friction_torque"))
+    fmu.close()
+
+
 #: BearingFriction's declared ranges (the model's −100…+200 °C, README) and, for each, a value
 #: just outside that the physics itself accepts: only the FMU's own check can refuse it.
 BEARING_INPUT_RANGES = [

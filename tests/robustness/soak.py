@@ -27,8 +27,7 @@ NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "
 
 
 # inputs as functions of the step index k: in range, varying every step; the temperature
-# moves every 1000 steps (a chamber's steps: a new temperature with an axial load costs a
-# thermal solve and an axial-load table, about 14 ms, see the README's performance section)
+# moves every 1000 steps (a chamber's steps, each solved by the bearing's continuation)
 def _chamber(k: int, mean: float, amplitude: float) -> float:
     return mean + amplitude * math.sin(0.1 * (k // 1000))
 

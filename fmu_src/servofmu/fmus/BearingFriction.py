@@ -21,6 +21,7 @@ from __future__ import annotations
 from servofmu.fmus.slave import Item, ServoSlave, Var, output, real_input, spec_parameter
 from servofmu.physics.bearing import BearingModel
 from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in
+from servofmu.physics.pair_state import PointState
 
 #: How the temperature inputs are read (parameter ``temperature_mode``): every part at
 #: ``temperature``; the rings at their seats' temperatures; or each part its own input.
@@ -254,6 +255,7 @@ class BearingFriction(ServoSlave):
         *(spec_parameter(p) for p in PARAMETERS),
     )
     _SPEED_OUTPUTS = _outputs_of(_SPEED_FIELDS, VARIABLES)  # those that move with speed alone
+    _set_speed = staticmethod(ServoSlave.output_setter(_SPEED_OUTPUTS))
 
     def configure(self):
         values = {p.name: getattr(self, p.name) for p in PARAMETERS}
@@ -262,6 +264,8 @@ class BearingFriction(ServoSlave):
                 values[p.name] = p.key(values[p.name])  # the item's key
         self._point = None  # (temperatures, axial_load, radial_load) of the last evaluate
         self.model = BearingModel(pair_from_parameters(values))
+        # the outputs that do not move with speed: copied from the model's PointState
+        self._copy_state = self.output_copier(PointState.__dataclass_fields__)
 
     def hidden_state(self):
         # the continuation of the thermal and load state (physics/continuation.py): a restored
@@ -294,11 +298,16 @@ class BearingFriction(ServoSlave):
     def compute(self):
         temps = self._temperatures()
         point = (temps, self.axial_load, self.radial_load)
-        if point == self._point:  # only the speed changed: the speed terms alone
-            for name, value in zip(
-                self._SPEED_OUTPUTS, self.model.speed_outputs(self.speed), strict=True
-            ):
-                setattr(self, name, value)
-            return
-        self.copy_outputs(self.model.evaluate(temps, self.speed, self.axial_load, self.radial_load))
-        self._point = point
+        if point != self._point:  # else only the speed changed: the speed terms alone
+            self._copy_state(self, self.model.update(temps, self.axial_load, self.radial_load))
+            self._point = point
+        self._set_speed(self, self.model.speed_outputs(self.speed))
+
+
+# every output is either in the model's PointState or moves with speed (compute copies those)
+_UNCOPIED = {v.field for v in BearingFriction.VARIABLES if v.causality == "output"} - {
+    *PointState.__dataclass_fields__,
+    *_SPEED_FIELDS,
+}
+if _UNCOPIED:
+    raise TypeError(f"BearingFriction outputs without a source in compute(): {sorted(_UNCOPIED)}")

@@ -43,6 +43,7 @@ R = |CA|, ψ = atan2(Y1, x_A); the reach ends at the dead centres (R = L1 + L2, 
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -170,8 +171,63 @@ class Kinematics:
     lever: np.ndarray
 
 
+class _Floats:
+    """The functions the crank-slider equations use, on Python floats (math module): the
+    per-step path of :class:`ActuatorModel` runs the same equations as the vectorised
+    functions (which pass numpy), at a fraction of a microsecond per call."""
+
+    sin, cos, tan, sqrt = (
+        staticmethod(math.sin),
+        staticmethod(math.cos),
+        staticmethod(math.tan),
+        staticmethod(math.sqrt),
+    )
+    arcsin, arccos, arctan = (
+        staticmethod(math.asin),
+        staticmethod(math.acos),
+        staticmethod(math.atan),
+    )
+    arctan2, abs, maximum = staticmethod(math.atan2), staticmethod(abs), staticmethod(max)
+
+    @staticmethod
+    def clip(x, lo, hi):
+        return min(max(x, lo), hi)
+
+    @staticmethod
+    def sign(x):
+        return float((x > 0.0) - (x < 0.0))
+
+
 def _sin_rod_angle(act: Actuator, theta):
     return (act.crank_length * np.sin(theta) - act.slide_offset) / act.rod_length
+
+
+def _crank_slider(theta, l1: float, l2: float, y1: float, sin_gamma, xp):
+    """(γ, β, x_A, dx_A/dθ) at crank angle θ [rad] for crank L1, rod L2 [m], slide height
+    Y1 [m] and sin γ of eq 9 (Liu 2014 eq 2–3, 9), with the functions of ``xp`` (numpy for
+    arrays, :class:`_Floats` for floats)."""
+    gamma = xp.arcsin(sin_gamma)
+    cos_t, sin_t, cos_g = xp.cos(theta), xp.sin(theta), xp.cos(gamma)
+    x = l1 * cos_t + l2 * cos_g
+    lever = -l1 * (sin_t + cos_t * xp.tan(gamma))
+    # β: angle at B between B→C = −(cos θ, sin θ) and B→A = (cos γ, −sin γ)
+    beta = xp.arccos(xp.clip(sin_t * xp.sin(gamma) - cos_t * cos_g, -1.0, 1.0))
+    return gamma, beta, x, lever
+
+
+def _reach_error(act: Actuator, delta: float) -> ValueError:
+    return ValueError(
+        f"output_angle = {delta!r} rad is outside the linkage's reach: sin γ = "
+        f"(L1·sin θ − Y1)/L2 reaches ±1 (crank {act.crank_length!r} m, rod "
+        f"{act.rod_length!r} m)"
+    )
+
+
+def _dead_centre_error(delta: float) -> ValueError:
+    return ValueError(
+        f"output_angle = {delta!r} rad puts the linkage at a dead centre (crank and rod in "
+        "line): no moment can be carried"
+    )
 
 
 def kinematics(act: Actuator, output_angle) -> Kinematics:
@@ -182,27 +238,12 @@ def kinematics(act: Actuator, output_angle) -> Kinematics:
     theta = act.neutral_crank_angle + delta
     s = _sin_rod_angle(act, theta)
     if np.any(np.abs(s) >= 1.0):
-        bad = float(np.asarray(delta)[np.abs(s) >= 1.0].flat[0])
-        raise ValueError(
-            f"output_angle = {bad!r} rad is outside the linkage's reach: sin γ = "
-            f"(L1·sin θ − Y1)/L2 reaches ±1 (crank {act.crank_length!r} m, rod "
-            f"{act.rod_length!r} m)"
-        )
-    gamma = np.arcsin(s)
+        raise _reach_error(act, float(np.asarray(delta)[np.abs(s) >= 1.0].flat[0]))
     l1 = act.crank_length
-    x = l1 * np.cos(theta) + act.rod_length * np.cos(gamma)
-    lever = -l1 * (np.sin(theta) + np.cos(theta) * np.tan(gamma))
-    # β: angle at B between B→C (−crank direction) and B→A (rod direction)
-    bc = -np.stack([np.cos(theta), np.sin(theta)])
-    ba = np.stack([np.cos(gamma), -np.sin(gamma)])
-    beta = np.arccos(np.clip(np.sum(bc * ba, axis=0), -1.0, 1.0))
+    gamma, beta, x, lever = _crank_slider(theta, l1, act.rod_length, act.slide_offset, s, np)
     dead = np.abs(lever) < 1e-6 * l1
     if np.any(dead):
-        bad = float(np.asarray(delta)[dead].flat[0])
-        raise ValueError(
-            f"output_angle = {bad!r} rad puts the linkage at a dead centre (crank and rod in "
-            "line): no moment can be carried"
-        )
+        raise _dead_centre_error(float(np.asarray(delta)[dead].flat[0]))
     return Kinematics(theta, gamma, beta, x, lever)
 
 
@@ -333,31 +374,39 @@ def linkage_rotation(act: Actuator, output_angle, load_torque) -> np.ndarray:
     held (Liu 2014 eq 10–19, eq 18–19 with the second moment of area I)."""
     m = np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float)
     kin = kinematics(act, output_angle)
+    return _rotation(
+        act, kin.crank_angle, kin.transmission_angle, kin.nut_position, act.slide_offset, m, np
+    )
+
+
+def _rotation(act: Actuator, theta, beta, x_nut, y1: float, m, xp):
+    """:func:`linkage_rotation` at crank angle θ, transmission angle β [rad] and nut position
+    x_A [m], with the functions of ``xp`` (numpy, or :class:`_Floats` on floats)."""
     l1, l2, e = act.crank_length, act.rod_length, act.youngs_modulus
-    sin_b, cos_b = np.sin(kin.transmission_angle), np.cos(kin.transmission_angle)
+    sin_b, cos_b = xp.sin(beta), xp.cos(beta)
     f2 = m / (l1 * sin_b)  # eq 10: rod force (compression for M > 0)
     # eq 12–13: crank carries F2·cos β along its length, the rod F2 (compression shortens)
     l1_new = l1 + f2 * cos_b * l1 / (e * act.crank_area)
     l2_new = l2 - f2 * l2 / (e * act.rod_area)
     # eq 14–16: close the mechanism again with the nut A fixed: B' is the intersection of the
     # circles |CB'| = L1', |AB'| = L2' on the side of the undeformed B
-    ax, ay = kin.nut_position, act.slide_offset
-    d2 = ax**2 + ay**2
-    d = np.sqrt(d2)
-    along = (l1_new**2 - l2_new**2 + d2) / (2.0 * d)
-    across = np.sqrt(np.maximum(l1_new**2 - along**2, 0.0))
+    ax, ay = x_nut, y1
+    d2 = ax * ax + ay * ay
+    d = xp.sqrt(d2)
+    along = (l1_new * l1_new - l2_new * l2_new + d2) / (2.0 * d)
+    across = xp.sqrt(xp.maximum(l1_new * l1_new - along * along, 0.0))
     ux, uy = ax / d, ay / d
-    bx0, by0 = l1 * np.cos(kin.crank_angle), l1 * np.sin(kin.crank_angle)
-    side = np.sign(ux * by0 - uy * bx0)  # which of the two intersections is B
+    bx0, by0 = l1 * xp.cos(theta), l1 * xp.sin(theta)
+    side = xp.sign(ux * by0 - uy * bx0)  # which of the two intersections is B
     bx = along * ux - side * across * uy
     by = along * uy + side * across * ux
-    theta_new = np.arctan2(by, bx)
-    d_theta1 = np.angle(np.exp(1j * (theta_new - kin.crank_angle)))
+    d_theta = xp.arctan2(by, bx) - theta
+    d_theta1 = xp.arctan2(xp.sin(d_theta), xp.cos(d_theta))  # wrapped to (−π, π]
     torsion = m * act.arm_length / (act.shear_modulus * act.shaft_polar_moment)  # eq 17
-    bending = np.arctan(
+    bending = xp.arctan(
         m * act.arm_length**2 / (3.0 * e * act.arm_second_moment * l1)
     )  # eq 18–19, with I
-    return np.abs(d_theta1) * np.sign(m) + torsion + bending
+    return xp.abs(d_theta1) * xp.sign(m) + torsion + bending
 
 
 #: Smallest hinge moment [N·m] whose linkage rotation eq 14–16 resolve: below it the closure
@@ -418,7 +467,7 @@ def stiffness_breakdown(
     extension) for output angle δ [rad], hinge moment M [N·m] and temperature T [K], all
     broadcast together. Elastic moduli are temperature-independent; the support-bearing
     preload follows the thermal coupling of :mod:`bearing`. ``support(F3, T)`` may replace
-    :func:`support_axial_stiffness` (the FMU passes its cached, tabulated version)."""
+    :func:`support_axial_stiffness` (:class:`ActuatorModel` has its own per-step path)."""
     delta, m, t = np.broadcast_arrays(
         np.asarray(check_finite("output_angle", output_angle, "rad"), dtype=float),
         np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float),
@@ -495,9 +544,10 @@ def per_degree(stiffness):
 
 class ActuatorModel:
     """Scalar evaluation of an :class:`Actuator` for the per-step path of the FMU: the
-    support-bearing pair is solved by :class:`bearing.BearingModel` (continuation from the
-    previous step, exact to 1e-9) instead of the exact nested solve; everything else is
-    :func:`stiffness_breakdown`."""
+    equations of :func:`stiffness_breakdown` on Python floats (the shared cores
+    :func:`_crank_slider` and :func:`_rotation` with the math module), and the support-bearing
+    pair solved by :class:`bearing.BearingModel` (continuation from the previous step, exact
+    to 1e-9) instead of the exact nested solve."""
 
     def __init__(self, act: Actuator, support_pair=None):
         """``support_pair``: a :class:`bearing.BearingPair` replacing the catalogue pair of
@@ -509,15 +559,18 @@ class ActuatorModel:
 
             pair = support_pair or _support_pair(act.support_mounting)
             self._bearings = BearingModel(pair)
+        self._y1 = float(act.slide_offset)
+        self._screw_ratio = 2.0 * math.pi * act.crank_length / act.screw_lead  # i_s (eq 1)
 
-    def _support(self, screw_force, temperature):
-        f3, t = float(screw_force), float(temperature)
+    def _support(self, screw_force: float, temperature: float) -> float:
+        """:func:`support_axial_stiffness` on floats, the pair by continuation [N/m]."""
         if self._bearings is None:
-            return np.inf
-        out = self._bearings.evaluate(t, 0.0, f3)
+            return math.inf
+        f3 = screw_force
+        out = self._bearings.update(temperature, f3)
         secant = f3 >= SMALLEST_SCREW_FORCE and out.axial_displacement > 0
         bearing = f3 / out.axial_displacement if secant else out.axial_stiffness
-        return float(series_stiffness(bearing, self.act.seat_stiffness))
+        return _series_floats(bearing, self.act.seat_stiffness)
 
     def state(self) -> dict | None:
         """The support pair's continuation state (JSON-serialisable; None without one)."""
@@ -529,8 +582,50 @@ class ActuatorModel:
             self._bearings.restore(state)
 
     def evaluate(self, output_angle: float, load_torque: float, temperature: float):
-        """:class:`StiffnessBreakdown` with float fields at one operating point."""
-        b = stiffness_breakdown(
-            self.act, output_angle, load_torque, temperature, support=self._support
+        """:class:`StiffnessBreakdown` with float fields at one operating point: output angle
+        δ [rad], hinge moment M [N·m], temperature T [K] (the equations of
+        :func:`stiffness_breakdown`; ValueError naming a bad argument)."""
+        act = self.act
+        delta = _finite_float("output_angle", output_angle, "rad")
+        m = _finite_float("load_torque", load_torque, "N·m")
+        t = _finite_float("temperature", temperature, "K")
+        if not t > 0.0:
+            raise ValueError(f"temperature = {t!r} K is outside the valid range (0, inf) K")
+        l1 = act.crank_length
+        theta = act.neutral_crank_angle + delta
+        s = (l1 * math.sin(theta) - self._y1) / act.rod_length
+        if not abs(s) < 1.0:
+            raise _reach_error(act, delta)
+        _, beta, x, lever = _crank_slider(theta, l1, act.rod_length, self._y1, s, _Floats)
+        if abs(lever) < 1e-6 * l1:
+            raise _dead_centre_error(delta)
+        lever2 = lever * lever
+        gear = (2.0 * math.pi / act.screw_lead) ** 2 * lever2 * act.gear_stiffness
+        screw = lever2 * act.screw_stiffness
+        housing = lever2 * act.housing_stiffness
+        probe = m if abs(m) >= SMALLEST_MOMENT else math.copysign(SMALLEST_MOMENT, m)
+        linkage = probe / _rotation(act, theta, beta, x, self._y1, probe, _Floats)
+        f3 = abs(m) / abs(lever)
+        support = lever2 * self._support(f3, t)
+        total = _series_floats(gear, screw, linkage, housing, support)
+        ratio = act.gear_ratio * self._screw_ratio * (abs(lever) / l1)
+        return StiffnessBreakdown(
+            gear, screw, linkage, housing, support, total, m / total, ratio, f3
         )
-        return StiffnessBreakdown(*(float(getattr(b, f)) for f in b.__dataclass_fields__))
+
+
+def _finite_float(name: str, value, unit: str) -> float:
+    v = float(value)
+    if not math.isfinite(v):
+        raise ValueError(f"{name} = {v!r} {unit} is outside the valid range (-inf, inf)")
+    return v
+
+
+def _series_floats(*stiffnesses: float) -> float:
+    """:func:`series_stiffness` on floats."""
+    compliance = 0.0
+    for i, k in enumerate(stiffnesses):
+        if not k > 0.0:
+            raise ValueError(f"stiffness[{i}] = {k!r} must be > 0")
+        compliance += 1.0 / k
+    return 1.0 / compliance

@@ -21,13 +21,7 @@ from __future__ import annotations
 
 import math
 
-from .continuation import (
-    AxialSolution,
-    PairSolver,
-    axial_state_of,
-    radial_state_of,
-    thermal_floats,
-)
+from .continuation import PairSolver, thermal_floats
 from .mounting import Mounting
 from .pair import (
     DEFAULT_COEFFICIENTS,
@@ -44,8 +38,8 @@ from .pair import (
 from .pair_state import (
     BearingOutputs,
     LoadState,
+    PointState,
     ThermalState,
-    _speed_terms,
     axial_load_state,
     bearing_outputs,
     load_state,
@@ -90,6 +84,14 @@ def _temperatures(temperature) -> tuple[float, float, float, float]:
     """(housing, shaft, outer ring, inner ring) [K] as floats from a uniform temperature, a
     :class:`PartTemperatures` or a 4-tuple; ValueError naming a non-finite or non-positive
     one."""
+    if type(temperature) is float and 0.0 < temperature < math.inf:  # the per-step cases
+        return (temperature, temperature, temperature, temperature)
+    if type(temperature) is tuple and len(temperature) == 4:
+        h, s, o, i = temperature
+        if type(h) is type(s) is type(o) is type(i) is float and (
+            0.0 < h < math.inf and 0.0 < s < math.inf and 0.0 < o < math.inf and 0.0 < i < math.inf
+        ):
+            return temperature
     if isinstance(temperature, PartTemperatures):
         temps = tuple(float(getattr(temperature, p)) for p in PARTS)
     elif isinstance(temperature, tuple):
@@ -112,7 +114,9 @@ class BearingModel:
     (:class:`continuation.PairSolver`); the exact path (:func:`thermal_state`,
     :func:`load_state`) solves the first call, and any call whose warm start fails, and seeds
     the continuation again. A call whose temperatures and loads equal the previous call's
-    reuses its state: a change of speed alone costs only the speed terms.
+    reuses its state (:class:`~.pair_state.PointState`): a change of speed alone costs only
+    the speed terms; a call whose temperatures equal the previous call's reuses the thermal
+    state.
 
     Attributes
     ----------
@@ -123,74 +127,89 @@ class BearingModel:
     def __init__(self, pair: BearingPair):
         self.pair = pair
         self.solver = PairSolver(pair)
-        self._key = None  # (temperatures, axial load, radial load) of the current state
-        self._th = None
-        self._state: LoadState | None = None
-        self._exact_last = False  # the current state came from the exact path
+        self._temps = None  # the parts' temperatures of the current state [K]
+        self._axial = self._radial = None  # the loads of the current state [N]
+        self._th = None  # thermal state (floats) at self._temps
+        self._point: PointState | None = None
         self.steps = 0
         self.exact_steps = 0
 
     # ---------------------------------------------------------------- state
     def state(self) -> dict:
-        """The per-step state (JSON-serialisable): the continuation and the operating point
-        of the current outputs. With :meth:`restore`, a model continues bit for bit."""
-        key = None if self._key is None else [*self._key[0], self._key[1], self._key[2]]
-        return {"solver": self.solver.state(), "point": key, "exact": self._exact_last}
+        """The per-step state (JSON-serialisable): the continuation, the operating point and
+        the state there. With :meth:`restore`, a model continues bit for bit."""
+        if self._point is None:
+            return {"solver": self.solver.state(), "point": None, "values": None}
+        return {
+            "solver": self.solver.state(),
+            "point": [*self._temps, self._axial, self._radial],
+            "values": self._point.as_dict(),
+        }
 
     def restore(self, state: dict | None) -> None:
-        """Continue from a :meth:`state`: the outputs at its operating point are evaluated
-        again the way they were first solved (exactly, or at the continuation's solution with
-        its anchors), without a new solve, so that the next steps repeat bit for bit."""
-        state = state or {"solver": None, "point": None, "exact": False}
+        """Continue from a :meth:`state`: the state at its operating point as it was, and the
+        continuation from there, so that the next steps repeat bit for bit."""
+        state = state or {"solver": None, "point": None, "values": None}
+        self._temps = self._axial = self._radial = self._th = self._point = None
         self.solver.restore(state["solver"])
-        self._key, self._exact_last = None, bool(state["exact"])
         point = state["point"]
         if point is None:
             return
-        temps, axial, radial = tuple(float(t) for t in point[:4]), float(point[4]), float(point[5])
-        if self._exact_last:
-            self._th, self._state = self._exact(temps, axial, radial, seed=False)
-        else:
-            th = thermal_floats(self.solver.c, temps)
-            self._th, self._state = th, self._state_of(th, self.solver.evaluate(th, axial, radial))
-        self._key = (temps, axial, radial)
+        self._temps = tuple(float(t) for t in point[:4])
+        self._axial, self._radial = float(point[4]), float(point[5])
+        self._th = thermal_floats(self.solver.c, self._temps)
+        self._point = PointState(**state["values"])
 
     # ---------------------------------------------------------------- per step
-    def _exact(self, temps, axial_load: float, radial_load: float, seed: bool = True):
-        th_exact = thermal_state(self.pair, PartTemperatures(*temps))
+    def _exact(self, th, temps, axial_load: float, radial_load: float) -> PointState:
+        th_exact = to_floats(thermal_state(self.pair, PartTemperatures(*temps)))
         ls = to_floats(load_state(self.pair, th_exact, axial_load, radial_load))
-        if seed:
-            th = thermal_floats(self.solver.c, temps)
-            p = 0.5 * (ls.offset_a + ls.offset_b)
-            z = 0.5 * (ls.offset_a - ls.offset_b)
-            inputs = (*temps, axial_load, radial_load)
-            if radial_load == 0.0:
-                self.solver.seed(th, inputs, (p, z))
-            else:
-                x = (p, z, ls.radial_a, ls.radial_b)
-                self.solver.seed(th, inputs, x, ls.ball_cosines)
-        return to_floats(th_exact), ls
+        p = 0.5 * (ls.offset_a + ls.offset_b)
+        z = 0.5 * (ls.offset_a - ls.offset_b)
+        inputs = (*temps, axial_load, radial_load)
+        if radial_load == 0.0:
+            self.solver.seed(th, inputs, (p, z))
+        else:
+            self.solver.seed(th, inputs, (p, z, ls.radial_a, ls.radial_b), ls.ball_cosines)
+        return PointState.exact(self.pair, th_exact, ls)
 
-    def _state_of(self, th, sol) -> LoadState:
-        if isinstance(sol, AxialSolution):
-            return axial_state_of(self.pair, self.solver.c, th, sol)
-        return radial_state_of(self.pair, self.solver, th, sol)
-
-    def _solve(self, temps, axial_load: float, radial_load: float):
-        th = thermal_floats(self.solver.c, temps)
-        sol = self.solver.solve(th, axial_load, radial_load)
-        self._exact_last = sol is None
-        if sol is None:
+    def _solve(self, temps, axial_load: float, radial_load: float) -> PointState:
+        th = self._th if temps == self._temps else thermal_floats(self.solver.c, temps)
+        point = self.solver.solve(th, axial_load, radial_load)
+        if point is None:
             self.exact_steps += 1
             try:
-                return self._exact(temps, axial_load, radial_load)
+                point = self._exact(th, temps, axial_load, radial_load)
             except (ValueError, ArithmeticError) as exc:
                 raise ValueError(
                     f"no state at temperatures (housing, shaft, outer ring, inner ring) = "
                     f"{temps} K, axial_load = {axial_load!r} N, radial_load = "
                     f"{radial_load!r} N: {exc}"
                 ) from exc
-        return th, self._state_of(th, sol)
+        self._th = th
+        return point
+
+    def update(self, temperature, axial_load: float = 0.0, radial_load: float = 0.0) -> PointState:
+        """The state at (temperature, axial_load, radial_load) (arguments as :meth:`evaluate`):
+        solved when it is a new operating point, else the last one.
+
+        Returns
+        -------
+        PointState
+            Every output of :meth:`evaluate` that does not move with speed (torques [N·m],
+            forces [N], angle [rad], lengths [m], stiffness [N/m], pressures [Pa], flags).
+        """
+        temps = _temperatures(temperature)
+        if temps == self._temps and axial_load == self._axial and radial_load == self._radial:
+            return self._point
+        for name, v in (("axial_load", axial_load), ("radial_load", radial_load)):
+            if not math.isfinite(v):
+                raise ValueError(f"{name} = {v!r} N is outside the valid range (-inf, inf)")
+        fa, fr = float(axial_load), float(radial_load)
+        self._point = self._solve(temps, fa, fr)
+        self._temps, self._axial, self._radial = temps, fa, fr
+        self.steps += 1
+        return self._point
 
     def evaluate(
         self, temperature, speed: float, axial_load: float = 0.0, radial_load: float = 0.0
@@ -216,18 +235,10 @@ class BearingModel:
         >>> round(out.running_torque * 1e3, 3)  # N·mm
         1.614
         """
-        temps = _temperatures(temperature)
-        key = (temps, float(axial_load), float(radial_load))
-        if key != self._key:
-            for name, v in (("axial_load", axial_load), ("radial_load", radial_load)):
-                if not math.isfinite(v):
-                    raise ValueError(f"{name} = {v!r} N is outside the valid range (-inf, inf)")
-            self._th, self._state = self._solve(*key)
-            self._key = key
-            self.steps += 1
+        point = self.update(temperature, axial_load, radial_load)
         if not math.isfinite(speed):
             raise ValueError(f"speed = {speed!r} rad/s is outside the valid range (-inf, inf)")
-        return bearing_outputs(self.pair, self._th, self._state, float(speed))
+        return point.outputs(self.pair, float(speed))
 
     def speed_outputs(self, speed: float) -> tuple[float, float, float, float]:
         """(friction_torque [N·m], running_torque [N·m], viscous_torque [N·m], power_loss [W])
@@ -236,7 +247,7 @@ class BearingModel:
         if not math.isfinite(speed):
             raise ValueError(f"speed = {speed!r} rad/s is outside the valid range (-inf, inf)")
         w = float(speed)
-        signed, running, viscous, _, _ = _speed_terms(self.pair, self._th, self._state, w)
+        signed, running, viscous = self._point.speed_terms(self.pair, w)
         return signed, running, viscous, signed * w
 
     # ---------------------------------------------------------------- exact

@@ -9,57 +9,93 @@ equations from the previous step's solution:
 - the thermal state (ring growth, Lamé fits, clearance, loop closure, viscosity) is closed
   form: the equations of :func:`fits.mounted_geometry`, :func:`preload.loop_interference` and
   :func:`viscosity.walther_kinematic_viscosity`, written out on floats (:func:`thermal_floats`);
-- under pure axial load every ball of a bearing is alike (Yu 2017 eq 4): the pair's offsets
-  (p, z) solve the two conditions of :func:`preload.pair_offsets` by Newton's method with the
-  analytic Jacobian, the contact angle's effect on the Hertz constants included, started from
-  the previous solution (one unknown when the load is zero, none for a rigid loop at zero load);
-- under a radial load every ball differs (Jones 1960): the pair's (p, z, δr_A, δr_B) solve the
-  conditions of :func:`preload.pair_equilibrium` by Newton's method over the balls of half the
-  ring (the load is symmetric about the radial load's direction), one ball at a time on
+- the pair's offsets and radial displacements x = (p, z, δr_A, δr_B) [m] solve the conditions
+  of :func:`preload.pair_equilibrium` (F_A − F_B = F_ext, Fr_A = Fr_B = F_r/2,
+  (F_A + F_B)/2 = k·(C − 2p)) by Newton's method with the analytic Jacobian, the contact
+  angle's effect on the Hertz constants included, started from a predictor: the previous
+  solution moved by the tangent of the load change (the last Jacobian) and by the secant of
+  the last temperature change when the temperatures move on in the same direction. The
+  radial rows are eliminated by hand (they involve one bearing each), which leaves a 2×2
+  system in the bearings' axial offsets (:func:`newton_step`). A bearing with no ball in
+  contact under a radial load (its radial row is empty) is first moved radially until its
+  ball nearest the load's direction touches (:meth:`PairSolver._touch`);
+- under pure axial load every ball of a bearing is alike (Yu 2017 eq 4): a bearing is one ball
+  of weight Z (one unknown less when the load is zero, none for a rigid loop at zero load);
+  under a radial load every ball differs (Jones 1960): the balls of half the ring (the load is
+  symmetric about the radial load's direction) with weights 1 or 2, one ball at a time on
   floats (faster than numpy over a dozen balls);
 - the Hertz constants of each contact need the ellipticity k, the root of the Hertz relation
   F(k) = F(ρ) (:func:`hertz.ellipticity`). Each contact keeps an *anchor*: k0 with the exact
-  K(m0), E(m0), F(k0) and dF/dk at k0 (scipy.special). Within a step k, K and E are taken to
-  first order from the anchor (one Newton step of the inverse), whose error is below
-  C·(Δk/k)² with C ≈ 2 (measured on the catalogue bearings); the anchor is renewed at the
-  current k when |Δk| exceeds :data:`ANCHOR_DRIFT`·k, which keeps every Hertz constant within
-  about 1e-12 of the exact one.
+  K(m0), E(m0), F(k0) and its derivatives (scipy.special). k, K and E are taken to second order
+  from the anchor, whose error is below C·(Δk/k)³ with C ≈ 2 (measured on the catalogue
+  bearings); the anchor is renewed for the next step at the current k when |Δk| exceeds
+  :data:`ANCHOR_DRIFT`·k, and the step is solved again when it exceeds :data:`ANCHOR_REDO`·k,
+  which keeps every Hertz constant within about 2e-11 of the exact one;
+- the Hertz constants depend on the contact angle only through γ = Dw·cos α/dm, on the
+  thermal state through γ, the grooves' 1/f = Dw/r and Dw^(∓1/3), and weakly on γ (relative
+  first derivatives of 0.1–0.8, second of 0.1–0.2 on the catalogue bearings). Each ball
+  keeps a *base*: the Hertz constants with their first and second derivatives in γ and first
+  in 1/f at one (γ0, 1/f0) (:func:`contact_terms`); within :data:`GAMMA_SPAN` and
+  :data:`INV_F_SPAN` of it they follow to second order in γ and first order in 1/f (relative
+  error below 2e-12, tests/test_continuation.py), at any temperature: on a ramp a ball
+  evaluates the Hertz relation again every ten to twenty steps, not every step (1/f is
+  constant while balls and rings share their temperature and expansion).
 
 Newton stops at the first point whose next correction is below 1e-12 of the curvature distance
-A (about 1e-16 m, the absolute tolerance of the exact path's root finders): with the analytic
-Jacobian and a secant predictor that is two evaluations per step on a temperature ramp. A step that
+A (about 1e-16 m, the absolute tolerance of the exact path's root finders) and below 2e-10 of
+the smallest deflection of a loaded ball (a ball load Q ∝ δ^1.5 and its stiffness ∝ δ^0.5 then
+move by less than 3e-10 of their value; a ball that barely touches needs the finer step), or
+at rounding (1e-15·A): with the analytic Jacobian and the predictor that is about two
+evaluations per step on a temperature ramp (measured 2.1 with 20 N axial load, 2.6 with the
+axial and radial loads changing every step: benchmarks/bench_fmus.py's loops). A step that
 does not converge in :data:`MAX_ITERATIONS`, a singular Jacobian (no ball in contact while the
 external load is not zero), or a non-finite value returns None, and the caller falls back to
 the exact path. The outputs equal the exact path's to a relative 1e-9 (tests check this on
 random trajectories of temperature and load).
 
-The continuation state (:meth:`PairSolver.state`) is a JSON-serialisable dict of floats: a
-restored solver continues bit for bit.
+The continuation state (:meth:`PairSolver.state`) is a JSON-serialisable dict of floats (the
+solution and its inputs, the anchors' k, the bases' γ0 and 1/f0, the last Jacobian and
+temperature secant of the predictor): a restored solver continues bit for bit.
+
+The thermal state takes the four parts' temperatures (housing, shaft, outer ring, inner ring);
+a uniform temperature is four equal ones.
 """
 
 from __future__ import annotations
 
 import math
 
-import numpy as np
 from scipy.special import ellipe, ellipk
 
-from .friction import BallSetTorques, ball_torque_terms
+from .friction import _heathcote, _hysteresis, _spin
 from .hertz import ellipticity
 from .materials import reduced_compliance
 from .pair import assembly_geometry, effective_shim, loop_stiffness
-from .pair_state import LoadState, state_flags
+from .pair_state import PointState, rest_torque, state_flags
 from .preload import ROLES
 
-#: Largest relative change of a contact's ellipticity from its anchor before the anchor is
-#: renewed (the second-order expansion's error is below 2e-12 there: measured 1.8e-12 for
-#: k, K and E at F = 0.85…0.97, tests/test_continuation.py).
+#: Relative change of a contact's ellipticity from its anchor beyond which the anchor is
+#: renewed for the next step (the second-order expansion's error is below 2e-12 there:
+#: measured 1.8e-12 for k, K and E at F = 0.85…0.97, tests/test_continuation.py).
 ANCHOR_DRIFT = 1e-4
+#: Relative change beyond which the step is solved again with the renewed anchors (error of
+#: the expansion below 2e-11 up to there, tests/test_continuation.py).
+ANCHOR_REDO = 2e-4
+#: Largest |Δγ| (γ = Dw·cos α/dm) and |Δ(1/f)| from a ball's base within which its Hertz
+#: constants are taken to second order in γ and first order in 1/f (relative error below 2e-12
+#: on the catalogue bearings, tests/test_continuation.py).
+GAMMA_SPAN = 5e-5
+INV_F_SPAN = 3e-9
 #: Newton iterations of one step before the exact path takes over.
 MAX_ITERATIONS = 12
 #: Newton stops at the first point whose next correction is below this fraction of the
 #: curvature distance A (≈ 1e-16 m for the catalogue bearings, the exact path's tolerance).
 _TOLERANCE = 1e-12
+#: ... and below this fraction of the smallest deflection of a loaded ball (a ball load
+#: Q ∝ δ^1.5 and its stiffness ∝ δ^0.5 then move by less than 3e-10 of their value), unless it
+#: is below rounding (this fraction of A).
+_DEFLECTION_TOLERANCE = 2e-10
+_ROUNDING = 1e-15
 #: Rounds of anchor renewal within one step before the exact path takes over.
 MAX_ANCHOR_ROUNDS = 6
 
@@ -68,6 +104,7 @@ _THIRD = 1.0 / 3.0
 _PI = math.pi
 _2_PI = 2.0 / math.pi
 _PI_2 = 0.5 * math.pi
+_INF = math.inf
 
 
 def _ratio(d_small, d_large):
@@ -126,10 +163,24 @@ class PairConstants:
         self.housing_outer_diameter = float(fit.housing_outer_diameter)
         self.shaft_bore = float(fit.shaft_bore)
         self.coupled = bool(pair.thermal_coupling)
-        # loop closure C = 2·h(T0) + s − Σ σ·L·α·(T_part − T0)
-        self.loop_terms = tuple(
+        # the Lamé terms of fits.mounted_geometry whose diameters grow together (ring with its
+        # groove): ring compliances per diameter, and the groove's change per unit pressure
+        od, og, bo, ig = self.outer_diameter, self.outer_groove, self.bore, self.inner_groove
+        e_r, nu_r = self.e_ring, self.nu_ring
+        self.seat_outer = od - self.outer_interference  # housing bore at T0
+        self.seat_inner = bo + self.inner_interference  # shaft seat at T0
+        self.outer_ring_compliance = (_ratio(og, od) - nu_r) / e_r
+        self.inner_ring_compliance = (_ratio(bo, ig) + nu_r) / e_r
+        self.outer_groove_per_pressure = 2.0 * od * od * og / (e_r * (od * od - og * og))
+        self.inner_groove_per_pressure = 2.0 * bo * bo * ig / (e_r * (ig * ig - bo * bo))
+        # loop closure C = 2·h(T0) + s − Σ σ·L·α·(T_part − T0), summed by part
+        terms = [
             (ROLES[mm.role] * mm.length * mm.material.expansion, mm.part) for mm in loop.members
-        )
+        ]
+        self.loop_terms = tuple(terms)
+        self.closure_housing = sum(k for k, part in terms if part == "housing")
+        self.closure_shaft = sum(k for k, part in terms if part == "shaft")
+        self.closure_rings = sum(k for k, part in terms if part not in ("housing", "shaft"))
         self.closure0 = 2.0 * float(assembly_geometry(pair).first_contact_offset) + float(
             effective_shim(pair)
         )
@@ -144,35 +195,38 @@ class PairConstants:
 
 
 class Thermal:
-    """Thermal state of one step, as floats (the fields of :class:`~.bearing.ThermalState`
-    that the outputs read, plus the race geometry of :class:`~.geometry.RaceGeometry`)."""
+    """Thermal state of one step, as floats: the fields of :class:`~.bearing.ThermalState`
+    that the outputs read, and the race geometry of :class:`~.geometry.RaceGeometry` that the
+    contacts need (γ scale Dw/dm, 1/f = Dw/r of each groove)."""
 
     __slots__ = (
         "ball_diameter",
         "clearance",
         "closure",
         "curvature_distance",
-        "first_contact_offset",
-        "free_contact_angle",
+        "dw_third",
         "gamma_scale",
-        "inner_curvature",
         "inner_fit_pressure",
         "inner_groove_radius",
         "inner_interference",
-        "inner_race_diameter",
         "inv_f_inner",
         "inv_f_outer",
         "kinematic_viscosity",
-        "loop_stiffness",
-        "outer_curvature",
         "outer_fit_pressure",
         "outer_groove_radius",
         "outer_interference",
-        "outer_race_diameter",
         "pitch_diameter",
         "radial_centre_distance",
+        "rest_torque",
         "temperatures",
+        "torque_coefficients",
     )
+
+    @property
+    def free_contact_angle(self) -> float:
+        """Free contact angle at the operating clearance [rad] (:class:`RaceGeometry`)."""
+        a, pd = self.curvature_distance, self.clearance
+        return math.acos(min(max(1.0 - max(pd, 0.0) / (2.0 * a), -1.0), 1.0))
 
 
 def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -> Thermal:
@@ -190,59 +244,45 @@ def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -
     t_b = 0.5 * (t_o + t_i)
     grow_o = 1.0 + c.alpha_ring * (t_o - t0)
     grow_i = 1.0 + c.alpha_ring * (t_i - t0)
-    grow_b = 1.0 + c.alpha_ball * (t_b - t0)
     grow_h = 1.0 + c.alpha_housing * (t_h - t0)
     grow_s = 1.0 + c.alpha_shaft * (t_s - t0)
     d_ring_o = c.outer_diameter * grow_o
-    d_groove_o = c.outer_groove * grow_o
     d_ring_i = c.bore * grow_i
+    d_groove_o = c.outer_groove * grow_o
     d_groove_i = c.inner_groove * grow_i
-    delta_o = d_ring_o - (c.outer_diameter - c.outer_interference) * grow_h
-    delta_i = (c.bore + c.inner_interference) * grow_s - d_ring_i
+    delta_o = d_ring_o - c.seat_outer * grow_h
+    delta_i = c.seat_inner * grow_s - d_ring_i
     th = Thermal()
     if c.coupled:
-        e_r, nu_r = c.e_ring, c.nu_ring
         d_h = c.housing_outer_diameter * grow_h
         d_sb = c.shaft_bore * grow_s
-        k_in = d_ring_o / e_r * (_ratio(d_groove_o, d_ring_o) - nu_r)
-        k_out = d_ring_o / c.e_housing * (_ratio(d_ring_o, d_h) + c.nu_housing)
-        p_o = max(delta_o, 0.0) / (k_in + k_out)
-        k_in = d_ring_i / c.e_shaft * (_ratio(d_sb, d_ring_i) - c.nu_shaft)
-        k_out = d_ring_i / e_r * (_ratio(d_ring_i, d_groove_i) + nu_r)
-        p_i = max(delta_i, 0.0) / (k_in + k_out)
-        d_groove_o = d_groove_o + (
-            -2.0 * p_o * d_ring_o**2 * d_groove_o / (e_r * (d_ring_o**2 - d_groove_o**2))
-        )
-        d_groove_i = d_groove_i + (
-            2.0 * p_i * d_ring_i**2 * d_groove_i / (e_r * (d_groove_i**2 - d_ring_i**2))
-        )
+        k_out = (_ratio(d_ring_o, d_h) + c.nu_housing) / c.e_housing
+        p_o = max(delta_o, 0.0) / (d_ring_o * (c.outer_ring_compliance + k_out))
+        k_in = (_ratio(d_sb, d_ring_i) - c.nu_shaft) / c.e_shaft
+        p_i = max(delta_i, 0.0) / (d_ring_i * (k_in + c.inner_ring_compliance))
+        d_groove_o = d_groove_o - p_o * grow_o * c.outer_groove_per_pressure
+        d_groove_i = d_groove_i + p_i * grow_i * c.inner_groove_per_pressure
     else:
         p_o = p_i = 0.0
-    dw = c.ball_diameter * grow_b
+    dw = c.ball_diameter * (1.0 + c.alpha_ball * (t_b - t0))
     r_i = c.inner_curvature * c.ball_diameter * grow_i
     r_o = c.outer_curvature * c.ball_diameter * grow_o
     pd = d_groove_o - d_groove_i - 2.0 * dw
     a = r_i + r_o - dw
+    dm = 0.5 * (d_groove_i + d_groove_o)
     th.temperatures = temps
-    th.ball_diameter = dw
-    th.pitch_diameter = 0.5 * (d_groove_i + d_groove_o)
-    th.inner_race_diameter, th.outer_race_diameter = d_groove_i, d_groove_o
+    th.ball_diameter, th.dw_third = dw, _cbrt(dw)
+    th.rest_torque = th.torque_coefficients = None  # evaluated when first needed
+    th.pitch_diameter = dm
     th.inner_groove_radius, th.outer_groove_radius = r_i, r_o
-    th.inner_curvature, th.outer_curvature = r_i / dw, r_o / dw
     th.inv_f_inner, th.inv_f_outer = dw / r_i, dw / r_o
-    th.gamma_scale = dw / th.pitch_diameter
+    th.gamma_scale = dw / dm
     th.clearance = pd
     th.curvature_distance = a
     th.radial_centre_distance = a - 0.5 * pd
-    pd_c = min(max(pd, 0.0), 2.0 * a)
-    th.first_contact_offset = _sqrt(max(a * a - (a - 0.5 * pd_c) ** 2, 0.0))
-    th.free_contact_angle = math.acos(min(max(1.0 - max(pd, 0.0) / (2.0 * a), -1.0), 1.0))
-    growth = 0.0
-    for coef, part in c.loop_terms:
-        t_part = t_h if part == "housing" else t_s if part == "shaft" else t_b
-        growth = growth + coef * (t_part - t0)
-    th.closure = c.closure0 - growth
-    th.loop_stiffness = c.loop_stiffness
+    th.closure = c.closure0 - (
+        c.closure_housing * (t_h - t0) + c.closure_shaft * (t_s - t0) + c.closure_rings * (t_b - t0)
+    )
     if c.walther is None:
         th.kinematic_viscosity = 0.0
     else:
@@ -256,9 +296,25 @@ def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -
 class Anchor:
     """Exact Hertz data of one contact at its anchor ellipticity k0 (see module docstring):
     K, E and their first and second derivatives in m, F(k0) and its first and second
-    derivatives in k."""
+    derivatives in k (``inv_f1`` = 1/F', ``f2_f1`` = F''/F'); ``data`` holds them as one tuple
+    (k, m, K, E, F, 1/F', F''/F', K', K'', E', E'') for the per-step arithmetic."""
 
-    __slots__ = ("e1", "e2", "e_int", "f", "f1", "f2", "k", "k1", "k2", "k_int", "m")
+    __slots__ = (
+        "data",
+        "e1",
+        "e2",
+        "e_int",
+        "f",
+        "f1",
+        "f2",
+        "f2_f1",
+        "inv_f1",
+        "k",
+        "k1",
+        "k2",
+        "k_int",
+        "m",
+    )
 
     def __init__(self, k: float):
         self.set(k)
@@ -274,10 +330,9 @@ class Anchor:
         """Anchor at ellipticity ``k`` > 1: K(m), E(m) by scipy.special, derivatives from
         dK/dm = (E − (1 − m)·K)/(2m(1 − m)), dE/dm = (E − K)/(2m) (Byrd & Friedman 1971,
         710.00, 710.02) and their derivatives, F(k) of :func:`hertz.hertz_relation`."""
+        k = float(k)
         m = 1.0 - 1.0 / (k * k)
-        ki, ei = ellipk(m), ellipe(m)
-        if type(k) is float:
-            ki, ei = float(ki), float(ei)
+        ki, ei = float(ellipk(m)), float(ellipe(m))
         q = 1.0 - m
         k1 = (ei - q * ki) / (2.0 * m * q)
         e1 = (ei - ki) / (2.0 * m)
@@ -302,72 +357,83 @@ class Anchor:
         self.f = n / d
         self.f1 = f1
         self.f2 = (nkk * d - n * dkk) / (d * d) - 2.0 * dk * f1 / d
+        self.inv_f1, self.f2_f1 = 1.0 / f1, self.f2 / f1
         self.k1, self.k2, self.e1, self.e2 = k1, k2, e1, e2
+        self.data = (k, m, ki, ei, self.f, self.inv_f1, self.f2_f1, k1, k2, e1, e2)
 
 
-class Contact:
-    """Hertz constants of one ball–groove contact (floats or per-ball arrays): the interface
-    of :class:`hertz.ContactConstants` that the friction equations use (``semi_axes``,
-    ``e_integral``, ``max_pressure``), from a :func:`contact` tuple."""
+def contact_terms(c: PairConstants, gamma: float, inv_f: float, inner: bool, anc: Anchor):
+    """Hertz constants of the inner or outer contact at γ = Dw·cos α/dm and 1/f = Dw/r:
+    :func:`hertz.curvature_sum_difference` and :func:`hertz.contact_constants` rearranged, with
+    the ellipticity to second order from the anchor ``anc``; each with its first and second
+    derivatives in γ and its first derivative in 1/f (chain rule through the race term,
+    F(ρ), k, m = 1 − 1/k² and the anchor's expansions of K and E).
 
-    __slots__ = ("a_coef", "b_coef", "e_integral")
-
-    def __init__(self, terms):
-        _, _, a, k, e = terms
-        self.a_coef, self.b_coef, self.e_integral = a, a / k, e
-
-    def semi_axes(self, load):
-        """(a, b) [m] under the normal load ``load`` [N] ≥ 0."""
-        q3 = load**_THIRD
-        return self.a_coef * q3, self.b_coef * q3
-
-    def max_pressure(self, load):
-        """Largest Hertz pressure 3Q/(2πab) [Pa] (0 without load)."""
-        if isinstance(load, float) and load <= 0.0:
-            return 0.0
-        return 1.5 * load**_THIRD / (_PI * self.a_coef * self.b_coef)
-
-
-def contact(th: Thermal, c: PairConstants, cos_a, sin_a, inner: bool, anc: Anchor):
-    """Hertz constants of the inner or outer contact at the contact angle of cosine ``cos_a``
-    and sine ``sin_a`` (floats, or per-ball arrays with array anchors):
-    :func:`hertz.curvature_sum_difference` and :func:`hertz.contact_constants` rearranged,
-    with the ellipticity to second order from the anchor ``anc``.
+    The constants depend on the ball diameter only through Dw^(∓1/3): c_δ·Dw^(1/3) and
+    a_coef/Dw^(1/3) are returned.
 
     Returns
     -------
     tuple
-        (c_δ = K_c^(−2/3) [m/N^(2/3)] with K_c the contact's load–deflection constant,
-        d ln c_δ/dα [1/rad], a_coef [m/N^(1/3)], ellipticity k [-], E(m) [-]);
-        b_coef = a_coef/k.
+        16 floats, four per quantity (value, d/dγ, ½·d²/dγ², ∂/∂(1/f)) of: c_δ·Dw^(1/3)
+        [m^(4/3)/N^(2/3)] (c_δ = K_c^(−2/3), K_c the contact's load–deflection constant),
+        a_coef/Dw^(1/3) [m^(2/3)/N^(1/3)], the ellipticity k [-] and E(m) [-]
+        (b_coef = a_coef/k).
     """
-    g = th.gamma_scale * cos_a
     if inner:
-        inv_f = th.inv_f_inner
-        rt = 2.0 * g / (1.0 - g)
-        drt_dg = 2.0 / ((1.0 - g) * (1.0 - g))
+        u = 1.0 / (1.0 - gamma)
+        rt, r1, r2 = 2.0 * gamma * u, 2.0 * u * u, 4.0 * u * u * u  # race term, d/dγ, d²/dγ²
     else:
-        inv_f = th.inv_f_outer
-        rt = -2.0 * g / (1.0 + g)
-        drt_dg = -2.0 / ((1.0 + g) * (1.0 + g))
-    denom = 4.0 - inv_f + rt
-    f1 = anc.f1
-    q = ((inv_f + rt) / denom - anc.f) / f1  # Δk to first order
-    f2q = anc.f2 * q / f1
-    k = anc.k + q * (1.0 - 0.5 * f2q)  # Δk = ΔF/F' − F''·ΔF²/(2F'³)
-    k2 = k * k
-    dm_ = (1.0 - 1.0 / k2) - anc.m
-    ki = anc.k_int + (anc.k1 + 0.5 * anc.k2 * dm_) * dm_
-    ei = anc.e_int + (anc.e1 + 0.5 * anc.e2 * dm_) * dm_
-    x = (denom / (th.ball_diameter * k2 * ei)) ** _THIRD
-    # d ln c_δ/dα = d ln K + (d ln Σρ − 2·d ln k − d ln E)/3, dγ/dα = −(Dw/dm)·sin α
-    drt_da = -drt_dg * th.gamma_scale * sin_a
-    dk_da = (4.0 - 2.0 * inv_f) / (denom * denom) * drt_da * (1.0 - f2q) / f1
-    dm_da = 2.0 * dk_da / (k2 * k)
-    dln_c = (anc.k1 + anc.k2 * dm_) * dm_da / ki + (
-        drt_da / denom - 2.0 * dk_da / k - (anc.e1 + anc.e2 * dm_) * dm_da / ei
+        u = 1.0 / (1.0 + gamma)
+        rt, r1, r2 = -2.0 * gamma * u, -2.0 * u * u, 4.0 * u * u * u
+    den = 4.0 - inv_f + rt  # Σρ·Dw
+    g4 = (4.0 - 2.0 * inv_f) / (den * den)
+    f_g = g4 * r1  # dF/dγ
+    f_gg = g4 * (r2 - 2.0 * r1 * r1 / den)
+    f_f = (4.0 + 2.0 * rt) / (den * den)  # ∂F/∂(1/f)
+    k0, m0, ki0, ei0, f0, inv_f1, f2_f1, k1, k2, e1, e2 = anc.data
+    q = ((inv_f + rt) / den - f0) * inv_f1  # Δk to first order
+    k = k0 + q * (1.0 - 0.5 * f2_f1 * q)  # Δk = ΔF/F' − F''·ΔF²/(2F'³)
+    k_f = (1.0 - f2_f1 * q) * inv_f1  # dk/dF
+    k_ff = -f2_f1 * inv_f1 * inv_f1
+    kg, kgg, kf = k_f * f_g, k_ff * f_g * f_g + k_f * f_gg, k_f * f_f
+    ik = 1.0 / k
+    m_k = 2.0 * ik * ik * ik  # m = 1 − 1/k²
+    mg, mgg, mf = m_k * kg, m_k * (kgg - 3.0 * ik * kg * kg), m_k * kf
+    dm = (1.0 - ik * ik) - m0
+    ki = ki0 + (k1 + 0.5 * k2 * dm) * dm
+    ei = ei0 + (e1 + 0.5 * e2 * dm) * dm
+    km, em = k1 + k2 * dm, e1 + e2 * dm  # dK/dm, dE/dm
+    lk_g, lk_gg, lk_f = km * mg / ki, (k2 * mg * mg + km * mgg) / ki, km * mf / ki
+    le_g, le_gg, le_f = em * mg / ei, (e2 * mg * mg + em * mgg) / ei, em * mf / ei
+    # ln X = (ln Σρ·Dw − 2 ln k − ln E)/3, X·Dw^(−1/3) = (Σρ/(k²·E))^(1/3)
+    lx_g = (r1 / den - 2.0 * kg * ik - le_g) * _THIRD
+    lx_gg = (
+        r2 / den - (r1 / den) ** 2 - 2.0 * (kgg * ik - (kg * ik) ** 2) - (le_gg - le_g * le_g)
     ) * _THIRD
-    return c.c_delta_coef * ki * x, dln_c, c.a_coef / x, k, ei
+    lx_f = (-1.0 / den - 2.0 * kf * ik - le_f) * _THIRD
+    x = _cbrt(den / (k * k * ei))
+    cd = c.c_delta_coef * ki * x  # c_δ = C·K·X
+    lc_g = lk_g + lx_g
+    ac = c.a_coef / x  # a_coef = C_a/X
+    return (
+        cd,
+        cd * lc_g,
+        0.5 * cd * (lc_g * lc_g + lk_gg - lk_g * lk_g + lx_gg),
+        cd * (lk_f + lx_f),
+        ac,
+        -ac * lx_g,
+        0.5 * ac * (lx_g * lx_g - lx_gg),
+        -ac * lx_f,
+        k,
+        kg,
+        0.5 * kgg,
+        kf,
+        ei,
+        ei * le_g,
+        0.5 * ei * le_gg,
+        ei * le_f,
+    )
 
 
 def exact_contact_k(th: Thermal, cos_a: float, inner: bool) -> float:
@@ -379,294 +445,226 @@ def exact_contact_k(th: Thermal, cos_a: float, inner: bool) -> float:
     return float(ellipticity((inv_f + rt) / (4.0 - inv_f + rt)))
 
 
-class BearingPoint:
-    """One bearing (all balls alike) at one axial offset: force, stiffness, contacts."""
+class Ball:
+    """One ball position of a bearing: azimuth cosine cos ψ and weight (Z for the one ball of
+    pure axial load; 1 or 2 over half the ring under a radial load), the anchors of its inner
+    and outer contacts, its base (:func:`ball_base`) or None, and the state at the last
+    evaluation: load Q [N], cos α, sin α."""
 
-    __slots__ = ("cos_a", "dforce", "force", "inner", "load", "outer", "sin_a", "stiffness")
+    __slots__ = ("anc_i", "anc_o", "base", "cos_a", "cos_psi", "load", "sin_a", "weight")
 
-
-def bearing_point(th: Thermal, c: PairConstants, a: float, anc_i: Anchor, anc_o: Anchor):
-    """One bearing at axial offset ``a`` [m] under pure axial load (:func:`equilibrium.
-    axial_state` on floats): ball load Q [N], Fa = Z·Q·sin α [N], dFa/da [N/m] with K_n held
-    (the output ``axial_stiffness``) and with K_n(α) varied (the Newton Jacobian)."""
-    a2 = th.radial_centre_distance
-    s = _hypot(a, a2)
-    cos_a, sin_a = a2 / s, a / s
-    delta = s - th.curvature_distance
-    ci = contact(th, c, cos_a, sin_a, True, anc_i)
-    co = contact(th, c, cos_a, sin_a, False, anc_o)
-    p = BearingPoint()
-    p.cos_a, p.sin_a, p.inner, p.outer = cos_a, sin_a, ci, co
-    if delta > 0.0:
-        csum = ci[0] + co[0]
-        k_n = csum**-1.5
-        z = c.n_balls
-        root = _sqrt(delta)
-        q = k_n * delta * root
-        p.load = q
-        p.force = z * q * sin_a
-        p.stiffness = z * (1.5 * k_n * root * sin_a * sin_a + q / s * cos_a * cos_a)
-        dkn_da = -1.5 * k_n * (ci[0] * ci[1] + co[0] * co[1]) / csum
-        p.dforce = p.stiffness + z * dkn_da * delta * root * sin_a * cos_a / s
-    else:
-        p.load = p.force = p.stiffness = p.dforce = 0.0
-    return p
+    def __init__(self, cos_psi: float, weight: float, anc_i: Anchor, anc_o: Anchor):
+        self.cos_psi, self.weight, self.anc_i, self.anc_o = cos_psi, weight, anc_i, anc_o
+        self.base = None
+        self.load = self.cos_a = self.sin_a = 0.0
 
 
-def _ball_torques(c: PairConstants, th: Thermal, q, cos_a, sin_a, ci: Contact, co: Contact):
-    """(hysteresis, spin, sliding, inner ring, outer ring) torques of single balls [N·m]:
-    :func:`friction.ball_torque_terms` at the race radii (dm ∓ Dw·cos α)/2 (floats)."""
-    dw, dm = th.ball_diameter, th.pitch_diameter
-    a_i, b_i = ci.semi_axes(q)
-    a_o, b_o = co.semi_axes(q)
-    h_i, h_o, sl_i, sl_o, sp_i, sp_o = ball_torque_terms(
-        q,
-        (a_i, b_i, ci.e_integral),
-        (a_o, b_o, co.e_integral),
-        0.5 * (dm - dw * cos_a),
-        0.5 * (dm + dw * cos_a),
-        abs(sin_a),
-        dw,
-        (th.inner_groove_radius, th.outer_groove_radius),
-        c.coefficients,
-        c.solid,
-        c.sliding,
-    )
-    return h_i + h_o, sp_i + sp_o, sl_i + sl_o, h_i + sl_i + sp_i, h_o + sl_o + sp_o
+def ball_base(c: PairConstants, gamma: float, inv_f_i: float, inv_f_o: float, b: Ball) -> tuple:
+    """The base of ball ``b`` at γ = Dw·cos α/dm and the grooves' 1/f: (γ0, 1/f_i0, 1/f_o0,
+    the c_δ terms of the inner and outer contact (8 floats), their a_coef, k and E terms (24
+    floats)) from :func:`contact_terms`. Within :data:`GAMMA_SPAN` in γ and :data:`INV_F_SPAN`
+    in 1/f the Hertz constants are taken to second order in γ and first order in 1/f, at any
+    thermal state."""
+    ti = contact_terms(c, gamma, inv_f_i, True, b.anc_i)
+    to = contact_terms(c, gamma, inv_f_o, False, b.anc_o)
+    return gamma, inv_f_i, inv_f_o, (*ti[:4], *to[:4]), (*ti[4:], *to[4:])
 
 
-class AxialSolution:
-    """The pair under pure axial load at one step: both bearings' points and the offsets."""
-
-    __slots__ = ("a", "b", "p", "z")
-
-
-def solve_axial(th: Thermal, c: PairConstants, f_ext: float, x0, anchors) -> AxialSolution | None:
-    """Offsets of the pair under the axial load ``f_ext`` [N] (pressing bearing A): the two
-    conditions of :func:`preload.pair_offsets`, F_A − F_B = F_ext and
-    a_A + a_B + (F_A + F_B)/(2k) = C, by Newton's method from ``x0`` = (p, z) [m] with the
-    contact ``anchors`` (A inner, A outer, B inner, B outer). Without external load z = 0 (the
-    exact path's symmetric solution) and one unknown is left; a rigid loop fixes p = C/2.
-    None when Newton does not converge (the caller falls back to the exact path)."""
-    k_loop, closure = c.loop_stiffness, th.closure
-    rigid = k_loop == math.inf
-    tol = _TOLERANCE * th.curvature_distance
-    p, z = x0
-    if rigid:
-        p = 0.5 * closure
-    symmetric = f_ext == 0.0
-    if symmetric:
-        z = 0.0
-    aa, ao, ba, bo = anchors
-    for _ in range(MAX_ITERATIONS):
-        pa = bearing_point(th, c, p + z, aa, ao)
-        if symmetric:
-            pb = pa
-            if rigid:
-                dp = dz = 0.0
-            else:
-                dp, dz = -(2.0 * p + pa.force / k_loop - closure) / (2.0 + pa.dforce / k_loop), 0.0
-        else:
-            pb = bearing_point(th, c, p - z, ba, bo)
-            r1 = pa.force - pb.force - f_ext
-            j11, j12 = pa.dforce - pb.dforce, pa.dforce + pb.dforce
-            if rigid:
-                if j12 <= 0.0:
-                    return None
-                dp, dz = 0.0, -r1 / j12
-            else:
-                r2 = 2.0 * p + 0.5 * (pa.force + pb.force) / k_loop - closure
-                j21, j22 = 2.0 + 0.5 * j12 / k_loop, 0.5 * j11 / k_loop
-                det = j11 * j22 - j12 * j21
-                if det == 0.0:
-                    return None
-                dp = -(r1 * j22 - r2 * j12) / det
-                dz = -(j11 * r2 - j21 * r1) / det
-        step = max(abs(dp), abs(dz))
-        if step <= tol:
-            sol = AxialSolution()
-            sol.p, sol.z, sol.a, sol.b = p, z, pa, pb
-            return sol
-        if not step < math.inf:
-            return None
-        p, z = p + dp, z + dz
-    return None
-
-
-class RingPoint:
-    """One bearing's balls over half the ring (ψ_j = 2πj/Z, j = 0…⌊Z/2⌋, weights w_j: the
-    load is symmetric about the radial load's direction) at axial offset a and radial
-    displacement δr: per-ball (Q, cos α, sin α, inner contact, outer contact), the ring loads
-    and their Jacobian (the contact angle's effect on the Hertz constants included)."""
-
-    __slots__ = ("axial_force", "axial_stiffness", "balls", "jacobian", "radial_force")
-
-
-def ring_point(th: Thermal, c: PairConstants, a, dr, anc_i, anc_o, cos_psi, w) -> RingPoint:
+def ring_point(th: Thermal, c: PairConstants, a: float, dr: float, balls) -> tuple:
     """One bearing at axial offset ``a`` [m] and radial displacement ``dr`` [m] (Jones 1960;
-    :func:`equilibrium.ball_loads` without tilt): ball loads Q_j [N], Fa = Σ w·Q·sin α,
-    Fr = Σ w·Q·cos α·cos ψ [N], d(Fa, Fr)/d(a, δr), and dFa/da with K_n held (the output).
-    ``anc_i``, ``anc_o``: the balls' anchors; ``cos_psi``, ``w``: the balls' cos ψ_j and
-    weights (lists of floats)."""
+    :func:`equilibrium.ball_loads` without tilt): each ball's load Q_j = K_n(α_j)·δ_j^1.5,
+    stored on the :class:`Ball`, and the ring's loads and Jacobian.
+
+    Returns
+    -------
+    tuple
+        (Fa = Σ w·Q·sin α [N], Fr = Σ w·Q·cos α·cos ψ [N], dFa/da, dFa/dδr, dFr/da, dFr/dδr
+        [N/m] with K_n(α) varied, dFa/da with K_n held [N/m], the output stiffness).
+    """
     a2_0, dist = th.radial_centre_distance, th.curvature_distance
+    gs, f_i, f_o, dw_m13 = th.gamma_scale, th.inv_f_inner, th.inv_f_outer, 1.0 / th.dw_third
+    gs_dw = gs * dw_m13  # d c_δ/d cos α = (d c_δ·Dw^(1/3)/dγ)·(Dw/dm)·Dw^(−1/3)
     fa = fr = j11 = j12 = j21 = j22 = kax = 0.0
-    balls = []
-    for cp, wj, ai, ao in zip(cos_psi, w, anc_i, anc_o, strict=True):
+    d_min = dist
+    for b in balls:
+        cp = b.cos_psi
         a2 = a2_0 + dr * cp
         s = _hypot(a, a2)
         cos_a, sin_a = a2 / s, a / s
-        ci = contact(th, c, cos_a, sin_a, True, ai)
-        co = contact(th, c, cos_a, sin_a, False, ao)
+        b.cos_a, b.sin_a = cos_a, sin_a
         delta = s - dist
-        if delta > 0.0:
-            csum = ci[0] + co[0]
-            k_n = csum**-1.5
-            root = _sqrt(delta)
-            q = k_n * delta * root
-            # the share of K_n(α) in dQ/dA1 (·cos α) and dQ/dA2 (·−sin α), dα = (cos α·dA1 −
-            # sin α·dA2)/s
-            dkn = -1.5 * k_n * (ci[0] * ci[1] + co[0] * co[1]) / csum * delta * root / s
-            dq1 = 1.5 * k_n * root * sin_a + dkn * cos_a
-            dq2 = 1.5 * k_n * root * cos_a - dkn * sin_a
-            qs = q / s
-            sc = qs * sin_a * cos_a
-            wc = wj * cp
-            fa += wj * q * sin_a
-            fr += wc * q * cos_a
-            j11 += wj * (dq1 * sin_a + qs * cos_a * cos_a)
-            j12 += wc * (dq2 * sin_a - sc)
-            j21 += wc * (dq1 * cos_a - sc)
-            j22 += wc * cp * (dq2 * cos_a + qs * sin_a * sin_a)
-            kax += wj * (1.5 * k_n * root * sin_a * sin_a + qs * cos_a * cos_a)
-        else:
-            q = 0.0
-        balls.append((q, cos_a, sin_a, ci, co))
-    r = RingPoint()
-    r.balls, r.axial_force, r.radial_force = balls, fa, fr
-    r.jacobian, r.axial_stiffness = (j11, j12, j21, j22), kax
-    return r
+        if delta <= 0.0:
+            b.load = 0.0
+            continue
+        if delta < d_min:
+            d_min = delta
+        base = b.base
+        gamma = gs * cos_a
+        if (
+            base is None
+            or abs(gamma - base[0]) > GAMMA_SPAN
+            or abs(f_i - base[1]) > INV_F_SPAN
+            or abs(f_o - base[2]) > INV_F_SPAN
+        ):
+            base = b.base = ball_base(c, gamma, f_i, f_o, b)
+        g0, fi0, fo0, terms, _ = base
+        d, d_i, d_o = gamma - g0, f_i - fi0, f_o - fo0
+        ci0, ci1, ci2, cif, co0, co1, co2, cof = terms
+        ci = (ci0 + d * (ci1 + ci2 * d) + cif * d_i) * dw_m13
+        co = (co0 + d * (co1 + co2 * d) + cof * d_o) * dw_m13
+        csum = ci + co
+        k_n = 1.0 / (csum * _sqrt(csum))
+        root = _sqrt(delta)
+        knr = 1.5 * k_n * root
+        q = k_n * delta * root
+        b.load = q
+        # the share of K_n(α) in dQ/dA1 (·cos α) and dQ/dA2 (·−sin α): dα = (cos α·dA1 −
+        # sin α·dA2)/s, d ln c/dα = −sin α·d ln c/d cos α
+        g = knr * (ci1 + co1) * gs_dw / csum * sin_a * delta / s
+        dq1 = knr * sin_a + g * cos_a
+        dq2 = knr * cos_a - g * sin_a
+        qs = q / s
+        sc = qs * sin_a * cos_a
+        w = b.weight
+        wc = w * cp
+        fa += w * q * sin_a
+        fr += wc * q * cos_a
+        j11 += w * (dq1 * sin_a + qs * cos_a * cos_a)
+        j12 += wc * (dq2 * sin_a - sc)
+        j21 += wc * (dq1 * cos_a - sc)
+        j22 += wc * cp * (dq2 * cos_a + qs * sin_a * sin_a)
+        kax += w * (knr * sin_a * sin_a + qs * cos_a * cos_a)
+    return fa, fr, j11, j12, j21, j22, kax, d_min
 
 
-class RadialSolution:
-    """The pair under axial and radial load at one step."""
+def newton_step(ra: tuple, rb: tuple, r1, r2, r3, r4, k_loop: float, radial: bool):
+    """Newton correction (dp, dz, dδr_A, dδr_B) [m] of the pair equilibrium from the bearings'
+    :func:`ring_point` results ``ra``, ``rb`` (their Jacobians dFa/da, dFa/dδr, dFr/da,
+    dFr/dδr [N/m]) and the residuals r1 = F_A − F_B − F_ext, r2 = Fr_A − F_r/2,
+    r3 = Fr_B − F_r/2 [N], r4 = 2p + (F_A + F_B)/(2k) − C [m]. The radial rows hold one bearing
+    each: dδr_A = (−r2 − dFr_A/da·u)/(dFr_A/dδr) with u = dp + dz, v = dp − dz the changes of
+    the offsets of A and B, which leaves
 
-    __slots__ = ("a", "b", "x")
+        e_A·u − e_B·v = g1,   (1 + e_A/2k)·u + (1 + e_B/2k)·v = g2,
 
-
-def solve_radial(th: Thermal, c: PairConstants, f_ext, f_r, x0, anchors, cos_psi, w):
-    """Pair under axial load ``f_ext`` [N] (pressing A) and radial load ``f_r`` [N] shared
-    equally: the conditions of :func:`preload.pair_equilibrium` (F_A − F_B = F_ext,
-    Fr_A = Fr_B = F_r/2, (F_A + F_B)/2 = k·(C − 2p)) by Newton's method from ``x0`` =
-    (p, z, δr_A, δr_B) [m]. None when Newton does not converge."""
-    k_loop, closure = c.loop_stiffness, th.closure
-    rigid = k_loop == math.inf
-    tol = _TOLERANCE * th.curvature_distance
-    x = np.array(x0, dtype=float)
-    if rigid:
-        x[0] = 0.5 * closure
-    half = 0.5 * f_r
-    for _ in range(MAX_ITERATIONS):
-        p, z, da, db = x
-        ra = ring_point(th, c, p + z, da, anchors[0], anchors[1], cos_psi, w)
-        rb = ring_point(th, c, p - z, db, anchors[2], anchors[3], cos_psi, w)
-        (a11, a12, a21, a22), (b11, b12, b21, b22) = ra.jacobian, rb.jacobian
-        res = [
-            ra.axial_force - rb.axial_force - f_ext,
-            ra.radial_force - half,
-            rb.radial_force - half,
-        ]
-        jac = [[a11 - b11, a11 + b11, a12, -b12], [a21, a21, a22, 0.0], [b21, -b21, 0.0, b22]]
-        if rigid:
-            jac = [row[1:] for row in jac]
-        else:
-            res.append(0.5 * (ra.axial_force + rb.axial_force) - k_loop * (closure - 2.0 * p))
-            jac.append([0.5 * (a11 + b11) + 2.0 * k_loop, 0.5 * (a11 - b11), 0.5 * a12, 0.5 * b12])
-        try:
-            dx = -np.linalg.solve(np.array(jac), np.array(res))
-        except np.linalg.LinAlgError:
+    e = dFa/da − (dFa/dδr)(dFr/da)/(dFr/dδr) each bearing's axial stiffness at balanced radial
+    load. A rigid loop (k = inf) fixes p. None when singular."""
+    _, _, a11, a12, a21, a22, _, _ = ra
+    _, _, b11, b12, b21, b22, _, _ = rb
+    if radial:
+        if a22 == 0.0 or b22 == 0.0:
             return None
-        if rigid:
-            dx = np.concatenate([[0.0], dx])
-        step = float(np.max(np.abs(dx)))
-        if step <= tol:
-            sol = RadialSolution()
-            sol.x, sol.a, sol.b = tuple(float(v) for v in x), ra, rb
-            return sol
-        if not step < math.inf:
+        ta, tb = a12 / a22, b12 / b22
+        ea, eb = a11 - ta * a21, b11 - tb * b21
+        g1 = -r1 + ta * r2 - tb * r3
+    else:
+        ea, eb = a11, b11
+        g1 = -r1
+    if k_loop == _INF:
+        det = ea + eb
+        if not det > 0.0:
             return None
-        x = x + dx
-    return None
+        dz = g1 / det
+        dp, u, v = 0.0, dz, -dz
+    else:
+        g2 = -r4 + 0.5 * (ta * r2 + tb * r3) / k_loop if radial else -r4
+        ha, hb = 1.0 + 0.5 * ea / k_loop, 1.0 + 0.5 * eb / k_loop
+        det = ea * hb + eb * ha
+        if det == 0.0:
+            return None
+        u = (g1 * hb + eb * g2) / det
+        v = (ea * g2 - ha * g1) / det
+        dp, dz = 0.5 * (u + v), 0.5 * (u - v)
+    if radial:
+        return dp, dz, (-r2 - a21 * u) / a22, (-r3 - b21 * v) / b22
+    return dp, dz, 0.0, 0.0
 
 
-def _secant(x1, x0, u2, u1, u0):
-    """Secant predictor: x1 + θ·(x1 − x0), θ the projection of the input change u2 − u1 on the
-    previous change u1 − u0 when the two are parallel (cosine above 1 − 1e-6); else x1."""
-    d1 = [a - b for a, b in zip(u2, u1, strict=True)]
-    d0 = [a - b for a, b in zip(u1, u0, strict=True)]
-    dot = sum(a * b for a, b in zip(d1, d0, strict=True))
-    n0 = sum(b * b for b in d0)
-    if dot <= 0.0 or dot * dot < (1.0 - 1e-6) * n0 * sum(a * a for a in d1):
-        return x1
-    theta = dot / n0
-    return tuple(a + theta * (a - b) for a, b in zip(x1, x0, strict=True))
+def _parallel(d1, d0) -> float:
+    """θ with d1 ≈ θ·d0 for the 4-vectors d1 and d0 when they are parallel (cosine above
+    1 − 1e-6) and point the same way; else 0."""
+    a0, a1, a2, a3 = d1
+    b0, b1, b2, b3 = d0
+    dot = a0 * b0 + a1 * b1 + a2 * b2 + a3 * b3
+    n0 = b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3
+    if dot <= 0.0 or dot * dot < (1.0 - 1e-6) * n0 * (a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3):
+        return 0.0
+    return dot / n0
 
 
 class PairSolver:
     """Continuation solve of one :class:`~.pair.BearingPair` (see module docstring).
 
     :meth:`solve` takes the thermal state of a step (:func:`thermal_floats`) and the external
-    loads, and returns the solution, or None when the warm start fails; the caller then solves
-    exactly and :meth:`seed` s the solver with that solution.
+    loads, and returns the step's :class:`~.pair_state.PointState`, or None when the warm
+    start fails; the caller then solves exactly and :meth:`seed` s the solver with that
+    solution.
     """
 
     def __init__(self, pair):
         self.pair = pair
         self.c = PairConstants(pair)
         z = self.c.n_balls
-        self.cos_psi = [math.cos(2.0 * math.pi * j / z) for j in range(z // 2 + 1)]
-        self.weights = [1.0 if j == 0 or 2 * j == z else 2.0 for j in range(z // 2 + 1)]
+        self.half_ring = tuple(
+            (math.cos(2.0 * math.pi * j / z), 1.0 if j == 0 or 2 * j == z else 2.0)
+            for j in range(z // 2 + 1)
+        )
         self.reset()
 
     def reset(self) -> None:
         """Forget the last solution: the next step solves exactly."""
         self.mode = None  # "axial" (all balls alike) or "radial" (per ball)
-        self.x = None  # (p, z) or (p, z, δr_A, δr_B) [m] of the last step
-        self.anchors = None  # A inner, A outer, B inner, B outer
-        self.previous = None  # (x, inputs) of the step before: the secant predictor
-        self.inputs = None  # inputs of the last step
+        self.x = None  # (p, z, δr_A, δr_B) [m] of the last step
+        self.rings = None  # the balls of bearings A and B
+        self.inputs = None  # inputs of the last step: (4 temperatures [K], F_ext, F_r [N])
+        self.jacobian = None  # the bearings' ring_point results at x (newton_step), or None
+        self.secant = None  # (Δx, ΔT) of the last step's temperature change, or None
+
+    def _layout(self, mode: str):
+        """(cos ψ, weight) of the balls of one bearing in ``mode``."""
+        return ((0.0, float(self.c.n_balls)),) if mode == "axial" else self.half_ring
 
     # ---------------------------------------------------------------- state
     def state(self) -> dict | None:
         """JSON-serialisable continuation state (floats), or None before the first solve."""
         if self.x is None:
             return None
-
-        def ks(a):
-            return [b.k for b in a] if isinstance(a, list) else a.k
-
-        prev = None if self.previous is None else [list(v) for v in self.previous]
         return {
             "mode": self.mode,
             "x": list(self.x),
-            "k": [ks(a) for a in self.anchors],
+            "k": [[[b.anc_i.k, b.anc_o.k] for b in ring] for ring in self.rings],
+            "base": [
+                [None if b.base is None else list(b.base[:3]) for b in ring] for ring in self.rings
+            ],
             "inputs": list(self.inputs),
-            "previous": prev,
+            "jacobian": None if self.jacobian is None else [list(r) for r in self.jacobian],
+            "secant": None if self.secant is None else [list(v) for v in self.secant],
         }
 
     def restore(self, state: dict | None) -> None:
-        """Inverse of :meth:`state`: a restored solver continues bit for bit."""
+        """Inverse of :meth:`state` (the balls' bases are evaluated again from their γ and
+        1/f): a restored solver continues bit for bit."""
         self.reset()
         if state is None:
             return
         self.mode = state["mode"]
         self.x = tuple(float(v) for v in state["x"])
-        self.anchors = [
-            [Anchor(float(v)) for v in k] if isinstance(k, list) else Anchor(float(k))
-            for k in state["k"]
+        layout = self._layout(self.mode)
+        self.rings = [
+            [
+                Ball(cp, w, Anchor(float(ki)), Anchor(float(ko)))
+                for (cp, w), (ki, ko) in zip(layout, ks, strict=True)
+            ]
+            for ks in state["k"]
         ]
+        for ring, bases in zip(self.rings, state["base"], strict=True):
+            for b, at in zip(ring, bases, strict=True):
+                if at is not None:
+                    b.base = ball_base(self.c, *(float(v) for v in at), b)
         self.inputs = tuple(float(v) for v in state["inputs"])
-        prev = state["previous"]
-        self.previous = None if prev is None else tuple(tuple(float(v) for v in p) for p in prev)
+        jac, sec = state.get("jacobian"), state.get("secant")
+        self.jacobian = None if jac is None else tuple(tuple(float(v) for v in r) for r in jac)
+        self.secant = None if sec is None else tuple(tuple(float(v) for v in p) for p in sec)
 
     def seed(self, th: Thermal, inputs, x, ball_cosines=None) -> None:
         """Start from an exactly solved state: ``x`` = (p, z) (axial) or (p, z, δr_A, δr_B)
@@ -678,173 +676,309 @@ class PairSolver:
         if len(x) == 2:
             self.mode = "axial"
             p, z = x
-            cosines = [a2 / _hypot(p + z, a2), a2 / _hypot(p - z, a2)]
+            cosines = [[a2 / _hypot(p + z, a2)], [a2 / _hypot(p - z, a2)]]
+            x = (p, z, 0.0, 0.0)
         else:
             self.mode = "radial"
-            cosines = list(ball_cosines)
-        anchors = []
-        for cos_a in cosines:
-            for inner in (True, False):
-                if np.ndim(cos_a):
-                    anchors.append([Anchor(exact_contact_k(th, float(v), inner)) for v in cos_a])
-                else:
-                    anchors.append(Anchor(exact_contact_k(th, float(cos_a), inner)))
-        self.x, self.anchors, self.inputs = tuple(float(v) for v in x), anchors, tuple(inputs)
+            cosines = [[float(v) for v in cs] for cs in ball_cosines]
+        layout = self._layout(self.mode)
+        self.rings = [
+            [
+                Ball(
+                    cp,
+                    w,
+                    Anchor(exact_contact_k(th, cos_a, True)),
+                    Anchor(exact_contact_k(th, cos_a, False)),
+                )
+                for (cp, w), cos_a in zip(layout, cs, strict=True)
+            ]
+            for cs in cosines
+        ]
+        self.x, self.inputs = tuple(float(v) for v in x), tuple(inputs)
 
     def _switch(self, mode: str) -> None:
-        """Carry the anchors and offsets over between the axial and the radial form."""
-        n = len(self.cos_psi)
-        if mode == "radial":
-            self.anchors = [[a.copy() for _ in range(n)] for a in self.anchors]
-            self.x = (*self.x, 0.0, 0.0)
-        else:
-            self.anchors = [a[0].copy() for a in self.anchors]
-            self.x = self.x[:2]
-        self.mode, self.previous = mode, None
+        """Carry the anchors over between the axial and the radial form (the radial balls
+        start from the axial ball's anchors; the axial ball from the ball at ψ = 0)."""
+        layout = self._layout(mode)
+        self.rings = [
+            [Ball(cp, w, ring[0].anc_i.copy(), ring[0].anc_o.copy()) for cp, w in layout]
+            for ring in self.rings
+        ]
+        if mode == "axial":
+            self.x = (*self.x[:2], 0.0, 0.0)
+        self.mode, self.jacobian, self.secant = mode, None, None
 
     # ---------------------------------------------------------------- solve
-    def evaluate(self, th: Thermal, axial_load: float, radial_load: float):
-        """The solution object at the current offsets and anchors, without a Newton step: the
-        last step's solution again, bit for bit (after :meth:`restore`)."""
-        if self.mode == "axial":
-            p, z = self.x
-            sol = AxialSolution()
-            sol.p, sol.z = p, z
-            sol.a = bearing_point(th, self.c, p + z, self.anchors[0], self.anchors[1])
-            sol.b = (
-                sol.a
-                if axial_load == 0.0
-                else bearing_point(th, self.c, p - z, self.anchors[2], self.anchors[3])
-            )
-            return sol
-        p, z, da, db = self.x
-        sol = RadialSolution()
-        sol.x = self.x
-        args = (self.cos_psi, self.weights)
-        sol.a = ring_point(th, self.c, p + z, da, *self.anchors[:2], *args)
-        sol.b = ring_point(th, self.c, p - z, db, *self.anchors[2:], *args)
-        return sol
-
-    def solve(self, th: Thermal, axial_load: float, radial_load: float):
-        """The pair at the thermal state ``th`` under ``axial_load`` and ``radial_load`` [N]:
-        an :class:`AxialSolution` (no radial load) or a :class:`RadialSolution`, or None."""
+    def solve(self, th: Thermal, axial_load: float, radial_load: float) -> PointState | None:
+        """The pair at the thermal state ``th`` under ``axial_load`` (pressing A) and
+        ``radial_load`` [N]: the step's :class:`~.pair_state.PointState`, or None."""
         if self.x is None:
             return None
         mode = "axial" if radial_load == 0.0 else "radial"
         if mode != self.mode:
             self._switch(mode)
         inputs = (*th.temperatures, axial_load, radial_load)
-        x = self.x
-        if self.previous is not None:
-            x = _secant(self.x, self.previous[0], inputs, self.inputs, self.previous[1])
-        anchors = self.anchors
+        x = self._predict(inputs)
         for _ in range(MAX_ANCHOR_ROUNDS):
-            if mode == "axial":
-                sol = solve_axial(th, self.c, axial_load, x, anchors)
-                if sol is None:
-                    return None
-                x = (sol.p, sol.z)
-                drift = _drifted(anchors, (sol.a.inner, sol.a.outer, sol.b.inner, sol.b.outer))
-                if drift and axial_load == 0.0:  # B mirrors A
-                    anchors[2], anchors[3] = anchors[0].copy(), anchors[1].copy()
-            else:
-                sol = solve_radial(
-                    th, self.c, axial_load, radial_load, x, anchors, self.cos_psi, self.weights
-                )
-                if sol is None:
-                    return None
-                x = sol.x
-                drift = False
-                for ring, (anc_i, anc_o) in ((sol.a, anchors[:2]), (sol.b, anchors[2:])):
-                    cons = [b[3] for b in ring.balls] + [b[4] for b in ring.balls]
-                    drift |= _drifted(anc_i + anc_o, cons)
-            if not drift:
-                self.previous = (self.x, self.inputs)
-                self.x, self.inputs = x, inputs
-                return sol
+            sol = self._newton(th, axial_load, radial_load, x)
+            if sol is None and x is not self.x:  # the predictor overshot: from the last step
+                x = self.x
+                sol = self._newton(th, axial_load, radial_load, x)
+            if sol is None:
+                return None
+            x, ka, kb, jac = sol
+            point, redo = self._point(th, x, ka, kb, axial_load == 0.0 and mode == "axial")
+            if not redo:
+                self._advance(x, inputs, jac)
+                return point
         return None
 
+    def _load_step(self, jac, inputs_new, inputs_old):
+        """First-order change of x [m] from the loads of ``inputs_old`` to those of
+        ``inputs_new`` (the Newton step of the load change alone), or None."""
+        d_ext, d_r = inputs_new[4] - inputs_old[4], inputs_new[5] - inputs_old[5]
+        if d_ext == 0.0 and d_r == 0.0:
+            return (0.0, 0.0, 0.0, 0.0)
+        half = -0.5 * d_r
+        return newton_step(
+            *jac, -d_ext, half, half, 0.0, self.c.loop_stiffness, self.mode == "radial"
+        )
 
-def _drifted(anchors, contacts) -> bool:
-    """Renew every anchor whose contact's ellipticity moved more than :data:`ANCHOR_DRIFT`
-    from it (at the contact's current k); True when one was renewed."""
-    drift = False
-    for anc, con in zip(anchors, contacts, strict=True):
-        k = con[3]
-        if abs(k - anc.k) > ANCHOR_DRIFT * anc.k:
-            anc.set(k)
-            drift = True
-    return drift
+    def _predict(self, inputs):
+        """Start of a step at ``inputs``: the last solution moved by the tangent of the load
+        change (the last Jacobian) and by the secant of the temperature change (the last step's
+        change of x less its load part, when the temperatures move on in the same direction)."""
+        x, u = self.x, self.inputs
+        p, z, da, db = x
+        moved = False
+        if self.jacobian is not None and (inputs[4] != u[4] or inputs[5] != u[5]):
+            dx = self._load_step(self.jacobian, inputs, u)
+            if dx is not None:
+                p, z, da, db = p + dx[0], z + dx[1], da + dx[2], db + dx[3]
+                moved = True
+        if self.secant is not None and inputs[:4] != u[:4]:
+            d_t = (inputs[0] - u[0], inputs[1] - u[1], inputs[2] - u[2], inputs[3] - u[3])
+            theta = _parallel(d_t, self.secant[1])
+            if theta:
+                s0, s1, s2, s3 = self.secant[0]
+                p, z, da, db = p + theta * s0, z + theta * s1, da + theta * s2, db + theta * s3
+                moved = True
+        return (p, z, da, db) if moved else x
+
+    def _advance(self, x, inputs, jac) -> None:
+        """Make ``x`` at ``inputs`` (Jacobian ``jac``) the last solution, and keep the secant of
+        the temperature change from the solution before."""
+        u = self.inputs
+        self.secant = None
+        if inputs[:4] != u[:4]:
+            dx = self._load_step(jac, inputs, u)
+            if dx is not None:
+                x0 = self.x
+                self.secant = (
+                    (
+                        x[0] - x0[0] - dx[0],
+                        x[1] - x0[1] - dx[1],
+                        x[2] - x0[2] - dx[2],
+                        x[3] - x0[3] - dx[3],
+                    ),
+                    (inputs[0] - u[0], inputs[1] - u[1], inputs[2] - u[2], inputs[3] - u[3]),
+                )
+        self.x, self.inputs, self.jacobian = x, inputs, jac
+
+    def _newton(self, th: Thermal, f_ext: float, f_r: float, x0):
+        """Newton's method from ``x0`` = (p, z, δr_A, δr_B) [m]: the solution, the bearings'
+        output stiffnesses [N/m] and their Jacobians there (the balls hold its loads), or None
+        (see :func:`newton_step`).
+        Without external load z = 0 and B mirrors A (the exact path's symmetric solution)."""
+        c = self.c
+        k_loop, closure = c.loop_stiffness, th.closure
+        rigid = k_loop == _INF
+        tol = _TOLERANCE * th.curvature_distance
+        floor = _ROUNDING * th.curvature_distance
+        p, z, da, db = x0
+        radial = f_r != 0.0
+        if rigid:
+            p = 0.5 * closure
+        symmetric = f_ext == 0.0 and not radial
+        if symmetric:
+            z = 0.0
+        ring_a, ring_b = self.rings
+        half = 0.5 * f_r
+        for _ in range(MAX_ITERATIONS):
+            ra = ring_point(th, c, p + z, da, ring_a)
+            rb = ra if symmetric else ring_point(th, c, p - z, db, ring_b)
+            r4 = 0.0 if rigid else 2.0 * p + 0.5 * (ra[0] + rb[0]) / k_loop - closure
+            if symmetric:
+                dp = 0.0 if rigid else -r4 / (2.0 + ra[2] / k_loop)
+                dz = dda = ddb = 0.0
+            elif radial and (ra[5] == 0.0 or rb[5] == 0.0):
+                # a bearing with no ball in contact has no radial stiffness: move it radially
+                # until its ball nearest the load's direction carries about F_r/2, and go on
+                da = self._touch(th, p + z, half, ring_a) if ra[5] == 0.0 else da
+                db = self._touch(th, p - z, half, ring_b) if rb[5] == 0.0 else db
+                if da is None or db is None:
+                    return None
+                continue
+            else:
+                r1 = ra[0] - rb[0] - f_ext
+                dx = newton_step(ra, rb, r1, ra[1] - half, rb[1] - half, r4, k_loop, radial)
+                if dx is None:
+                    return None
+                dp, dz, dda, ddb = dx
+            step = max(abs(dp), abs(dz), abs(dda), abs(ddb))
+            if step <= tol and (step <= _DEFLECTION_TOLERANCE * min(ra[7], rb[7]) or step <= floor):
+                return (p, z, da, db), ra[6], rb[6], (ra, rb)
+            if not step < _INF:
+                return None
+            p, z, da, db = p + dp, z + dz, da + dda, db + ddb
+        return None
+
+    def _touch(self, th: Thermal, a: float, f: float, balls) -> float | None:
+        """Radial displacement [m] of a bearing at axial offset ``a`` [m] at which its ball
+        nearest the direction of the radial force ``f`` [N] carries |f| with the other balls
+        free (Hertz: δ = (|f|/(K_n·cos α))^(2/3)): a start for Newton's method where no ball
+        touches. None when no radial displacement brings that ball into contact."""
+        dist, a2_0 = th.curvature_distance, th.radial_centre_distance
+        b = max(balls, key=lambda ball: ball.cos_psi * f)
+        cp = b.cos_psi
+        if abs(a) >= dist or cp * f <= 0.0:
+            return None
+        a2 = _sqrt(dist * dist - a * a)
+        cos_a = a2 / dist
+        gamma = th.gamma_scale * cos_a
+        ci = contact_terms(self.c, gamma, th.inv_f_inner, True, b.anc_i)[0] / th.dw_third
+        co = contact_terms(self.c, gamma, th.inv_f_outer, False, b.anc_o)[0] / th.dw_third
+        delta = (abs(f) * (ci + co) ** 1.5 / cos_a) ** (2.0 / 3.0)
+        s = dist + delta
+        return (_sqrt(s * s - a * a) - a2_0) / cp
+
+    def _point(self, th: Thermal, x, ka: float, kb: float, symmetric: bool):
+        """The step's :class:`~.pair_state.PointState` from the balls' last evaluation
+        (:func:`ring_sums`): torques [N·m], forces [N], the pair's stiffness [N/m], the
+        load-weighted contact angle of A [rad], the largest pressure [Pa], flags; and whether
+        an anchor moved so far that the step must be solved again. B mirrors A when
+        ``symmetric`` (its anchors follow A's)."""
+        c = self.c
+        ring_a, ring_b = self.rings
+        sa = ring_sums(th, c, ring_a)
+        if symmetric:
+            sb = sa
+            for a, b in zip(ring_a, ring_b, strict=True):
+                if b.anc_i.k != a.anc_i.k or b.anc_o.k != a.anc_o.k:
+                    b.anc_i, b.anc_o, b.base = a.anc_i.copy(), a.anc_o.copy(), None
+        else:
+            sb = ring_sums(th, c, ring_b)
+        fa, fb = sa[8], sb[8]
+        p_max = max(sa[5], sb[5])
+        flags = state_flags(self.pair, th.clearance, p_max, fa, fb)
+        if th.rest_torque is None:
+            th.rest_torque = rest_torque(self.pair, th.kinematic_viscosity, th.pitch_diameter)
+        point = PointState.of(
+            self.pair,
+            th,
+            (sa[0] + sb[0], sa[1] + sb[1], sa[2] + sb[2], sa[3] + sb[3], sa[4] + sb[4]),
+            (
+                0.5 * (fa + fb),
+                sa[7] / sa[6] if sa[6] > 0.0 else th.free_contact_angle,
+                _pair_stiffness(ka, kb, c.loop_stiffness),
+                p_max,
+                fa,
+                fb,
+                x[1],
+            ),
+            (flags["overloaded"], flags["locked"], flags["unloaded"]),
+            th.rest_torque,
+        )
+        return point, sa[9] or sb[9]
+
+
+def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
+    """Weighted sums over one bearing's balls at their last evaluation: (hysteresis, spin,
+    sliding, inner ring, outer ring torques [N·m], largest pressure [Pa], Σ w·Q [N],
+    Σ w·Q·α [N·rad], Fa [N], redo), with the Hertz constants from the balls' bases.
+
+    The torques are those of :func:`friction.ball_torque_terms` (Yu 2017 eq 1–3, 5–7; Ning)
+    at the race radii (dm ∓ Dw·cos α)/2: each term is a product of powers of the load, the
+    semi-axes and E(e), so its coefficient is the friction function at unit arguments
+    (:func:`torque_coefficients`) and a ball costs a few products (a call of
+    ball_torque_terms per ball cost 0.9 µs; tests/test_continuation.py checks the two agree).
+
+    Every anchor whose contact's ellipticity moved more than :data:`ANCHOR_DRIFT` from it is
+    renewed at the current k (for the next step; the ball's base is dropped); ``redo`` is True
+    when one moved more than :data:`ANCHOR_REDO` (the step is then solved again)."""
+    dw, dm = th.ball_diameter, th.pitch_diameter
+    gs, f_i, f_o, dw_third = th.gamma_scale, th.inv_f_inner, th.inv_f_outer, th.dw_third
+    if th.torque_coefficients is None:
+        th.torque_coefficients = torque_coefficients(th, c)
+    c_h, c_sl_i, c_sl_o, c_sp = th.torque_coefficients
+    solid = c.solid
+    hyst = spin = slide = inner = outer = p_max = qsum = qalpha = fa = 0.0
+    redo = False
+    for b in balls:
+        q = b.load
+        if q <= 0.0:
+            continue
+        w, cos_a, sin_a = b.weight, b.cos_a, b.sin_a
+        g0, fi0, fo0, _, terms = b.base
+        d, d_i, d_o = gs * cos_a - g0, f_i - fi0, f_o - fo0
+        (ai0, ai1, ai2, aif, ki0, ki1, ki2, kif, ei0, ei1, ei2, eif) = terms[:12]
+        (ao0, ao1, ao2, aof, ko0, ko1, ko2, kof, eo0, eo1, eo2, eof) = terms[12:]
+        a_i = (ai0 + d * (ai1 + ai2 * d) + aif * d_i) * dw_third  # a_coef
+        a_o = (ao0 + d * (ao1 + ao2 * d) + aof * d_o) * dw_third
+        k_i = ki0 + d * (ki1 + ki2 * d) + kif * d_i
+        k_o = ko0 + d * (ko1 + ko2 * d) + kof * d_o
+        e_i = ei0 + d * (ei1 + ei2 * d) + eif * d_i
+        e_o = eo0 + d * (eo1 + eo2 * d) + eof * d_o
+        b_i, b_o = a_i / k_i, a_o / k_o  # b_coef
+        q3 = q**_THIRD
+        qa_i, qa_o = q * q3 * a_i, q * q3 * a_o  # Q·a
+        r_in, r_out = 0.5 * (dm - dw * cos_a), 0.5 * (dm + dw * cos_a)
+        h_i, h_o = c_h * q * q3 * b_i * r_in, c_h * q * q3 * b_o * r_out
+        sl_i, sl_o = c_sl_i * qa_i * a_i * q3 * r_in, c_sl_o * qa_o * a_o * q3 * r_out
+        sin_abs = abs(sin_a)
+        sp_i = c_sp * qa_i * e_i * sin_abs
+        sp_o = c_sp * qa_o * e_o * sin_abs
+        if solid or sp_i >= sp_o:  # Ning: the inner race spins; Yu eq 7: the larger moment
+            sp_o = 0.0
+        else:
+            sp_i = 0.0
+        hyst += w * (h_i + h_o)
+        spin += w * (sp_i + sp_o)
+        slide += w * (sl_i + sl_o)
+        inner += w * (h_i + sl_i + sp_i)
+        outer += w * (h_o + sl_o + sp_o)
+        p = 1.5 * q3 / (_PI * min(a_i * b_i, a_o * b_o))
+        if p > p_max:
+            p_max = p
+        qsum += w * q
+        qalpha += w * q * _atan2(sin_a, cos_a)
+        fa += w * q * sin_a
+        anc_i, anc_o = b.anc_i, b.anc_o
+        drift_i, drift_o = abs(k_i - anc_i.k), abs(k_o - anc_o.k)
+        if drift_i > ANCHOR_DRIFT * anc_i.k or drift_o > ANCHOR_DRIFT * anc_o.k:
+            for anc, k, drift in ((anc_i, k_i, drift_i), (anc_o, k_o, drift_o)):
+                if drift > ANCHOR_DRIFT * anc.k:
+                    redo |= drift > ANCHOR_REDO * anc.k
+                    anc.set(k)
+            b.base = None
+    return hyst, spin, slide, inner, outer, p_max, qsum, qalpha, fa, redo
+
+
+def torque_coefficients(th: Thermal, c: PairConstants) -> tuple:
+    """Coefficients of one ball's torque terms at the thermal state ``th``: (hysteresis
+    3·α_r/(8·Dw) [1/m] per Q·b·r, Heathcote sliding of the inner and outer race [1/m²] per
+    Q·a²·r (0 without differential sliding), spin 3μ/8 [-] per Q·a·E(e)): the functions of
+    :mod:`.friction` at unit load, semi-axes and E(e)."""
+    dw, mu = th.ball_diameter, c.coefficients.sliding_friction
+    c_h = _hysteresis(1.0, 1.0, dw, c.coefficients.hysteresis_loss)
+    if c.sliding:
+        c_sl_i = _heathcote(1.0, 1.0, dw, th.inner_groove_radius, mu)
+        c_sl_o = _heathcote(1.0, 1.0, dw, th.outer_groove_radius, mu)
+    else:
+        c_sl_i = c_sl_o = 0.0
+    return c_h, c_sl_i, c_sl_o, _spin(1.0, 1.0, 1.0, mu)
 
 
 def _pair_stiffness(ka: float, kb: float, k: float) -> float:
     """:func:`preload.pair_axial_stiffness` on floats [N/m]."""
-    return ka + kb if k == math.inf else ka + kb - (ka - kb) ** 2 / (4.0 * k + ka + kb)
-
-
-def axial_state_of(pair, c: PairConstants, th: Thermal, sol: AxialSolution) -> LoadState:
-    """The :class:`~.pair_state.LoadState` (floats) of an axial solution: forces [N], torques
-    [N·m] of Z balls per bearing, stiffness [N/m], contact angle [rad], pressure [Pa], flags."""
-    z = c.n_balls
-    sums = [0.0] * 5
-    p_max = 0.0
-    for pt in (sol.a, sol.b):
-        if pt.load > 0.0:
-            ci, co = Contact(pt.inner), Contact(pt.outer)
-            t = _ball_torques(c, th, pt.load, pt.cos_a, pt.sin_a, ci, co)
-            sums = [s + z * v for s, v in zip(sums, t, strict=True)]
-            p_max = max(p_max, ci.max_pressure(pt.load), co.max_pressure(pt.load))
-    fa, fb = sol.a.force, sol.b.force
-    angle = _atan2(sol.a.sin_a, sol.a.cos_a) if sol.a.load > 0.0 else th.free_contact_angle
-    return LoadState(
-        force_a=fa,
-        force_b=fb,
-        preload=0.5 * (fa + fb),
-        contact_angle=angle,
-        axial_stiffness=_pair_stiffness(sol.a.stiffness, sol.b.stiffness, c.loop_stiffness),
-        max_contact_pressure=p_max,
-        **state_flags(pair, th.clearance, p_max, fa, fb),
-        torques=BallSetTorques(*sums),
-        axial_displacement=sol.z,
-        offset_a=sol.p + sol.z,
-        offset_b=sol.p - sol.z,
-    )
-
-
-def radial_state_of(pair, solver: PairSolver, th: Thermal, sol: RadialSolution) -> LoadState:
-    """The :class:`~.pair_state.LoadState` (floats) of a radial solution: ball sums weighted
-    over half the ring."""
-    c, w = solver.c, solver.weights
-    sums = [0.0] * 5
-    p_max = 0.0
-    for ring in (sol.a, sol.b):
-        for wj, (q, cos_a, sin_a, ti, to) in zip(w, ring.balls, strict=True):
-            if q > 0.0:
-                ci, co = Contact(ti), Contact(to)
-                t = _ball_torques(c, th, q, cos_a, sin_a, ci, co)
-                sums = [s + wj * v for s, v in zip(sums, t, strict=True)]
-                p_max = max(p_max, ci.max_pressure(q), co.max_pressure(q))
-    fa, fb = sol.a.axial_force, sol.b.axial_force
-    qsum = qalpha = 0.0
-    for wj, (q, cos_a, sin_a, _, _) in zip(w, sol.a.balls, strict=True):
-        qsum += wj * q
-        qalpha += wj * q * _atan2(sin_a, cos_a)
-    angle = qalpha / qsum if qsum > 0.0 else th.free_contact_angle
-    p, z, da, db = sol.x
-    return LoadState(
-        force_a=fa,
-        force_b=fb,
-        preload=0.5 * (fa + fb),
-        contact_angle=angle,
-        axial_stiffness=_pair_stiffness(
-            sol.a.axial_stiffness, sol.b.axial_stiffness, c.loop_stiffness
-        ),
-        max_contact_pressure=p_max,
-        **state_flags(pair, th.clearance, p_max, fa, fb),
-        torques=BallSetTorques(*sums),
-        axial_displacement=z,
-        offset_a=p + z,
-        offset_b=p - z,
-        radial_a=da,
-        radial_b=db,
-    )
+    return ka + kb if k == _INF else ka + kb - (ka - kb) ** 2 / (4.0 * k + ka + kb)

@@ -364,17 +364,29 @@ class BearingOutputs:
         return {f.name: getattr(self, f.name) for f in fields(self)}
 
 
-def _speed_terms(pair: BearingPair, thermal: ThermalState, load: LoadState, w):
-    """(signed friction, running, viscous, Coulomb part, breakaway excess) at speed w [rad/s]
-    (Yu 2017 eq 8–9 and the regularised sign); floats in, floats out on the per-step path."""
-    t = load.torques
+def _speed_terms(pair: BearingPair, viscosity, pitch_diameter, coulomb, excess, w):
+    """(signed friction, running, viscous torque) [N·m] at speed w [rad/s] (Yu 2017 eq 8–9
+    and the regularised sign) from the kinematic viscosity [m²/s], the pitch diameter [m], the
+    Coulomb torque (hysteresis + spin + sliding) and the breakaway excess [N·m]; floats in,
+    floats out on the per-step path."""
     s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
-    viscous = 2.0 * _palmgren(thermal.kinematic_viscosity, w, thermal.pitch_diameter, s0)
-    coulomb = t.hysteresis + t.spin + t.sliding
-    excess = (pair.coefficients.static_friction_ratio - 1.0) * (t.spin + t.sliding)
+    viscous = 2.0 * _palmgren(viscosity, w, pitch_diameter, s0)
     running = coulomb + viscous
     signed = _regularised(w, running, excess, pair.regularisation_speed, pair.stribeck_speed)
-    return signed, running, viscous, coulomb, excess
+    return signed, running, viscous
+
+
+def _coulomb_excess(pair: BearingPair, hysteresis, spin, sliding):
+    """(Coulomb torque hysteresis + spin + sliding, breakaway excess (μ_s/μ − 1)·(spin +
+    sliding)) [N·m] (Yu 2017 eq 9; the static friction of spin and sliding)."""
+    excess = (pair.coefficients.static_friction_ratio - 1.0) * (spin + sliding)
+    return hysteresis + spin + sliding, excess
+
+
+def rest_torque(pair: BearingPair, viscosity, pitch_diameter):
+    """Viscous torque of the pair at rest (Palmgren's eq 8 below its threshold) [N·m]."""
+    s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
+    return 2.0 * _palmgren(viscosity, 0.0, pitch_diameter, s0)
 
 
 def bearing_outputs(
@@ -383,14 +395,13 @@ def bearing_outputs(
     """Speed-dependent outputs at ``speed`` [rad/s] (Yu 2017 eq 8–9; regularised sign)."""
     w = speed if type(speed) is float else check_finite("speed", speed, "rad/s")
     t = load.torques
-    signed, running, viscous, coulomb, excess = _speed_terms(pair, thermal, load, w)
-    s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
-    dm = thermal.pitch_diameter
-    viscous_rest = 2.0 * _palmgren(thermal.kinematic_viscosity, 0.0, dm, s0)
+    nu, dm = thermal.kinematic_viscosity, thermal.pitch_diameter
+    coulomb, excess = _coulomb_excess(pair, t.hysteresis, t.spin, t.sliding)
+    signed, running, viscous = _speed_terms(pair, nu, dm, coulomb, excess, w)
     return BearingOutputs(
         friction_torque=signed,
         running_torque=running,
-        breakaway_torque=coulomb + excess + viscous_rest,
+        breakaway_torque=coulomb + excess + rest_torque(pair, nu, dm),
         hysteresis_torque=t.hysteresis,
         spin_torque=t.spin,
         sliding_torque=t.sliding,
@@ -398,7 +409,7 @@ def bearing_outputs(
         preload=load.preload,
         contact_angle=load.contact_angle,
         radial_clearance=thermal.clearance,
-        kinematic_viscosity=thermal.kinematic_viscosity,
+        kinematic_viscosity=nu,
         axial_stiffness=load.axial_stiffness,
         power_loss=signed * w,
         overloaded=load.overloaded,
@@ -415,6 +426,146 @@ def bearing_outputs(
         force_b=load.force_b,
         axial_displacement=load.axial_displacement,
     )
+
+
+@dataclass(slots=True)
+class PointState:
+    """Everything BearingFriction reports at one operating point except what moves with speed,
+    as floats: the per-step state of :class:`~.bearing.BearingModel` (from the continuation or
+    the exact path), with the Coulomb torque, breakaway excess, pitch diameter [m] and
+    kinematic viscosity [m²/s] that the speed terms need. Fields as :class:`BearingOutputs`
+    (torques [N·m], forces [N], angle [rad], lengths [m], stiffness [N/m], pressures [Pa])."""
+
+    hysteresis_torque: float
+    spin_torque: float
+    sliding_torque: float
+    inner_ring_torque: float
+    outer_ring_torque: float
+    coulomb_torque: float
+    breakaway_excess: float
+    breakaway_torque: float
+    preload: float
+    contact_angle: float
+    radial_clearance: float
+    kinematic_viscosity: float
+    pitch_diameter: float
+    axial_stiffness: float
+    max_contact_pressure: float
+    outer_fit_pressure: float
+    inner_fit_pressure: float
+    outer_interference: float
+    inner_interference: float
+    force_a: float
+    force_b: float
+    axial_displacement: float
+    overloaded: bool
+    locked: bool
+    unloaded: bool
+
+    @classmethod
+    def of(cls, pair: BearingPair, thermal, torques, load, flags, rest=None) -> PointState:
+        """From the thermal state ``thermal`` (clearance, viscosity, pitch diameter, fits),
+        ``torques`` = (hysteresis, spin, sliding, inner ring, outer ring) [N·m], ``load`` =
+        (preload [N], contact angle [rad], axial stiffness [N/m], largest pressure [Pa],
+        force_a, force_b [N], axial displacement [m]), ``flags`` = (overloaded, locked,
+        unloaded) (:func:`state_flags`) and the viscous torque at rest [N·m]
+        (:func:`rest_torque`, evaluated when not given)."""
+        hyst, spin, slide, inner, outer = torques
+        nu, dm = thermal.kinematic_viscosity, thermal.pitch_diameter
+        coulomb, excess = _coulomb_excess(pair, hyst, spin, slide)
+        return cls(
+            hyst,
+            spin,
+            slide,
+            inner,
+            outer,
+            coulomb,
+            excess,
+            coulomb + excess + (rest_torque(pair, nu, dm) if rest is None else rest),
+            load[0],
+            load[1],
+            thermal.clearance,
+            nu,
+            dm,
+            load[2],
+            load[3],
+            thermal.outer_fit_pressure,
+            thermal.inner_fit_pressure,
+            thermal.outer_interference,
+            thermal.inner_interference,
+            load[4],
+            load[5],
+            load[6],
+            *flags,
+        )
+
+    @classmethod
+    def exact(cls, pair: BearingPair, thermal: ThermalState, load: LoadState) -> PointState:
+        """From the exact path's thermal and load state (fields as floats, :func:`to_floats`)."""
+        t = load.torques
+        return cls.of(
+            pair,
+            thermal,
+            (t.hysteresis, t.spin, t.sliding, t.inner_ring, t.outer_ring),
+            (
+                load.preload,
+                load.contact_angle,
+                load.axial_stiffness,
+                load.max_contact_pressure,
+                load.force_a,
+                load.force_b,
+                load.axial_displacement,
+            ),
+            (load.overloaded, load.locked, load.unloaded),
+        )
+
+    def speed_terms(self, pair: BearingPair, w: float):
+        """(signed friction, running, viscous torque) [N·m] at speed ``w`` [rad/s]."""
+        return _speed_terms(
+            pair,
+            self.kinematic_viscosity,
+            self.pitch_diameter,
+            self.coulomb_torque,
+            self.breakaway_excess,
+            w,
+        )
+
+    def outputs(self, pair: BearingPair, w: float) -> BearingOutputs:
+        """:class:`BearingOutputs` at speed ``w`` [rad/s] (float): the same numbers as
+        :func:`bearing_outputs` on the exact path's state."""
+        signed, running, viscous = self.speed_terms(pair, w)
+        return BearingOutputs(
+            signed,
+            running,
+            self.breakaway_torque,
+            self.hysteresis_torque,
+            self.spin_torque,
+            self.sliding_torque,
+            viscous,
+            self.preload,
+            self.contact_angle,
+            self.radial_clearance,
+            self.kinematic_viscosity,
+            self.axial_stiffness,
+            signed * w,
+            self.overloaded,
+            self.locked,
+            self.unloaded,
+            self.inner_ring_torque,
+            self.outer_ring_torque,
+            self.max_contact_pressure,
+            self.outer_fit_pressure,
+            self.inner_fit_pressure,
+            self.outer_interference,
+            self.inner_interference,
+            self.force_a,
+            self.force_b,
+            self.axial_displacement,
+        )
+
+    def as_dict(self) -> dict:
+        """The fields as a JSON-serialisable dict."""
+        return {f.name: getattr(self, f.name) for f in fields(self)}
 
 
 def operating_outputs(
