@@ -14,8 +14,7 @@ import time
 
 import numpy as np
 
-from servofmu.physics import catalog
-from servofmu.physics.actuator import reduction_ratio, stiffness_breakdown
+from servofmu.physics.actuator import Actuator, reduction_ratio, stiffness_breakdown
 
 
 def _time(fn, repeat: int = 3) -> float:
@@ -32,7 +31,7 @@ def main() -> None:
     parser.add_argument("--json", action="store_true")
     parser.add_argument("--points", type=int, default=1000)
     args = parser.parse_args()
-    act = catalog.actuator("liu2014_ema")
+    act = Actuator.from_catalog("liu2014_ema")
     bare = dataclasses.replace(act, support_mounting="")
     angles = np.linspace(-0.5, 0.5, args.points)
     loads = np.linspace(10.0, 300.0, args.points)

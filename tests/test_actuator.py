@@ -7,13 +7,12 @@ import numpy as np
 import pytest
 
 from servofmu.physics import actuator as A
-from servofmu.physics import catalog
 from servofmu.physics.units import DEG
 
 
 @pytest.fixture(scope="module")
 def act():
-    return catalog.actuator("liu2014_ema")
+    return A.Actuator.from_catalog("liu2014_ema")
 
 
 @pytest.fixture(scope="module")

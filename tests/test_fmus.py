@@ -14,7 +14,7 @@ from fmu_helpers import Fmu
 
 from servofmu.build.validate import validate
 from servofmu.physics import catalog
-from servofmu.physics.actuator import ActuatorModel
+from servofmu.physics.actuator import Actuator, ActuatorModel
 from servofmu.physics.bearing import BearingModel, BearingPair
 from servofmu.physics.control import PIDParameters
 
@@ -92,7 +92,7 @@ def test_bearing_outputs_right_after_initialization(fmus):
 
 def test_actuator_outputs_right_after_initialization(fmus):
     fmu = Fmu(fmus["ActuatorStiffness"]).init(angle=0.1745, load_torque=200.0, temperature=253.15)
-    lib = ActuatorModel(catalog.actuator("liu2014_ema")).evaluate(0.1745, 200.0, 253.15)
+    lib = ActuatorModel(Actuator.from_catalog("liu2014_ema")).evaluate(0.1745, 200.0, 253.15)
     assert fmu.get("stiffness") == pytest.approx(lib.total, rel=1e-12)
     assert fmu.get("screw_force") == pytest.approx(lib.screw_force, rel=1e-12)
     assert fmu.get("deflection") == pytest.approx(200.0 / lib.total, rel=1e-12)

@@ -25,8 +25,7 @@ from servofmu.harness import (
 from servofmu.harness import master as master_module
 from servofmu.harness.master import order_components
 from servofmu.harness.units import read_results
-from servofmu.physics import catalog
-from servofmu.physics.actuator import output_angle, reduction_ratio
+from servofmu.physics.actuator import Actuator, output_angle, reduction_ratio
 
 
 @pytest.fixture(scope="module")
@@ -237,7 +236,7 @@ def test_linear_transformation_maps_motor_angle_to_output_angle(out, tmp_path):
     # ema_actuator as it was before issue 15: the motor angle reaches the actuator's
     # output-angle input through a LinearTransformation (1/i0, the ratio at neutral)
     folder = _copy_system(tmp_path, "ema_actuator")
-    factor = 1.0 / float(reduction_ratio(catalog.actuator("liu2014_ema"), 0.0).total)
+    factor = 1.0 / float(reduction_ratio(Actuator.from_catalog("liu2014_ema"), 0.0).total)
     _edit(
         folder / "SystemStructure.ssd",
         '<ssd:Connection startElement="motor" startConnector="angle" endElement="actuator" '
@@ -268,13 +267,13 @@ def test_linear_transformation_maps_motor_angle_to_output_angle(out, tmp_path):
     # Gauss-Seidel steps the (algebraic) actuator after the motor: each row's ratio is at
     # the output angle factor·motor angle of the same row
     output_angle = factor * res["motor.angle"]
-    expected = reduction_ratio(catalog.actuator("liu2014_ema"), output_angle).total
+    expected = reduction_ratio(Actuator.from_catalog("liu2014_ema"), output_angle).total
     assert res["actuator.reduction_ratio"] == pytest.approx(expected, rel=1e-12)
     assert np.ptp(output_angle) > 0  # the loaded motor moves: the check is not at one point
 
 
 def test_ema_actuator_applies_the_exact_reduction_to_the_motor_angle(out):
-    act = catalog.actuator("liu2014_ema")
+    act = Actuator.from_catalog("liu2014_ema")
     system = load_system(out / "ema_actuator.ssp")
     try:
         assert not [c for c in system.connections if c.factor != 1.0 or c.offset != 0.0]

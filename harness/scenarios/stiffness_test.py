@@ -19,8 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from servofmu.papers.liu2014 import KEY, TABLE1, TEST_ANGLE
-from servofmu.physics import catalog
-from servofmu.physics.actuator import per_degree, stiffness_breakdown
+from servofmu.physics.actuator import Actuator, per_degree, stiffness_breakdown
 from servofmu.physics.units import DEG
 
 from .. import load_system
@@ -63,7 +62,9 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
 
     theta0, servo0 = steady(output_angle, 0), steady(servo_angle, 0)
     model = per_degree(
-        stiffness_breakdown(catalog.actuator(KEY), TEST_ANGLE, np.array(LOADS), temperature).total
+        stiffness_breakdown(
+            Actuator.from_catalog(KEY), TEST_ANGLE, np.array(LOADS), temperature
+        ).total
     )
     rows = []
     for i, m in enumerate(LOADS, start=1):

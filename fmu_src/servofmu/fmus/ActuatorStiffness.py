@@ -19,8 +19,7 @@ from __future__ import annotations
 import dataclasses
 
 from servofmu.fmus.slave import ServoSlave, Var, output, real_input, real_parameter, spec_parameter
-from servofmu.physics import catalog
-from servofmu.physics.actuator import ActuatorModel
+from servofmu.physics.actuator import Actuator, ActuatorModel
 from servofmu.physics.actuator import output_angle as mechanism_output_angle
 from servofmu.physics.bearing_parameters import (
     STATE_PARAMETERS,
@@ -30,7 +29,7 @@ from servofmu.physics.bearing_parameters import (
     prefixed_specs,
 )
 
-_A = catalog.actuator("liu2014_ema")
+_A = Actuator.from_catalog("liu2014_ema")
 _ANGLE = ("angle", "motor_angle")  # the position input: output shaft, or motor shaft
 _LOAD = ("temperature", "load_torque", *_ANGLE)
 # with motor_side_inputs, the angle follows from motor_angle through the ratio's parameters

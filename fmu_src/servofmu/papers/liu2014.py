@@ -27,7 +27,6 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import brentq
 
-from ..physics import catalog
 from ..physics.actuator import (
     Actuator,
     per_degree,
@@ -77,7 +76,7 @@ def calibrate_crank_length() -> float:
     catalogued); F3 falls as the crank grows."""
     return brentq(
         lambda l1: (
-            float(screw_force(catalog.actuator(KEY, crank_length=l1), TEST_ANGLE, 100.0))
+            float(screw_force(Actuator.from_catalog(KEY, crank_length=l1), TEST_ANGLE, 100.0))
             - TABLE1["F3"][0]
         ),
         0.02,
@@ -92,7 +91,7 @@ def calibrate_arm_length(crank_length: float) -> float:
     from ..physics.actuator import linkage_stiffness
 
     def gap(arm):
-        act = catalog.actuator(KEY, crank_length=crank_length, arm_length=arm)
+        act = Actuator.from_catalog(KEY, crank_length=crank_length, arm_length=arm)
         return float(per_degree(linkage_stiffness(act, TEST_ANGLE, 100.0))) - TABLE1["rod"][0]
 
     return brentq(gap, 1e-4, 1.0, xtol=1e-12)
@@ -104,7 +103,7 @@ def calibrate_seat_stiffness(crank_length: float, arm_length: float) -> float:
     base = dict(crank_length=crank_length, arm_length=arm_length)
 
     def gap(log_k):
-        act = catalog.actuator(KEY, **base, seat_stiffness=10.0**log_k)
+        act = Actuator.from_catalog(KEY, **base, seat_stiffness=10.0**log_k)
         k = stiffness_breakdown(act, TEST_ANGLE, 100.0, T_ROOM).total
         return float(per_degree(k)) - TABLE1["measured"][0]
 
@@ -119,7 +118,7 @@ def calibrated_actuator() -> tuple[Actuator, dict]:
     l1 = calibrate_crank_length()
     arm = calibrate_arm_length(l1)
     seat = calibrate_seat_stiffness(l1, arm)
-    act = catalog.actuator(KEY, crank_length=l1, arm_length=arm, seat_stiffness=seat)
+    act = Actuator.from_catalog(KEY, crank_length=l1, arm_length=arm, seat_stiffness=seat)
     return act, {"crank_length": l1, "arm_length": arm, "seat_stiffness": seat}
 
 

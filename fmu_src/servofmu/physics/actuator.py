@@ -42,6 +42,7 @@ R = |CA|, ψ = atan2(Y1, x_A); the reach ends at the dead centres (R = L1 + L2, 
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from dataclasses import dataclass
@@ -55,7 +56,7 @@ from .units import DEG
 @dataclass(frozen=True)
 class Actuator:
     """Parameters of the actuator (SI). Build from the catalogue with
-    :func:`catalog.actuator`.
+    :meth:`Actuator.from_catalog`.
 
     Attributes
     ----------
@@ -149,6 +150,51 @@ class Actuator:
 
     def source(self, field: str) -> str:
         return dict(self.provenance).get(field, "")
+
+    @classmethod
+    def from_catalog(cls, key: str, **overrides) -> Actuator:
+        """The actuator ``key`` of ``data/actuators.toml``, with the stiffnesses the data give
+        reflected to the output (Liu 2014 Table 1, at the reference angle) turned into
+        intrinsic ones through the kinematics (eq 1–5). ``overrides`` (SI) replace data values
+        before that conversion (the calibration of ``servofmu paper liu2014``).
+
+        >>> ema = Actuator.from_catalog("liu2014_ema")
+        >>> ema.gear_ratio, ema.source("crank_length").split(":")[0]
+        (3.0, 'calibrated')
+        """
+        from . import catalog
+
+        text, v, prov = catalog.actuator_entry(key)
+        reflected = {
+            f: v.pop(f"{f}_reflected")
+            for f in ("gear_stiffness", "screw_stiffness", "housing_stiffness")
+        }
+        ref_angle = v.pop("reference_angle")
+        for field, value in overrides.items():
+            if field not in v:
+                raise ValueError(f"actuator override {field!r} is not one of {sorted(v)}")
+            v[field] = value
+            prov[field] = "override"
+        act = cls(
+            key=key,
+            name=text["name"],
+            support_mounting=text.get("support_mounting", ""),
+            gear_stiffness=1.0,
+            screw_stiffness=1.0,
+            housing_stiffness=1.0,
+            **v,
+        )
+        lever2 = float(kinematics(act, ref_angle).lever) ** 2
+        screw_rev = (2.0 * math.pi / act.screw_lead) ** 2
+        intrinsic = {
+            "gear_stiffness": reflected["gear_stiffness"] / (screw_rev * lever2),
+            "screw_stiffness": reflected["screw_stiffness"] / lever2,
+            "housing_stiffness": reflected["housing_stiffness"] / lever2,
+        }
+        for f in intrinsic:
+            prov[f] = "derived: " + prov.pop(f"{f}_reflected") + ", through the kinematics"
+        prov.pop("reference_angle", None)
+        return dataclasses.replace(act, **intrinsic, provenance=tuple(sorted(prov.items())))
 
 
 @dataclass(frozen=True)
@@ -290,8 +336,7 @@ def motor_angle(act: Actuator, output_angle):
 
     Examples
     --------
-    >>> from servofmu.physics import catalog
-    >>> ema = catalog.actuator("liu2014_ema")
+    >>> ema = Actuator.from_catalog("liu2014_ema")
     >>> round(float(motor_angle(ema, np.radians(10.0))), 6)
     33.92322
     """
@@ -323,8 +368,7 @@ def output_angle(act: Actuator, motor_angle):
 
     Examples
     --------
-    >>> from servofmu.physics import catalog
-    >>> ema = catalog.actuator("liu2014_ema")
+    >>> ema = Actuator.from_catalog("liu2014_ema")
     >>> round(float(np.degrees(output_angle(ema, motor_angle(ema, np.radians(10.0))))), 9)
     10.0
     """

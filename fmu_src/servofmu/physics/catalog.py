@@ -8,7 +8,6 @@ convert to SI and keep ``"kind: ref"`` as the provenance of each field.
 from __future__ import annotations
 
 import functools
-import math
 import tomllib
 from importlib import resources
 
@@ -493,6 +492,7 @@ def bearing_from_entry(key: str, entry: dict) -> BallBearing:
     ...          "pitch_diameter": q(39.04, "mm"), "radial_clearance": q(12.5, "um"),
     ...          "inner_curvature": q(0.52, "-"), "outer_curvature": q(0.53, "-"),
     ...          "ring_material": "bearing_steel_yu", "ball_material": "bearing_steel_yu"}
+    >>> import math
     >>> b = bearing_from_entry("example", entry)
     >>> round(b.clearance * 1e6, 2), round(math.degrees(b.contact_angle), 2)  # µm, deg
     (12.5, 10.18)
@@ -607,48 +607,19 @@ def mounting(key: str):
     )
 
 
-@functools.cache
-def actuator(key: str, **overrides):
-    """The :class:`actuator.Actuator` ``key`` from ``data/actuators.toml``, with the
-    reflected stiffnesses of the data turned into intrinsic ones at the reference angle.
-    ``overrides`` (SI) replace data values before that conversion (used by the calibration)."""
-    import dataclasses
+def actuator_entry(key: str) -> tuple[dict, dict, dict]:
+    """Entry ``key`` of ``data/actuators.toml`` as data: its text fields (``name``,
+    ``support_mounting``), its SI values and their provenance. The model record is built by
+    :meth:`actuator.Actuator.from_catalog` (the catalogue imports no model).
 
-    from .actuator import Actuator, kinematics
-
+    >>> text, values, prov = actuator_entry("liu2014_ema")
+    >>> text["support_mounting"], values["gear_ratio"], prov["crank_length"].split(":")[0]
+    ('liu2014_screw_support', 3.0, 'calibrated')
+    """
     entry = _lookup("actuators", key)
-    v, prov = _quantities(entry, f"actuator {key!r}")
-    reflected = {
-        "gear_stiffness": v.pop("gear_stiffness_reflected"),
-        "screw_stiffness": v.pop("screw_stiffness_reflected"),
-        "housing_stiffness": v.pop("housing_stiffness_reflected"),
-    }
-    ref_angle = v.pop("reference_angle")
-    for field, value in overrides.items():
-        if field not in v:
-            raise ValueError(f"actuator override {field!r} is not one of {sorted(v)}")
-        v[field] = value
-        prov[field] = "override"
-    act = Actuator(
-        key=key,
-        name=entry["name"],
-        support_mounting=entry.get("support_mounting", ""),
-        gear_stiffness=1.0,
-        screw_stiffness=1.0,
-        housing_stiffness=1.0,
-        **v,
-    )
-    lever2 = float(kinematics(act, ref_angle).lever) ** 2
-    screw_rev = (2.0 * math.pi / act.screw_lead) ** 2
-    intrinsic = {
-        "gear_stiffness": reflected["gear_stiffness"] / (screw_rev * lever2),
-        "screw_stiffness": reflected["screw_stiffness"] / lever2,
-        "housing_stiffness": reflected["housing_stiffness"] / lever2,
-    }
-    for f in intrinsic:
-        prov[f] = "derived: " + prov.pop(f"{f}_reflected") + ", through the kinematics"
-    prov.pop("reference_angle", None)
-    return dataclasses.replace(act, **intrinsic, provenance=tuple(sorted(prov.items())))
+    values, prov = _quantities(entry, f"actuator {key!r}")
+    text = {k: entry[k] for k in ("name", "support_mounting") if k in entry}
+    return text, dict(values), dict(prov)  # the caller's to change
 
 
 @functools.cache
