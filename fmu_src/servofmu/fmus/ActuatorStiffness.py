@@ -6,12 +6,24 @@ output shaft for the current angle, hinge moment and temperature
 The angle comes from the ``angle`` input (output shaft) or, with the parameter
 ``motor_side_inputs``, from ``motor_angle`` (motor shaft) through the exact inverse of the
 crank-slider (:func:`servofmu.physics.actuator.output_angle`): a system can then connect its
-motor to the actuator directly, without a LinearTransformation, which can only be linear."""
+motor to the actuator directly, without a LinearTransformation, which can only be linear.
+
+The support bearings carry a thermal preload: with ``temperature_mode`` ``parts`` (or
+``housing_shaft``) their housing, shaft and rings take their own temperatures
+(``housing_temperature`` … ``inner_ring_temperature``, e.g. from a ThermalNetwork), as in
+BearingFriction (:mod:`servofmu.fmus.part_temperatures`); the default ``uniform`` reads
+``temperature``."""
 
 from __future__ import annotations
 
 import dataclasses
 
+from servofmu.fmus.part_temperatures import (
+    TEMPERATURE_INPUTS,
+    part_inputs,
+    temperature_mode_parameter,
+    temperatures,
+)
 from servofmu.fmus.slave import ServoSlave, Var, items, output, real_input, real_parameter
 from servofmu.physics import catalog
 from servofmu.physics.actuator import ActuatorModel
@@ -21,7 +33,7 @@ from servofmu.physics.bearing_parameters import FROM_MOUNTING, Choice, catalogue
 
 _A = catalog.actuator("liu2014_ema")
 _ANGLE = ("angle", "motor_angle")  # the position input: output shaft, or motor shaft
-_LOAD = ("temperature", "load_torque", *_ANGLE)
+_LOAD = (*TEMPERATURE_INPUTS, "load_torque", *_ANGLE)
 # with motor_side_inputs, the angle follows from motor_angle through the ratio's parameters
 _MOTOR_SIDE = ("motor_side_inputs", "gear_ratio", "screw_lead")
 _SUPPORT_MOUNTINGS = catalogue_choices(
@@ -41,7 +53,13 @@ _LINKAGE = (
     "youngs_modulus",
     "shear_modulus",
 )
-_SUPPORT = ("seat_stiffness", "support_mounting", "support_bearing", "support_preload")
+_SUPPORT = (
+    "seat_stiffness",
+    "support_mounting",
+    "support_bearing",
+    "support_preload",
+    "temperature_mode",
+)
 _GEAR = ("screw_lead", "gear_torsional_stiffness")
 _RATIO = ("gear_ratio", "screw_lead")
 _ELEMENTS = (*_GEAR, "screw_axial_stiffness", "housing_axial_stiffness", *_LINKAGE, *_SUPPORT)
@@ -94,7 +112,7 @@ class ActuatorStiffness(ServoSlave):
     VARIABLES = (
         real_input(
             "temperature",
-            "Temperature of the actuator (support-bearing preload)",
+            "Temperature of the actuator (support-bearing preload; temperature_mode uniform)",
             293.15,
             "K",
             "degC",
@@ -326,6 +344,9 @@ class ActuatorStiffness(ServoSlave):
             "deg/s",
             ("speed", "motor_speed", *_ANGLE),
         ),
+        # the support bearings' part temperatures (issue 14), e.g. from a ThermalNetwork
+        *part_inputs(" of the support bearings"),
+        temperature_mode_parameter(),
     )
 
     def configure(self):
@@ -353,7 +374,7 @@ class ActuatorStiffness(ServoSlave):
 
     def compute(self):
         angle = self._mechanism_angle()
-        b = self.model.evaluate(angle, self.load_torque, self.temperature)
+        b = self.model.evaluate(angle, self.load_torque, temperatures(self))
         self.copy_outputs(b)
         self.motor_load_torque = self.load_torque / b.reduction_ratio
         self.output_angle = angle

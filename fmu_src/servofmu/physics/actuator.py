@@ -48,6 +48,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import check_finite, check_positive, check_range, check_temperature
+from .temperatures import PartTemperatures
 from .units import DEG
 
 
@@ -511,7 +512,9 @@ class ActuatorModel:
             self._bearings = BearingModel(pair)
 
     def _support(self, screw_force, temperature):
-        f3, t = float(screw_force), float(temperature)
+        # temperature: uniform [K], or the support pair's part temperatures (a 4-tuple)
+        f3 = float(screw_force)
+        t = temperature if isinstance(temperature, tuple) else float(temperature)
         if self._bearings is None:
             return np.inf
         out = self._bearings.evaluate(t, 0.0, f3)
@@ -528,9 +531,32 @@ class ActuatorModel:
         if self._bearings is not None:
             self._bearings.restore(state)
 
-    def evaluate(self, output_angle: float, load_torque: float, temperature: float):
-        """:class:`StiffnessBreakdown` with float fields at one operating point."""
-        b = stiffness_breakdown(
-            self.act, output_angle, load_torque, temperature, support=self._support
-        )
+    def evaluate(self, output_angle: float, load_torque: float, temperature):
+        """:class:`StiffnessBreakdown` with float fields at one operating point: output angle
+        δ [rad], hinge moment M [N·m], and the temperature [K] of the support pair, uniform or
+        its parts' (a :class:`~.temperatures.PartTemperatures` or a (housing, shaft, outer
+        ring, inner ring) tuple: only the support pair's thermal preload depends on it).
+
+        Returns
+        -------
+        StiffnessBreakdown
+            Stiffnesses [N·m/rad], deflection [rad], ratio [-], screw force [N].
+
+        >>> from servofmu.physics import catalog
+        >>> model = ActuatorModel(catalog.actuator("liu2014_ema"))
+        >>> even = model.evaluate(0.17, 100.0, 253.15).total
+        >>> even == model.evaluate(0.17, 100.0, (253.15,) * 4).total
+        True
+        """
+        support = self._support
+        if isinstance(temperature, tuple | PartTemperatures):
+            from .bearing import _temperatures
+
+            parts = _temperatures(temperature)  # checked floats, named on error
+            temperature = parts[0]  # the elastic moduli do not depend on temperature
+
+            def support(f3, _t, parts=parts):
+                return self._support(f3, parts)
+
+        b = stiffness_breakdown(self.act, output_angle, load_torque, temperature, support=support)
         return StiffnessBreakdown(*(float(getattr(b, f)) for f in b.__dataclass_fields__))
