@@ -91,15 +91,17 @@ def test_every_engine_finds_the_step_and_the_parameter_values(name):
 
 
 @pytest.mark.parametrize(
-    "name, preset",
+    "name, preset, ssv",
     [
-        ("seeker_gimbal_chamber", "yu2017_gimbal_chamber"),
-        ("space_bearing_vacuum", "ning_space_vacuum"),
+        ("seeker_gimbal_chamber", "yu2017_gimbal_chamber", "thermal.ssv"),
+        ("space_bearing_vacuum", "ning_space_vacuum", "thermal.ssv"),
+        ("space_bearing_vacuum", "ning_chamber_air", "variants/chamber_air.ssv"),
     ],
 )
-def test_thermal_systems_bind_the_network_presets(name, preset):
-    """The ThermalNetwork of each thermal system carries its preset's values exactly (the
-    library's derived parameters), and the bearing reads the network's part temperatures."""
+def test_thermal_systems_bind_the_network_presets(name, preset, ssv):
+    """The ThermalNetwork of each thermal system (and Ning's chamber-air variant) carries its
+    preset's values exactly (the library's derived parameters), and the bearing reads the
+    network's part temperatures."""
     from servofmu.physics import thermal_network as tn
 
     def values(ssv):
@@ -111,7 +113,8 @@ def test_thermal_systems_bind_the_network_presets(name, preset):
         return out
 
     params = tn.preset(preset)
-    bound = values("thermal.ssv")
+    prefix = "thermal." if ssv.startswith("variants") else ""
+    bound = {k.removeprefix(prefix): v for k, v in values(ssv).items()}
     for field, value in params.as_dict().items():
         if field == "environment":
             assert int(bound[field]) == tn.ENVIRONMENTS.index(value) + 1
