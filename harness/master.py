@@ -212,6 +212,7 @@ def run(
     progress: bool = True,
     fmu_dir=None,
     output_interval: float | None = None,
+    rates: dict[str, int] | None = None,
 ) -> RunResult:
     """Co-simulate ``system`` (a :class:`System`, or a path for :func:`load_system`).
 
@@ -230,11 +231,15 @@ def run(
     progress : show a progress bar when the run takes longer than two seconds
     output_interval : keep a row every this many seconds (a multiple of the step; default
         every step), and always the last one
+    rates : ``{"component": N}``: that component steps once every N communication steps,
+        over N·h (the last one over what is left), its inputs set at the start of that step
+        and its outputs held in between (a slow subsystem such as a thermal network beside a
+        millisecond motor loop; the others step every h)
     """
     own = not isinstance(system, System)
     sys_ = load_system(system, fmu_dir=fmu_dir) if own else system
     try:
-        settings = _Settings(algorithm, record, out_dir, progress, output_interval)
+        settings = _Settings(algorithm, record, out_dir, progress, output_interval, rates or {})
         return _run(sys_, parameters, signals or {}, start, stop, step, settings)
     finally:
         if own:
@@ -320,6 +325,7 @@ class _Settings:
     out_dir: object
     progress: bool
     output_interval: float | None
+    rates: dict
 
 
 def _run(system, parameters, signals, start, stop, step, settings: _Settings):
@@ -335,6 +341,11 @@ def _run(system, parameters, signals, start, stop, step, settings: _Settings):
         raise HarnessError(f"stop = {stop!r} s must be after start = {start!r} s")
     if settings.output_interval is not None and not settings.output_interval > 0:
         raise HarnessError(f"output_interval = {settings.output_interval!r} s must be > 0")
+    for name, n in settings.rates.items():
+        if name not in system.components:
+            raise HarnessError(f"rates: {name!r} is not a component of {list(system.components)}")
+        if type(n) is not int or n < 1:
+            raise HarnessError(f"rates[{name!r}] = {n!r} must be a whole number of steps ≥ 1")
     overrides = _overrides(system, parameters)
     connected = {c.end for c in system.connections}
     for target, sig in signals.items():
@@ -551,26 +562,29 @@ def _simulate(system, units, order, overrides, signals, start, h, n_steps, setti
         total=n_steps, delay=2.0, disable=not progress, unit="step", desc=system.name, leave=False
     )
     jacobi = algorithm == "jacobi"
+    rates = [(name, settings.rates.get(name, 1)) for name in order]
     try:
         for k in range(n_steps):
             t = start + k * h
+            # every component due at this step, with its step size (N·h for a slow one)
+            due = [(n, min(r, n_steps - k) * h) for n, r in rates if k % r == 0]
             if jacobi:
-                for name in order:
+                for name, _ in due:
                     if (status := write_inputs(name, t)) > 1:
                         fail(name, "fmi2SetReal", status, t)
-                for name in order:
+                for name, span in due:
                     u = units[name]
-                    if (status := u.do_step(u.c, t, h, 1)) > 1:
+                    if (status := u.do_step(u.c, t, span, 1)) > 1:
                         fail(name, "fmi2DoStep", status, t)
-                for name in order:
+                for name, _ in due:
                     if (status := read(name)) > 1:
                         fail(name, "fmi2GetReal", status, t)
             else:
-                for name in order:
+                for name, span in due:
                     u = units[name]
                     if (status := write_inputs(name, t)) > 1:
                         fail(name, "fmi2SetReal", status, t)
-                    if (status := u.do_step(u.c, t, h, 1)) > 1:
+                    if (status := u.do_step(u.c, t, span, 1)) > 1:
                         fail(name, "fmi2DoStep", status, t)
                     if (status := read(name)) > 1:
                         fail(name, "fmi2GetReal", status, t)
