@@ -232,9 +232,10 @@ def run(
     output_interval : keep a row every this many seconds (a multiple of the step; default
         every step), and always the last one
     rates : ``{"component": N}``: that component steps once every N communication steps,
-        over N·h (the last one over what is left), its inputs set at the start of that step
-        and its outputs held in between (a slow subsystem such as a thermal network beside a
-        millisecond motor loop; the others step every h)
+        over N·h (the last one over what is left), its inputs set at the start of that step;
+        its outputs reach the others when that step ends and hold until the next one ends
+        (they lag by up to N·h): a slow subsystem such as a thermal network beside a
+        millisecond motor loop; the others step every h
     """
     own = not isinstance(system, System)
     sys_ = load_system(system, fmu_dir=fmu_dir) if own else system
@@ -566,26 +567,31 @@ def _simulate(system, units, order, overrides, signals, start, h, n_steps, setti
     try:
         for k in range(n_steps):
             t = start + k * h
-            # every component due at this step, with its step size (N·h for a slow one)
-            due = [(n, min(r, n_steps - k) * h) for n, r in rates if k % r == 0]
+            # the components due at this step: (name, step size, read now): a slow one steps
+            # over N·h and its outputs reach the others when that step ends (read below)
+            due = [(n, min(r, n_steps - k) * h, r == 1) for n, r in rates if k % r == 0]
             if jacobi:
-                for name, _ in due:
+                for name, _, _ in due:
                     if (status := write_inputs(name, t)) > 1:
                         fail(name, "fmi2SetReal", status, t)
-                for name, span in due:
+                for name, span, _ in due:
                     u = units[name]
                     if (status := u.do_step(u.c, t, span, 1)) > 1:
                         fail(name, "fmi2DoStep", status, t)
-                for name, _ in due:
-                    if (status := read(name)) > 1:
+                for name, _, now in due:
+                    if now and (status := read(name)) > 1:
                         fail(name, "fmi2GetReal", status, t)
             else:
-                for name, span in due:
+                for name, span, now in due:
                     u = units[name]
                     if (status := write_inputs(name, t)) > 1:
                         fail(name, "fmi2SetReal", status, t)
                     if (status := u.do_step(u.c, t, span, 1)) > 1:
                         fail(name, "fmi2DoStep", status, t)
+                    if now and (status := read(name)) > 1:
+                        fail(name, "fmi2GetReal", status, t)
+            for name, r in rates:  # slow components whose step ends at t + h
+                if r > 1 and ((k + 1) % r == 0 or k + 1 == n_steps):
                     if (status := read(name)) > 1:
                         fail(name, "fmi2GetReal", status, t)
             if (k + 1) % every == 0 or k + 1 == n_steps:

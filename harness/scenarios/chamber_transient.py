@@ -109,7 +109,15 @@ def ning_profiles(coarse: bool) -> list[Profile]:
     out = [Profile("ning_vacuum", NING, f"vacuum {label}", chamber, times[-1], period=2 * half)]
     if not coarse:
         out.append(
-            Profile("ning_air", NING, f"air {label}", chamber, times[-1], 2 * half, "chamber_air")
+            Profile(
+                "ning_air",
+                NING,
+                f"air {label}",
+                chamber,
+                times[-1],
+                period=2 * half,
+                variant="chamber_air",
+            )
         )
     return out
 
@@ -232,7 +240,7 @@ def yu_row(profile: Profile, tr: Trace) -> dict:
     at_30 = np.searchsorted(tr.t, profile.end + YU_HOLD * 60.0)
     after_30 = 100.0 * (tr.torque[at_30] / final_torque - 1.0) if at_30 < len(tr.t) else ""
     return {
-        "system": "Yu gimbal, air",
+        "system": "Yu gimbal in air",
         "profile": profile.label,
         **_window_figures(tr, sel),
         "hold 2% torque [min]": _minutes(hold_time(tr.t, tr.torque, final_torque, profile.end)),
@@ -249,8 +257,8 @@ def ning_rows(profile: Profile, tr: Trace) -> list[dict]:
         sel = (tr.t >= lo) & ((tr.t < hi) if k == 0 else (tr.t <= hi))
         rows.append(
             {
-                "system": "Ning bearing, " + profile.label.split()[0],
-                "profile": f"cycle {k + 1}, {profile.label.split(maxsplit=1)[1]}",
+                "system": "Ning bearing in " + profile.label.split()[0],
+                "profile": f"cycle {k + 1} at {profile.label.split(maxsplit=1)[1]}",
                 **_window_figures(tr, sel),
                 "hold 2% torque [min]": "",
                 "hold 2% preload [min]": "",
