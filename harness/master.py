@@ -187,6 +187,19 @@ class _Unit:
             self.instantiated = False
 
 
+def _readers(system: System, order: list[str], sources: list[str]) -> list[str]:
+    """The algebraic (direct-feedthrough) components that read ``sources``' outputs, directly
+    or through other such components, in stepping order."""
+    reached, out = set(sources), []
+    for name in order:
+        comp = system.components[name]
+        if comp.feedthrough and name not in reached:
+            if any(c.end[0] == name and c.start[0] in reached for c in system.connections):
+                reached.add(name)
+                out.append(name)
+    return out
+
+
 def _set_value(slave, var, value):
     if var.type == "Real":
         slave.setReal([var.value_reference], [float(value)])
@@ -234,8 +247,10 @@ def run(
     rates : ``{"component": N}``: that component steps once every N communication steps,
         over N·h (the last one over what is left), its inputs set at the start of that step;
         its outputs reach the others when that step ends and hold until the next one ends
-        (they lag by up to N·h): a slow subsystem such as a thermal network beside a
-        millisecond motor loop; the others step every h
+        (they lag by up to N·h), and the algebraic components that read them are updated
+        then (inputs set, outputs read, no step), so that a row's values belong together: a
+        slow subsystem such as a thermal network beside a millisecond motor loop; the
+        others step every h
     """
     own = not isinstance(system, System)
     sys_ = load_system(system, fmu_dir=fmu_dir) if own else system
@@ -509,6 +524,15 @@ def _simulate(system, units, order, overrides, signals, start, h, n_steps, setti
             return u.set_real(u.c, u.in_vr, u.n_in, val)
         return 0
 
+    def refresh(name):
+        # an algebraic component's outputs from its connected inputs now, without a step
+        u = units[name]
+        for slot, src, factor, offset in plan[name][0]:
+            u.in_val[slot] = factor * latest[src] + offset
+        if u.n_in and (status := u.set_real(u.c, u.in_vr, u.n_in, u.in_val)) > 1:
+            return status
+        return read(name)
+
     def store(t):
         stored[0] += 1
         row = rows[stored[0]]
@@ -590,10 +614,14 @@ def _simulate(system, units, order, overrides, signals, start, h, n_steps, setti
                         fail(name, "fmi2DoStep", status, t)
                     if now and (status := read(name)) > 1:
                         fail(name, "fmi2GetReal", status, t)
-            for name, r in rates:  # slow components whose step ends at t + h
-                if r > 1 and ((k + 1) % r == 0 or k + 1 == n_steps):
+            ended = [n for n, r in rates if r > 1 and ((k + 1) % r == 0 or k + 1 == n_steps)]
+            if ended:  # slow components whose step ends at t + h: publish, and update the
+                for name in ended:  # algebraic components that read them
                     if (status := read(name)) > 1:
                         fail(name, "fmi2GetReal", status, t)
+                for name in _readers(system, order, ended):
+                    if (status := refresh(name)) > 1:
+                        fail(name, "fmi2SetReal/fmi2GetReal", status, t + h)
             if (k + 1) % every == 0 or k + 1 == n_steps:
                 store(start + (k + 1) * h)
             bar.update()

@@ -492,7 +492,7 @@ def test_a_slow_component_steps_at_its_rate_and_holds_its_outputs(out, algorithm
     system = load_system(out / "seeker_gimbal_chamber.ssp")
     try:
         h = system.step_size
-        record = ["thermal.shaft_temperature", "thermal.housing_temperature", "motor.speed"]
+        record = ["thermal.shaft_temperature", "bearing.preload", "motor.speed"]
         res = run(
             system,
             stop=60 * h,
@@ -515,6 +515,9 @@ def test_a_slow_component_steps_at_its_rate_and_holds_its_outputs(out, algorithm
     assert shaft[25] != shaft[24] and shaft[50] != shaft[49]
     assert np.all(shaft[50:60] == shaft[50]) and shaft[60] != shaft[59]  # the last, 10 h
     assert np.ptp(res["motor.speed"][1:25]) > 0  # the loop steps every h meanwhile
+    # the bearing (algebraic) reads the new part temperatures in the row they appear
+    preload = res["bearing.preload"]
+    assert np.all(preload[25:50] == preload[25]) and preload[25] != preload[24]
     # one 0.25 s step of the network alone: soaked, the chamber and the bearing's power loss
     # at the start (the bearing at rest: its loss is 0) held over the step
     alone = Fmu(next(out.glob("ThermalNetwork.fmu")), "alone").init(

@@ -8,7 +8,8 @@ library at a uniform temperature equal to the chamber's.
   frame − shaft difference, how far the preload and the torque run above and below the
   quasi-static values, the time each flag is set (unloaded, locked, overloaded), and how long
   the chamber must hold its final temperature before torque and preload stay within 2 % of
-  their quasi-static values — Yu held every temperature 30 min before measuring.
+  their quasi-static values — Yu held every temperature 30 min before measuring; his own
+  20 K step into −40 °C is run too.
 - Ning's space bearing (``space_bearing_vacuum``: 10 rpm, 71807C, MoS2): two triangle cycles
   −60 → +80 → −60 °C at 1 K/min (10 K/min coarse), in thermal vacuum (plate and shroud follow
   the cycle) and, with the variant ``chamber_air``, on his rig in the air of a high-low
@@ -44,6 +45,7 @@ from .common import ScenarioResult, system_path
 
 YU, NING = "seeker_gimbal_chamber", "space_bearing_vacuum"
 YU_RANGE_C = (-40.0, 60.0)  # °C, Yu's chamber range
+YU_STEP_C = (-20.0, -40.0)  # °C, the last of Yu's 20 K steps (Yu §3: −40…+60 °C in 20 K)
 NING_RANGE_C = (-60.0, 80.0)  # °C, Ning's alternating temperature
 RATES = (("step", None), ("5 K/min", 5.0 / 60.0), ("1 K/min", 1.0 / 60.0))  # K/s
 SOAK = 60.0  # s at the start temperature before the chamber moves (the speed loop settles)
@@ -95,6 +97,12 @@ def yu_profiles(coarse: bool) -> list[Profile]:
             chamber = PiecewiseLinear(times, (a + ZERO_CELSIUS, b + ZERO_CELSIUS))
             key = f"yu_{direction}_{name.replace(' ', '').replace('/', 'per')}"
             out.append(Profile(key, YU, f"{direction} {name}", chamber, end + hold, end=end))
+    if not coarse:  # Yu's own procedure: 20 K steps, the coldest last (then 30 min of hold)
+        a, b = (t + ZERO_CELSIUS for t in YU_STEP_C)
+        chamber = PiecewiseLinear((SOAK, SOAK + 1.0), (a, b))
+        label = f"cooling step {YU_STEP_C[0]:g} → {YU_STEP_C[1]:g} °C"
+        hold = 60.0 * HOLDS["cooling"]
+        out.append(Profile("yu_cooling_20K", YU, label, chamber, SOAK + hold, end=SOAK))
     return out
 
 
