@@ -206,6 +206,19 @@ class _Unit:
             self.instantiated = False
 
 
+def _readers(system: System, order: list[str], sources: list[str]) -> list[str]:
+    """The algebraic (direct-feedthrough) components that read ``sources``' outputs, directly
+    or through other such components, in stepping order."""
+    reached, out = set(sources), []
+    for name in order:
+        comp = system.components[name]
+        if comp.feedthrough and name not in reached:
+            if any(c.end[0] == name and c.start[0] in reached for c in system.connections):
+                reached.add(name)
+                out.append(name)
+    return out
+
+
 def _set_value(slave, var, value):
     if var.type == "Real":
         slave.setReal([var.value_reference], [float(value)])
@@ -231,6 +244,7 @@ def run(
     progress: bool = True,
     fmu_dir=None,
     output_interval: float | None = None,
+    rates: dict[str, int] | None = None,
 ) -> RunResult:
     """Co-simulate ``system`` (a :class:`System`, or a path for :func:`load_system`).
 
@@ -249,6 +263,13 @@ def run(
     progress : show a progress bar when the run takes longer than two seconds
     output_interval : keep a row every this many seconds (a multiple of the step; default
         every step), and always the last one
+    rates : ``{"component": N}``: that component steps once every N communication steps,
+        over N·h (the last one over what is left), its inputs set at the start of that step;
+        its outputs reach the others when that step ends and hold until the next one ends
+        (they lag by up to N·h), and the algebraic components that read them are updated
+        then (inputs set, outputs read, no step), so that a row's values belong together: a
+        slow subsystem such as a thermal network beside a millisecond motor loop; the
+        others step every h
 
     Raises
     ------
@@ -270,8 +291,11 @@ def run(
             algorithm=algorithm,
             record=record,
             output_interval=output_interval,
+            rates=rates,
         )
-        settings = _Settings(algorithm, plan.record, out_dir, progress, output_interval)
+        settings = _Settings(
+            algorithm, plan.record, out_dir, progress, output_interval, rates or {}
+        )
         with interruptible() as stop_request:
             return _run(sys_, plan, signals or {}, settings, stop_request)
     finally:
@@ -305,6 +329,7 @@ def check_run(
     algorithm: str = "gauss-seidel",
     record=None,
     output_interval=None,
+    rates=None,
 ) -> RunPlan:
     """Every argument of :func:`run` checked against ``system`` without instantiating
     anything: :class:`~.errors.ArgumentError` naming the argument, its value and what is
@@ -344,6 +369,11 @@ def check_run(
             raise ArgumentError(
                 f"output_interval = {oi!r} s must be a positive multiple of the step {h!r} s"
             )
+    for name, n in (rates or {}).items():
+        if name not in system.components:
+            raise ArgumentError(f"rates: {name!r} is not a component of {list(system.components)}")
+        if type(n) is not int or n < 1:
+            raise ArgumentError(f"rates[{name!r}] = {n!r} must be a whole number of steps ≥ 1")
     connected = {c.end: c.start for c in system.connections}
     overrides = _overrides(system, parameters, connected)
     signals = signals or {}
@@ -512,6 +542,7 @@ class _Settings:
     out_dir: object
     progress: bool
     output_interval: float | None
+    rates: dict
 
 
 def _run(system, plan: RunPlan, signals, settings: _Settings, stop_request):
@@ -667,6 +698,15 @@ def _simulate(system, units, order, plan: RunPlan, signals, settings, t0_wall, s
             return u.set_real(u.c, u.in_vr, u.n_in, val)
         return 0
 
+    def refresh(name):
+        # an algebraic component's outputs from its connected inputs now, without a step
+        u = units[name]
+        for slot, src, factor, offset in plan[name][0]:
+            u.in_val[slot] = factor * latest[src] + offset
+        if u.n_in and (status := u.set_real(u.c, u.in_vr, u.n_in, u.in_val)) > 1:
+            return status
+        return read(name)
+
     def store(t):
         stored[0] += 1
         row = rows[stored[0]]
@@ -717,31 +757,43 @@ def _simulate(system, units, order, plan: RunPlan, signals, settings, t0_wall, s
     # --- stepping -------------------------------------------------------------------------
     bar = progress_bar(n_steps, desc=system.name, unit="step", enabled=progress)
     jacobi = algorithm == "jacobi"
+    rates = [(name, settings.rates.get(name, 1)) for name in order]
     try:
         for k in range(n_steps):
             t = start + k * h
             if stop_request is not None and stop_request.requested:  # Ctrl-C: stop here
                 interrupted(t)
+            # the components due at this step: (name, step size, read now): a slow one steps
+            # over N·h and its outputs reach the others when that step ends (read below)
+            due = [(n, min(r, n_steps - k) * h, r == 1) for n, r in rates if k % r == 0]
             if jacobi:
-                for name in order:
+                for name, _, _ in due:
                     if (status := write_inputs(name, t)) > 1:
                         fail(name, "fmi2SetReal", status, t)
-                for name in order:
+                for name, span, _ in due:
                     u = units[name]
-                    if (status := u.do_step(u.c, t, h, 1)) > 1:
+                    if (status := u.do_step(u.c, t, span, 1)) > 1:
                         fail(name, "fmi2DoStep", status, t)
-                for name in order:
-                    if (status := read(name)) > 1:
+                for name, _, now in due:
+                    if now and (status := read(name)) > 1:
                         fail(name, "fmi2GetReal", status, t)
             else:
-                for name in order:
+                for name, span, now in due:
                     u = units[name]
                     if (status := write_inputs(name, t)) > 1:
                         fail(name, "fmi2SetReal", status, t)
-                    if (status := u.do_step(u.c, t, h, 1)) > 1:
+                    if (status := u.do_step(u.c, t, span, 1)) > 1:
                         fail(name, "fmi2DoStep", status, t)
+                    if now and (status := read(name)) > 1:
+                        fail(name, "fmi2GetReal", status, t)
+            ended = [n for n, r in rates if r > 1 and ((k + 1) % r == 0 or k + 1 == n_steps)]
+            if ended:  # slow components whose step ends at t + h: publish, and update the
+                for name in ended:  # algebraic components that read them
                     if (status := read(name)) > 1:
                         fail(name, "fmi2GetReal", status, t)
+                for name in _readers(system, order, ended):
+                    if (status := refresh(name)) > 1:
+                        fail(name, "fmi2SetReal/fmi2GetReal", status, t + h)
             if (k + 1) % every == 0 or k + 1 == n_steps:
                 store(start + (k + 1) * h)
             bar.update()

@@ -26,6 +26,10 @@ CASES = {
     "seeker_gimbal_position": ["motor.angle", "motor.current", "bearing.breakaway_torque"],
     "ema_actuator": ["motor.angle", "motor.current", "actuator.deflection"],
     "space_bearing": ["motor.speed", "motor.current", "bearing.preload"],
+    # the thermal systems (1 s step): the preload follows the part temperatures, one step
+    # later under Jacobi (the bearing reads the network's outputs at the step's start)
+    "seeker_gimbal_chamber": ["bearing.preload", "thermal.shaft_temperature", "motor.current"],
+    "space_bearing_vacuum": ["bearing.preload", "thermal.housing_temperature", "motor.current"],
 }
 STEPS = 200  # communication steps compared (the transient after the start)
 

@@ -494,3 +494,51 @@ def test_cli_internal_error_is_one_line_with_the_traceback_in_a_log(monkeypatch,
     assert "Traceback" in log.read_text() and "broken" in log.read_text()
     with pytest.raises(RuntimeError):
         cli.main(["--debug", "host-env"])
+
+
+@pytest.mark.parametrize("algorithm", ["gauss-seidel", "jacobi"])
+def test_a_slow_component_steps_at_its_rate_and_holds_its_outputs(out, algorithm):
+    """rates={"thermal": 25}: the network steps once every 25 communication steps over 25·h
+    (exact for held inputs, so its value at 0.25 s is one 0.25 s step of the FMU alone from
+    the same start and inputs), its outputs appear when that step ends and hold until the
+    next one ends; the loop steps every h."""
+    from fmu_helpers import Fmu
+
+    system = load_system(out / "seeker_gimbal_chamber.ssp")
+    try:
+        h = system.step_size
+        record = ["thermal.shaft_temperature", "bearing.preload", "motor.speed"]
+        res = run(
+            system,
+            stop=60 * h,
+            record=record,
+            algorithm=algorithm,
+            rates={"thermal": 25},
+            progress=False,
+        )
+        thermal = system.components["thermal"].parameters
+        with pytest.raises(HarnessError, match="'nothing' is not a component"):
+            run(system, stop=h, rates={"nothing": 2}, progress=False)
+        with pytest.raises(HarnessError, match=r"rates\['thermal'\] = 0"):
+            run(system, stop=h, rates={"thermal": 0}, progress=False)
+    finally:
+        system.close()
+    shaft = res["thermal.shaft_temperature"]
+    # rows 0…24 (t < 0.25 s) hold the start, rows 25…49 the value at 0.25 s, and so on: the
+    # others see the network's outputs once its step has ended, never ahead of time
+    assert np.all(shaft[:25] == shaft[0]) and np.all(shaft[25:50] == shaft[25])
+    assert shaft[25] != shaft[24] and shaft[50] != shaft[49]
+    assert np.all(shaft[50:60] == shaft[50]) and shaft[60] != shaft[59]  # the last, 10 h
+    assert np.ptp(res["motor.speed"][1:25]) > 0  # the loop steps every h meanwhile
+    # the bearing (algebraic) reads the new part temperatures in the row they appear
+    preload = res["bearing.preload"]
+    assert np.all(preload[25:50] == preload[25]) and preload[25] != preload[24]
+    # one 0.25 s step of the network alone: soaked, the chamber and the bearing's power loss
+    # at the start (the bearing at rest: its loss is 0) held over the step
+    alone = Fmu(next(out.glob("ThermalNetwork.fmu")), "alone").init(
+        **{name: value for name, (_, value) in thermal.items()}, power_loss=0.0
+    )
+    alone.slave.doStep(0.0, 25 * h)
+    assert res["time"][25] == pytest.approx(25 * h)
+    assert alone.get("shaft_temperature") == pytest.approx(float(shaft[25]), abs=1e-12)
+    alone.close()

@@ -313,6 +313,8 @@ def test_each_system_binds_its_preset_in_full():
         ("seeker_gimbal/bearing.ssv", "yu2017_gimbal", "krytox_143aa"),
         ("seeker_gimbal_position/bearing.ssv", "yu2017_gimbal", "krytox_143aa"),
         ("space_bearing/bearing.ssv", "ning_space_shaft", "mos2_film"),
+        ("seeker_gimbal_chamber/bearing.ssv", "yu2017_gimbal", "krytox_143aa"),
+        ("space_bearing_vacuum/bearing.ssv", "ning_space_shaft", "mos2_film"),
         # the mounting variants the main job compares (system-level names)
         ("seeker_gimbal/variants/rigid.ssv", "yu2017_gimbal_rigid", "krytox_143aa"),
         ("seeker_gimbal/variants/printed.ssv", "yu2017_gimbal_printed", "krytox_143aa"),

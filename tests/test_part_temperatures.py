@@ -106,3 +106,63 @@ def test_a_colder_frame_than_shaft_raises_the_preload(fmus):
 
 def _all(t):
     return {f"{p}_temperature": t for p in ("housing", "shaft", "outer_ring", "inner_ring")}
+
+
+# ---------------------------------------------------------------------------- ActuatorStiffness
+ACTUATOR_OUTPUTS = (
+    "stiffness",
+    "support_bearing_stiffness",
+    "deflection",
+    "gear_stiffness",
+    "linkage_stiffness",
+    "screw_force",
+)
+
+
+def _actuator(fmus, name, **values):
+    fmu = Fmu(fmus["ActuatorStiffness"], name).init(angle=0.17, load_torque=100.0, **values)
+    fmu.slave.doStep(0.0, 1e-2)
+    return fmu
+
+
+@pytest.mark.parametrize("t", [233.15, 333.15])
+def test_actuator_equal_part_temperatures_give_the_uniform_outputs_exactly(fmus, t):
+    uniform = _actuator(fmus, "u", temperature=t)
+    parts = _actuator(fmus, "p", temperature_mode="parts", temperature=400.0, **_all(t))
+    assert parts.get(*ACTUATOR_OUTPUTS) == uniform.get(*ACTUATOR_OUTPUTS)
+    uniform.close()
+    parts.close()
+
+
+def test_actuator_support_pair_follows_its_part_temperatures(fmus):
+    # a cold housing around warm rings and screw (a chamber cooling the actuator): the support
+    # pair's thermal preload, hence its stiffness, is the library's at those part temperatures
+    from servofmu.physics.actuator import Actuator, ActuatorModel
+
+    temps = {**_all(293.15), "housing_temperature": 253.15, "outer_ring_temperature": 263.15}
+    fmu = _actuator(fmus, "p", temperature_mode="parts", **temps)
+    even = _actuator(fmus, "e", temperature=293.15)
+    model = ActuatorModel(Actuator.from_catalog("liu2014_ema"))
+    parts = tuple(
+        temps[f"{p}_temperature"] for p in ("housing", "shaft", "outer_ring", "inner_ring")
+    )
+    lib = model.evaluate(0.17, 100.0, parts)
+    assert fmu.get("support_bearing_stiffness") == pytest.approx(lib.support_bearing, rel=1e-9)
+    assert fmu.get("stiffness") == pytest.approx(lib.total, rel=1e-9)
+    # and it is not the uniform value: the part temperatures reach the support pair
+    assert abs(lib.support_bearing / even.get("support_bearing_stiffness") - 1.0) > 1e-3
+    shaft_mode = _actuator(
+        fmus, "hs", temperature_mode="housing_shaft", **{**temps, "outer_ring_temperature": 400.0}
+    )
+    hs = model.evaluate(0.17, 100.0, (253.15, 293.15, 253.15, 293.15))
+    assert shaft_mode.get("stiffness") == pytest.approx(hs.total, rel=1e-9)
+    for f in (fmu, even, shaft_mode):
+        f.close()
+
+
+def test_actuator_library_names_a_bad_part_temperature():
+    from servofmu.physics.actuator import Actuator, ActuatorModel
+
+    model = ActuatorModel(Actuator.from_catalog("liu2014_ema"))
+    with pytest.raises(ValueError, match="shaft_temperature = nan"):
+        model.evaluate(0.17, 100.0, (293.15, float("nan"), 293.15, 293.15))

@@ -88,3 +88,36 @@ def test_every_engine_finds_the_step_and_the_parameter_values(name):
     for ssv in sorted(folder.rglob("*.ssv")):
         assert etree.parse(str(ssv)).getroot().get("name") == PARAMETER_SET, ssv
     assert inspect.signature(write_ssv).parameters["name"].default == PARAMETER_SET
+
+
+@pytest.mark.parametrize(
+    "name, preset, ssv",
+    [
+        ("seeker_gimbal_chamber", "yu2017_gimbal_chamber", "thermal.ssv"),
+        ("space_bearing_vacuum", "ning_space_vacuum", "thermal.ssv"),
+        ("space_bearing_vacuum", "ning_chamber_air", "variants/chamber_air.ssv"),
+    ],
+)
+def test_thermal_systems_bind_the_network_presets(name, preset, ssv):
+    """The ThermalNetwork of each thermal system (and Ning's chamber-air variant) carries its
+    preset's values exactly (the library's derived parameters), and the bearing reads the
+    network's part temperatures."""
+    from servofmu.physics import thermal_network as tn
+
+    def values(ssv):
+        root = etree.parse(str(SSP_DIR / name / ssv)).getroot()
+        out = {}
+        for p in root.iterfind("ssv:Parameters/ssv:Parameter", NS):
+            (v,) = list(p)
+            out[p.get("name")] = v.get("value")
+        return out
+
+    params = tn.preset(preset)
+    prefix = "thermal." if ssv.startswith("variants") else ""
+    bound = {k.removeprefix(prefix): v for k, v in values(ssv).items()}
+    for field, value in params.as_dict().items():
+        if field == "environment":
+            assert int(bound[field]) == tn.ENVIRONMENTS.index(value) + 1
+        else:
+            assert float(bound[field]) == value, field
+    assert values("bearing.ssv")["temperature_mode"] == "3"  # parts

@@ -264,6 +264,12 @@ def test_presets_carry_provenance_and_the_environment():
     assert tn.network(yu).ambient[0] == pytest.approx(
         yu.convection_coefficient * yu.housing_convection_area
     )
+    # Ning's own test rig in chamber air: the same parts, convection and a gas gap added
+    air = tn.preset("ning_chamber_air")
+    assert not air.vacuum and air.convection_coefficient > 0 and air.gas_gap_conductance > 0
+    assert air.housing_capacity == ning.housing_capacity and air.mount_conductance > 0
+    assert air.source("air_speed") == "" and "assumed" in air.source("convection_coefficient")
+    assert tn.time_constants(tn.network(air))[0] < tn.time_constants(net)[0]
 
 
 def test_uniform_soak_is_a_steady_state_and_the_shaft_lags_the_frame():

@@ -6,14 +6,23 @@
 - ``stiffness_test``: Liu's stiffness test on the EMA at +10° (100/200/300 N·m);
 - ``low_speed_tracking``: sine position tracking at 20 °C and −40 °C, friction dead zone,
   step-size dependence;
-- ``thermal_cycle``: Ning's space bearing through −60…+80 °C at constant speed.
+- ``thermal_cycle``: Ning's space bearing through −60…+80 °C at constant speed;
+- ``chamber_transient``: the part temperatures of a ThermalNetwork in the loop: Yu's gimbal
+  through chamber steps and ramps −40 ↔ +60 °C, Ning's bearing through thermal-vacuum (and
+  chamber-air) cycles, against the quasi-static curve.
 """
 
 from __future__ import annotations
 
 import importlib
 
-SCENARIOS = ("friction_vs_temperature", "stiffness_test", "low_speed_tracking", "thermal_cycle")
+SCENARIOS = (
+    "friction_vs_temperature",
+    "stiffness_test",
+    "low_speed_tracking",
+    "thermal_cycle",
+    "chamber_transient",
+)
 
 
 def run(name: str, out_dir, fmu_dir=None, coarse: bool = False):

@@ -12,12 +12,22 @@ The support-bearing pair is given by numbers, like BearingFriction's pair: the p
 ``support_<name>`` for every ``name`` of the pair's state (bearing geometry, materials, seats,
 loop, preload; :data:`servofmu.physics.bearing_parameters.STATE_PARAMETERS`), defaults the
 support mounting of Liu's actuator record (a preset, ``data/mountings.toml``);
-``support_bearings`` false leaves the pair out (a rigid support)."""
+``support_bearings`` false leaves the pair out (a rigid support). The support bearings carry
+a thermal preload: with ``temperature_mode`` ``parts`` (or ``housing_shaft``) their housing,
+shaft and rings take their own temperatures (``housing_temperature`` …
+``inner_ring_temperature``, e.g. from a ThermalNetwork), as in BearingFriction
+(:mod:`servofmu.fmus.part_temperatures`); the default ``uniform`` reads ``temperature``."""
 
 from __future__ import annotations
 
 import dataclasses
 
+from servofmu.fmus.part_temperatures import (
+    TEMPERATURE_INPUTS,
+    part_inputs,
+    temperature_mode_parameter,
+    temperatures,
+)
 from servofmu.fmus.slave import ServoSlave, Var, output, real_input, real_parameter, spec_parameter
 from servofmu.physics.actuator import Actuator, ActuatorModel
 from servofmu.physics.actuator import output_angle as mechanism_output_angle
@@ -31,7 +41,7 @@ from servofmu.physics.bearing_parameters import (
 
 _A = Actuator.from_catalog("liu2014_ema")
 _ANGLE = ("angle", "motor_angle")  # the position input: output shaft, or motor shaft
-_LOAD = ("temperature", "load_torque", *_ANGLE)
+_LOAD = (*TEMPERATURE_INPUTS, "load_torque", *_ANGLE)
 # with motor_side_inputs, the angle follows from motor_angle through the ratio's parameters
 _MOTOR_SIDE = ("motor_side_inputs", "gear_ratio", "screw_lead")
 # the support pair: the actuator record's mounting as the preset of its numbers (a dry film:
@@ -55,7 +65,12 @@ _LINKAGE = (
     "youngs_modulus",
     "shear_modulus",
 )
-_SUPPORT = ("seat_stiffness", "support_bearings", *(p.name for p in _SUPPORT_SPECS))
+_SUPPORT = (
+    "seat_stiffness",
+    "support_bearings",
+    *(p.name for p in _SUPPORT_SPECS),
+    "temperature_mode",
+)
 _GEAR = ("screw_lead", "gear_torsional_stiffness")
 _RATIO = ("gear_ratio", "screw_lead")
 _ELEMENTS = (*_GEAR, "screw_axial_stiffness", "housing_axial_stiffness", *_LINKAGE, *_SUPPORT)
@@ -95,7 +110,7 @@ class ActuatorStiffness(ServoSlave):
     VARIABLES = (
         real_input(
             "temperature",
-            "Temperature of the actuator (support-bearing preload)",
+            "Temperature of the actuator (support-bearing preload; temperature_mode uniform)",
             293.15,
             "K",
             "degC",
@@ -311,6 +326,9 @@ class ActuatorStiffness(ServoSlave):
             "deg/s",
             ("speed", "motor_speed", *_ANGLE),
         ),
+        # the support bearings' part temperatures (issue 14), e.g. from a ThermalNetwork
+        *part_inputs(" of the support bearings"),
+        temperature_mode_parameter(),
     )
 
     def configure(self):
@@ -340,7 +358,7 @@ class ActuatorStiffness(ServoSlave):
 
     def compute(self):
         angle = self._mechanism_angle()
-        b = self.model.evaluate(angle, self.load_torque, self.temperature)
+        b = self.model.evaluate(angle, self.load_torque, temperatures(self))
         self.copy_outputs(b)
         self.motor_load_torque = self.load_torque / b.reduction_ratio
         self.output_angle = angle

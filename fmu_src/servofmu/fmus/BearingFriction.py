@@ -18,21 +18,18 @@ discarded until it is fixed.
 
 from __future__ import annotations
 
-from servofmu.fmus.slave import Item, ServoSlave, Var, output, real_input, spec_parameter
+from servofmu.fmus.part_temperatures import (
+    TEMPERATURE_INPUTS,
+    part_inputs,
+    temperature_mode_parameter,
+    temperatures,
+)
+from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter
 from servofmu.physics.bearing import BearingModel
 from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in
 from servofmu.physics.pair_state import PointState
 
-#: How the temperature inputs are read (parameter ``temperature_mode``): every part at
-#: ``temperature``; the rings at their seats' temperatures; or each part its own input.
-TEMPERATURE_MODES = {
-    "uniform": "every part at temperature (Yu's and Ning's soaked chambers)",
-    "housing_shaft": "housing and outer ring at housing_temperature, shaft and inner ring at "
-    "shaft_temperature",
-    "parts": "housing, shaft, outer and inner ring at their own inputs (a thermal network)",
-}
-_PARTS = ("housing", "shaft", "outer_ring", "inner_ring")
-_TEMPS = ("temperature", *(f"{p}_temperature" for p in _PARTS))
+_TEMPS = TEMPERATURE_INPUTS
 _ALL = (*_TEMPS, "speed", "axial_load", "radial_load")
 _LOADS = (*_TEMPS, "axial_load", "radial_load")
 _STATE = ("fit", "loop")  # parameter groups that fix the thermal and load state
@@ -95,20 +92,7 @@ class BearingFriction(ServoSlave):
             173.15,
             473.15,
         ),
-        *(
-            real_input(
-                f"{part}_temperature",
-                f"Temperature of the {part.replace('_', ' ')} (temperature_mode parts; "
-                + ("housing_shaft too" if part in ("housing", "shaft") else "else unused")
-                + ")",
-                293.15,
-                "K",
-                "degC",
-                173.15,
-                473.15,
-            )
-            for part in _PARTS
-        ),
+        *part_inputs(),
         real_input(
             "speed",
             "Speed of the shaft relative to the housing (signed)",
@@ -242,16 +226,7 @@ class BearingFriction(ServoSlave):
             "locked", "No operating clearance left (balls pinched radially) or no load equilibrium"
         ),
         _flag("unloaded", "Preload lost: a bearing of the pair carries no axial load (axial play)"),
-        Var(
-            name="temperature_mode",
-            type="Enumeration",
-            causality="parameter",
-            description="Which temperature inputs the parts follow",
-            start=1,
-            items=tuple(Item(k, v) for k, v in TEMPERATURE_MODES.items()),
-            declared_type="TemperatureMode",
-            source="assumed: uniform, as Yu 2017 and Ning measured after soaking",
-        ),
+        temperature_mode_parameter(),
         *(spec_parameter(p) for p in PARAMETERS),
     )
     _SPEED_OUTPUTS = _outputs_of(_SPEED_FIELDS, VARIABLES)  # those that move with speed alone
@@ -279,24 +254,8 @@ class BearingFriction(ServoSlave):
         if self._configured:
             self.model.restore(state.get("continuation"))
 
-    def _temperatures(self):
-        """The parts' temperatures (housing, shaft, outer ring, inner ring) [K] per mode, or the
-        uniform temperature."""
-        mode = self.temperature_mode
-        if mode == 1:
-            return self.temperature
-        if mode == 2:
-            h, s = self.housing_temperature, self.shaft_temperature
-            return (h, s, h, s)
-        return (
-            self.housing_temperature,
-            self.shaft_temperature,
-            self.outer_ring_temperature,
-            self.inner_ring_temperature,
-        )
-
     def compute(self):
-        temps = self._temperatures()
+        temps = temperatures(self)
         point = (temps, self.axial_load, self.radial_load)
         if point != self._point:  # else only the speed changed: the speed terms alone
             self._copy_state(self, self.model.update(temps, self.axial_load, self.radial_load))

@@ -50,6 +50,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import check_finite, check_positive, check_range, check_temperature
+from .temperatures import PartTemperatures
 from .units import DEG
 
 
@@ -606,8 +607,9 @@ class ActuatorModel:
         self._y1 = float(act.slide_offset)
         self._screw_ratio = 2.0 * math.pi * act.crank_length / act.screw_lead  # i_s (eq 1)
 
-    def _support(self, screw_force: float, temperature: float) -> float:
-        """:func:`support_axial_stiffness` on floats, the pair by continuation [N/m]."""
+    def _support(self, screw_force: float, temperature) -> float:
+        """:func:`support_axial_stiffness` on floats, the pair by continuation [N/m] at the
+        support pair's temperature [K]: uniform, or its parts' (a 4-tuple)."""
         if self._bearings is None:
             return math.inf
         f3 = screw_force
@@ -625,16 +627,34 @@ class ActuatorModel:
         if self._bearings is not None:
             self._bearings.restore(state)
 
-    def evaluate(self, output_angle: float, load_torque: float, temperature: float):
-        """:class:`StiffnessBreakdown` with float fields at one operating point: output angle
-        δ [rad], hinge moment M [N·m], temperature T [K] (the equations of
-        :func:`stiffness_breakdown`; ValueError naming a bad argument)."""
+    def evaluate(self, output_angle: float, load_torque: float, temperature):
+        """:class:`StiffnessBreakdown` with float fields at one operating point (the equations
+        of :func:`stiffness_breakdown`; ValueError naming a bad argument): output angle δ
+        [rad], hinge moment M [N·m], and the temperature [K] of the support pair, uniform or
+        its parts' (a :class:`~.temperatures.PartTemperatures` or a (housing, shaft, outer
+        ring, inner ring) tuple: only the support pair's thermal preload depends on it).
+
+        Returns
+        -------
+        StiffnessBreakdown
+            Stiffnesses [N·m/rad], deflection [rad], ratio [-], screw force [N].
+
+        >>> model = ActuatorModel(Actuator.from_catalog("liu2014_ema"))
+        >>> even = model.evaluate(0.17, 100.0, 253.15).total
+        >>> even == model.evaluate(0.17, 100.0, (253.15,) * 4).total
+        True
+        """
+        from .bearing import _temperatures
+
         act = self.act
         delta = _finite_float("output_angle", output_angle, "rad")
         m = _finite_float("load_torque", load_torque, "N·m")
-        t = _finite_float("temperature", temperature, "K")
-        if not t > 0.0:
-            raise ValueError(f"temperature = {t!r} K is outside the valid range (0, inf) K")
+        if isinstance(temperature, tuple | PartTemperatures):
+            t = _temperatures(temperature)  # checked floats, named on error
+        else:
+            t = _finite_float("temperature", temperature, "K")
+            if not t > 0.0:
+                raise ValueError(f"temperature = {t!r} K is outside the valid range (0, inf) K")
         l1 = act.crank_length
         theta = act.neutral_crank_angle + delta
         s = (l1 * math.sin(theta) - self._y1) / act.rod_length

@@ -693,7 +693,7 @@ def network(p: ThermalParameters) -> ThermalNetwork:
     )
 
 
-PRESETS = ("yu2017_gimbal_chamber", "ning_space_vacuum")
+PRESETS = ("yu2017_gimbal_chamber", "ning_space_vacuum", "ning_chamber_air")
 
 
 def mechanism_parameters(
@@ -790,7 +790,8 @@ def parameters_for_pair(pair, *, vacuum: bool, **options) -> ThermalParameters:
 @functools.cache
 def preset(key: str) -> ThermalParameters:
     """The parameters of preset ``key`` (:data:`PRESETS`, ``data/thermal.toml``): Yu's
-    seeker gimbal in the air of a climatic chamber, Ning's space bearing in thermal vacuum.
+    seeker gimbal in the air of a climatic chamber, Ning's space bearing in thermal vacuum,
+    and Ning's bearing on his rig in the air of his high-low temperature chamber.
 
     >>> round(preset("ning_space_vacuum").housing_capacity, 1)
     145.6
