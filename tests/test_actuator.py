@@ -279,3 +279,17 @@ def test_per_step_model_refuses_angles_beyond_the_reach_like_the_vectorised_path
     with pytest.raises(ValueError) as per_step:
         A.ActuatorModel(short).evaluate(1.5, 100.0, 293.15)
     assert str(per_step.value) == str(vectorised.value)
+
+
+def test_a_support_pair_with_play_is_named_where_it_holds_nothing():
+    """Without preload (a shim of 0) the support pair has axial play: under a hinge moment its
+    balls are loaded and the actuator has a stiffness, at zero moment it has none, and the
+    per-step model says so naming the element instead of dividing by zero."""
+    from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
+
+    p = default_parameters("liu2014_screw_support", lubricant="mos2_film")
+    p.update(preload_method="shim", shim=0.0)
+    model = A.ActuatorModel(A.Actuator.from_catalog("liu2014_ema"), pair_from_parameters(p))
+    assert model.evaluate(0.17, 100.0, 293.15).total > 0.0
+    with pytest.raises(ValueError, match=r"support_bearing_stiffness = 0\.0 N/m.*axial play"):
+        model.evaluate(0.17, 0.0, 293.15)

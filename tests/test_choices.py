@@ -49,7 +49,9 @@ def test_every_choice_is_a_structural_choice_with_named_items(fmus):
     assert items["loop_model"]["yoke"] == parameter("loop_model").item("yoke") == 2
     assert _items(fmus["ServoController"]) == {"mode": {"position": 1, "speed": 2}}
     actuator = _items(fmus["ActuatorStiffness"])
-    assert set(actuator) == {f"support_{c}" for c in choices - {"lubrication"}}
+    assert set(actuator) == {f"support_{c}" for c in choices - {"lubrication"}} | {
+        "temperature_mode"
+    }
     for path in fmus.values():  # no String variable is left
         if path.suffix == ".fmu":
             xml = read_member(path, "modelDescription.xml")

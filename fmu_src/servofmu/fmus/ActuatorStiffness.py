@@ -21,6 +21,7 @@ shaft and rings take their own temperatures (``housing_temperature`` …
 from __future__ import annotations
 
 import dataclasses
+import re
 
 from servofmu.fmus.part_temperatures import (
     TEMPERATURE_INPUTS,
@@ -53,6 +54,12 @@ _SUPPORT_SPECS = prefixed_specs(
     STATE_PARAMETERS,
     _SUPPORT_BASE,
     default_sources(_A.support_mounting, lubricant="mos2_film"),
+)
+#: A support-pair parameter's name in a message of the pair's physics (names as a whole word)
+_SUPPORT_NAMES = re.compile(
+    r"\b("
+    + "|".join(sorted((p.name.removeprefix("support_") for p in _SUPPORT_SPECS), key=len)[::-1])
+    + r")\b"
 )
 # parameters by the part of the model they enter (the outputs' initial dependencies)
 _KINEMATICS = ("crank_length", "rod_length", "neutral_crank_angle", "neutral_rod_angle")
@@ -352,8 +359,9 @@ class ActuatorStiffness(ServoSlave):
                 values[p.name.removeprefix("support_")] = p.key(value) if p.choices else value
             try:
                 support = pair_from_parameters(values)
-            except ValueError as exc:
-                raise ValueError(f"support pair (parameters support_*): {exc}") from None
+            except ValueError as exc:  # the pair's names are this FMU's support_<name>
+                named = _SUPPORT_NAMES.sub(r"support_\1", str(exc))
+                raise ValueError(f"support pair: {named}") from None
         self.model = ActuatorModel(act, support)
 
     def compute(self):

@@ -616,6 +616,11 @@ class ActuatorModel:
         out = self._bearings.update(temperature, f3)
         secant = f3 >= SMALLEST_SCREW_FORCE and out.axial_displacement > 0
         bearing = f3 / out.axial_displacement if secant else out.axial_stiffness
+        if not bearing > 0.0:  # an unloaded pair with axial play holds nothing at this force
+            raise ValueError(
+                f"support_bearing_stiffness = {bearing!r} N/m: the support pair has axial play "
+                f"at screw_force = {f3!r} N (preload lost); the actuator has no stiffness there"
+            )
         return _series_floats(bearing, self.act.seat_stiffness)
 
     def state(self) -> dict | None:
