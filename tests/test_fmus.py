@@ -333,7 +333,9 @@ def test_bad_tunable_parameter_then_fixed(fmus):
         (
             "ActuatorStiffness",
             {"support_ball_diameter": 7e-3},
-            "ball_diameter = 0.007 m must be below (outer_diameter − bore)/2 = 0.006 m",
+            # the support pair's names as the actuator's own parameters
+            "support_ball_diameter = 0.007 m must be below "
+            "(support_outer_diameter − support_bore)/2 = 0.006 m",
         ),
         (
             "ServoController",
