@@ -552,18 +552,40 @@ def _run(system, plan: RunPlan, signals, settings: _Settings, stop_request):
     try:
         for comp in system.components.values():  # FMUs unpacked once per loaded system
             units[comp.name] = _Unit(comp, system.unpacked(comp.fmu))
-        return _simulate(system, units, order, plan, signals, settings, t0_wall, stop_request)
+        wiring = _wire(system, units, order, plan.record, signals)
+        cosim = _Cosimulation(system, units, order, wiring, plan, settings, t0_wall)
+        cosim.initialize()
+        return cosim.step_all(stop_request)
     finally:
         for u in units.values():
             u.close()
 
 
-def _simulate(system, units, order, plan: RunPlan, signals, settings, t0_wall, stop_request):
-    algorithm, record, out_dir = settings.algorithm, plan.record, settings.out_dir
-    overrides, start, h, n_steps = plan.overrides, plan.start, plan.step, plan.n_steps
-    progress, every = settings.progress, plan.every
-    scales = {t: system.scale(t) for t in record}
-    # --- outputs read after each step (connected or recorded), as one flat list "latest" --
+@dataclass
+class _Wiring:
+    """Where every value of a run lives: the outputs read after each step (connected or
+    recorded) as one flat list of Reals and one of Booleans, each unit's input slots (from a
+    connection, with its factor and offset, or from a signal), and what each recorded column
+    reads.
+
+    Attributes
+    ----------
+    out_index, bool_index : (component, output) → position in the flat lists
+    bools : component → its Boolean outputs read, in order
+    inputs : component → (links [(slot, source position, factor, offset)], signals [(slot,
+        callable)], position of its first Real output)
+    getters : per recorded column: ("r", position), ("b", position) or ("s", (buffer, slot))
+    """
+
+    out_index: dict
+    bool_index: dict
+    bools: dict
+    inputs: dict
+    getters: list
+
+
+def _wire(system, units, order, record, signals) -> _Wiring:
+    """The :class:`_Wiring` of a run, and each unit's ctypes buffers sized to it."""
     needed = {c.start for c in system.connections} | {tuple(r.split(".", 1)) for r in record}
     out_index: dict[tuple[str, str], int] = {}
     bool_index: dict[tuple[str, str], int] = {}
@@ -580,10 +602,7 @@ def _simulate(system, units, order, plan: RunPlan, signals, settings, t0_wall, s
             out_index[(name, v.name)] = len(out_index)
         for v in bools[name]:
             bool_index[(name, v.name)] = len(bool_index)
-    latest = [0.0] * len(out_index)
-    latest_bool = [0.0] * len(bool_index)
-    # --- inputs of each unit: (slot, source index, factor, offset) or a signal ---------
-    plan, signal_slot = {}, {}
+    inputs, signal_slot = {}, {}
     for name in order:
         comp = system.components[name]
         links, sigs, vrs = [], [], []
@@ -605,7 +624,8 @@ def _simulate(system, units, order, plan: RunPlan, signals, settings, t0_wall, s
         units[name].buffers(
             vrs, [v.value_reference for v in reals[name]], [v.value_reference for v in bools[name]]
         )
-        plan[name] = (links, sigs, out_index[(name, reals[name][0].name)] if reals[name] else 0)
+        first = out_index[(name, reals[name][0].name)] if reals[name] else 0
+        inputs[name] = (links, sigs, first)
     getters = []
     for target in record:
         comp, var = system.variable(target)
@@ -620,76 +640,95 @@ def _simulate(system, units, order, plan: RunPlan, signals, settings, t0_wall, s
             raise ArgumentError(
                 f"record {target!r}: only outputs and signal-driven inputs can be recorded"
             )
-    n_rows = n_steps // every + 1 + (1 if n_steps % every else 0)
-    rows = np.empty((n_rows, 1 + len(getters)))
-    stored = [-1]  # index of the last row written
-    dtype = [("time", float)] + [(t, float) for t in record]
+    return _Wiring(out_index, bool_index, bools, inputs, getters)
 
-    def result(k, failed=False, message=""):
+
+class _Cosimulation:
+    """One run's stepping over its :class:`_Wiring`: initialization, one step per algorithm
+    (:meth:`step_jacobi`, :meth:`step_gauss_seidel`), the slow components of ``rates``, the
+    rows kept, and the end of a failed or interrupted run with the rows so far."""
+
+    def __init__(self, system, units, order, wiring: _Wiring, plan: RunPlan, settings, t0_wall):
+        self.system, self.units, self.order, self.w = system, units, order, wiring
+        self.plan, self.settings, self.t0_wall = plan, settings, t0_wall
+        self.latest = [0.0] * len(wiring.out_index)
+        self.latest_bool = [0.0] * len(wiring.bool_index)
+        n, every = plan.n_steps, plan.every
+        self.rows = np.empty((n // every + 1 + (1 if n % every else 0), 1 + len(wiring.getters)))
+        self.stored = -1  # index of the last row written
+        self.rates = [(name, settings.rates.get(name, 1)) for name in order]
+
+    # ------------------------------------------------------------------ results and ends
+    def result(self, failed=False, message="") -> RunResult:
+        """The rows kept so far as a :class:`RunResult` (and ``results.csv``)."""
+        record = self.plan.record
+        dtype = [("time", float)] + [(t, float) for t in record]
+        k = self.stored
         data = (
-            np.rec.fromarrays(rows[: k + 1].T, dtype=dtype).view(np.ndarray)
+            np.rec.fromarrays(self.rows[: k + 1].T, dtype=dtype).view(np.ndarray)
             if k >= 0
             else np.empty(0, dtype=dtype)
         )
         res = RunResult(
-            system.name,
+            self.system.name,
             data,
             failed,
             message,
-            wall_time=_time.perf_counter() - t0_wall,
-            units=scales,
+            wall_time=_time.perf_counter() - self.t0_wall,
+            units={t: self.system.scale(t) for t in record},
         )
-        if out_dir is not None:
-            res.csv = res.to_csv(Path(out_dir) / "results.csv")
+        if self.settings.out_dir is not None:
+            res.csv = res.to_csv(Path(self.settings.out_dir) / "results.csv")
         return res
 
-    def stop(message, error=HarnessError, **kw):
+    def stop(self, message, error=HarnessError, **kw):
         """End the run: the rows so far (on disk too), the FMUs' log in failure.log."""
-        res = result(stored[0], True, message)
+        res = self.result(True, message)
         details = "\n".join(
-            [message, ""] + [f"[{n}] {line}" for n, unit in units.items() for line in unit.log]
+            [message, ""] + [f"[{n}] {line}" for n, unit in self.units.items() for line in unit.log]
         )
         where = ""
-        if out_dir is not None:
-            log_file = Path(out_dir) / "failure.log"
+        if self.settings.out_dir is not None:
+            log_file = Path(self.settings.out_dir) / "failure.log"
             log_file.write_text(details + "\n")
             where = f"; the FMUs' log in {log_file}"
         if res.csv and len(res.data):
             where += f"; results up to t = {res.data['time'][-1]:.6g} s in {res.csv}"
         raise error(message + where, result=res, details=details, **kw)
 
-    def fail(name, what, status, t):
-        u = units[name]
+    def fail(self, name, what, status, t):
+        u = self.units[name]
         label = STATUS[status] if 0 <= status < 6 else str(status)
         log = " | ".join(list(u.log)[-5:]) or "(no log message)"
-        stop(
+        self.stop(
             f"component {name!r} ({u.comp.model_identifier}) returned fmi2{label} from {what} at "
             f"t = {t:.6g} s: {log}"
         )
 
-    def interrupted(t):
-        stop(f"interrupted at t = {t:.6g} s", Interrupted, time=t)
-
-    def read(name):
-        u = units[name]
+    # ------------------------------------------------------------------ values
+    def read(self, name) -> int:
+        """The unit's outputs into the flat lists; the FMI status."""
+        u = self.units[name]
         if u.n_out:
             status = u.get_real(u.c, u.out_vr, u.n_out, u.out_val)
             if status > 1:
                 return status
-            o = plan[name][2]
-            latest[o : o + u.n_out] = u.out_val
+            o = self.w.inputs[name][2]
+            self.latest[o : o + u.n_out] = u.out_val
         if u.n_bool:
             status = u.get_boolean(u.c, u.bool_vr, u.n_bool, u.bool_val)
             if status > 1:
                 return status
-            for i, v in enumerate(bools[name]):
-                latest_bool[bool_index[(name, v.name)]] = float(u.bool_val[i])
+            index = self.w.bool_index
+            for i, v in enumerate(self.w.bools[name]):
+                self.latest_bool[index[(name, v.name)]] = float(u.bool_val[i])
         return 0
 
-    def write_inputs(name, t):
-        u = units[name]
-        links, sigs, _ = plan[name]
-        val = u.in_val
+    def write_inputs(self, name, t) -> int:
+        """The unit's inputs from the connections and the signals at ``t``; the FMI status."""
+        u = self.units[name]
+        links, sigs, _ = self.w.inputs[name]
+        val, latest = u.in_val, self.latest
         for slot, src, factor, offset in links:
             val[slot] = factor * latest[src] + offset
         for slot, sig in sigs:
@@ -698,105 +737,134 @@ def _simulate(system, units, order, plan: RunPlan, signals, settings, t0_wall, s
             return u.set_real(u.c, u.in_vr, u.n_in, val)
         return 0
 
-    def refresh(name):
-        # an algebraic component's outputs from its connected inputs now, without a step
-        u = units[name]
-        for slot, src, factor, offset in plan[name][0]:
-            u.in_val[slot] = factor * latest[src] + offset
+    def refresh(self, name) -> int:
+        """An algebraic unit's outputs from its connected inputs now, without a step."""
+        u = self.units[name]
+        for slot, src, factor, offset in self.w.inputs[name][0]:
+            u.in_val[slot] = factor * self.latest[src] + offset
         if u.n_in and (status := u.set_real(u.c, u.in_vr, u.n_in, u.in_val)) > 1:
             return status
-        return read(name)
+        return self.read(name)
 
-    def store(t):
-        stored[0] += 1
-        row = rows[stored[0]]
+    def store(self, t):
+        self.stored += 1
+        row = self.rows[self.stored]
         row[0] = t
-        for j, (kind, ref) in enumerate(getters, start=1):
+        for j, (kind, ref) in enumerate(self.w.getters, start=1):
             if kind == "r":
-                row[j] = latest[ref]
+                row[j] = self.latest[ref]
             elif kind == "b":
-                row[j] = latest_bool[ref]
+                row[j] = self.latest_bool[ref]
             else:
                 row[j] = ref[0][ref[1]]
 
-    # --- initialization -------------------------------------------------------------------
-    from fmpy.fmi1 import FMICallException
+    def exchange(self, t):
+        """Inputs set and outputs read for every unit at ``t``, in order; fail on an error."""
+        for name in self.order:
+            if (status := self.write_inputs(name, t)) > 1:
+                self.fail(name, "fmi2SetReal", status, t)
+            if (status := self.read(name)) > 1:
+                self.fail(name, "fmi2GetReal", status, t)
 
-    for name in order:
-        u = units[name]
+    # ------------------------------------------------------------------ initialization
+    def initialize(self):
+        """Parameters and overrides in Initialization Mode, connections propagated (chains
+        of direct feedthrough settled), then the first row."""
+        from fmpy.fmi1 import FMICallException
+
+        start = self.plan.start
+        for name in self.order:
+            u = self.units[name]
+            try:
+                u.slave.setupExperiment(startTime=start)
+                u.slave.enterInitializationMode()
+                for pname, (_, value) in u.comp.parameters.items():
+                    _set_value(u.slave, u.comp.variables[pname], value)
+                for target, value in self.plan.overrides.items():
+                    cname, _, vname = target.partition(".")
+                    if cname == name:
+                        _set_value(u.slave, u.comp.variables[vname], value)
+            except FMICallException as exc:
+                self.fail(name, "initialization", getattr(exc, "status", 3), start)
+        for _ in range(2):  # settle chains of direct feedthrough
+            self.exchange(start)
+        for name in self.order:
+            u = self.units[name]
+            try:
+                u.slave.exitInitializationMode()
+            except FMICallException as exc:
+                self.fail(name, "fmi2ExitInitializationMode", getattr(exc, "status", 3), start)
+            if u.log and any(m.startswith("[Error]") for m in u.log):
+                self.fail(name, "fmi2ExitInitializationMode", 3, start)
+        self.exchange(start)
+        self.store(start)
+
+    # ------------------------------------------------------------------ one step
+    def step_jacobi(self, t, due):
+        """Jacobi: every due unit's inputs from the outputs at ``t``, then all step, then all
+        are read."""
+        for name, _, _ in due:
+            if (status := self.write_inputs(name, t)) > 1:
+                self.fail(name, "fmi2SetReal", status, t)
+        for name, span, _ in due:
+            u = self.units[name]
+            if (status := u.do_step(u.c, t, span, 1)) > 1:
+                self.fail(name, "fmi2DoStep", status, t)
+        for name, _, now in due:
+            if now and (status := self.read(name)) > 1:
+                self.fail(name, "fmi2GetReal", status, t)
+
+    def step_gauss_seidel(self, t, due):
+        """Gauss-Seidel: each due unit in order sets its inputs from the newest outputs,
+        steps and is read."""
+        for name, span, now in due:
+            u = self.units[name]
+            if (status := self.write_inputs(name, t)) > 1:
+                self.fail(name, "fmi2SetReal", status, t)
+            if (status := u.do_step(u.c, t, span, 1)) > 1:
+                self.fail(name, "fmi2DoStep", status, t)
+            if now and (status := self.read(name)) > 1:
+                self.fail(name, "fmi2GetReal", status, t)
+
+    def publish_slow(self, k, t):
+        """After step ``k``: the slow units (``rates``) whose step ends at t + h publish their
+        outputs, and the algebraic units that read them are updated."""
+        n_steps, h = self.plan.n_steps, self.plan.step
+        ended = [n for n, r in self.rates if r > 1 and ((k + 1) % r == 0 or k + 1 == n_steps)]
+        if not ended:
+            return
+        for name in ended:
+            if (status := self.read(name)) > 1:
+                self.fail(name, "fmi2GetReal", status, t)
+        for name in _readers(self.system, self.order, ended):
+            if (status := self.refresh(name)) > 1:
+                self.fail(name, "fmi2SetReal/fmi2GetReal", status, t + h)
+
+    def step_all(self, stop_request) -> RunResult:
+        """Every communication step of the run; the :class:`RunResult`."""
+        start, h, n_steps, every = (
+            self.plan.start,
+            self.plan.step,
+            self.plan.n_steps,
+            self.plan.every,
+        )
+        step = self.step_jacobi if self.settings.algorithm == "jacobi" else self.step_gauss_seidel
+        rates = self.rates
+        bar = progress_bar(
+            n_steps, desc=self.system.name, unit="step", enabled=self.settings.progress
+        )
         try:
-            u.slave.setupExperiment(startTime=start)
-            u.slave.enterInitializationMode()
-            for pname, (_, value) in u.comp.parameters.items():
-                _set_value(u.slave, u.comp.variables[pname], value)
-            for target, value in overrides.items():
-                cname, _, vname = target.partition(".")
-                if cname == name:
-                    _set_value(u.slave, u.comp.variables[vname], value)
-        except FMICallException as exc:
-            fail(name, "initialization", exc.status if hasattr(exc, "status") else 3, start)
-    for _ in range(2):  # settle chains of direct feedthrough
-        for name in order:
-            if (status := write_inputs(name, start)) > 1:
-                fail(name, "fmi2SetReal", status, start)
-            if (status := read(name)) > 1:
-                fail(name, "fmi2GetReal", status, start)
-    for name in order:
-        try:
-            units[name].slave.exitInitializationMode()
-        except FMICallException as exc:
-            fail(name, "fmi2ExitInitializationMode", getattr(exc, "status", 3), start)
-        if units[name].log and any(m.startswith("[Error]") for m in units[name].log):
-            fail(name, "fmi2ExitInitializationMode", 3, start)
-    for name in order:
-        if (status := write_inputs(name, start)) > 1:
-            fail(name, "fmi2SetReal", status, start)
-        if (status := read(name)) > 1:
-            fail(name, "fmi2GetReal", status, start)
-    store(start)
-    # --- stepping -------------------------------------------------------------------------
-    bar = progress_bar(n_steps, desc=system.name, unit="step", enabled=progress)
-    jacobi = algorithm == "jacobi"
-    rates = [(name, settings.rates.get(name, 1)) for name in order]
-    try:
-        for k in range(n_steps):
-            t = start + k * h
-            if stop_request is not None and stop_request.requested:  # Ctrl-C: stop here
-                interrupted(t)
-            # the components due at this step: (name, step size, read now): a slow one steps
-            # over N·h and its outputs reach the others when that step ends (read below)
-            due = [(n, min(r, n_steps - k) * h, r == 1) for n, r in rates if k % r == 0]
-            if jacobi:
-                for name, _, _ in due:
-                    if (status := write_inputs(name, t)) > 1:
-                        fail(name, "fmi2SetReal", status, t)
-                for name, span, _ in due:
-                    u = units[name]
-                    if (status := u.do_step(u.c, t, span, 1)) > 1:
-                        fail(name, "fmi2DoStep", status, t)
-                for name, _, now in due:
-                    if now and (status := read(name)) > 1:
-                        fail(name, "fmi2GetReal", status, t)
-            else:
-                for name, span, now in due:
-                    u = units[name]
-                    if (status := write_inputs(name, t)) > 1:
-                        fail(name, "fmi2SetReal", status, t)
-                    if (status := u.do_step(u.c, t, span, 1)) > 1:
-                        fail(name, "fmi2DoStep", status, t)
-                    if now and (status := read(name)) > 1:
-                        fail(name, "fmi2GetReal", status, t)
-            ended = [n for n, r in rates if r > 1 and ((k + 1) % r == 0 or k + 1 == n_steps)]
-            if ended:  # slow components whose step ends at t + h: publish, and update the
-                for name in ended:  # algebraic components that read them
-                    if (status := read(name)) > 1:
-                        fail(name, "fmi2GetReal", status, t)
-                for name in _readers(system, order, ended):
-                    if (status := refresh(name)) > 1:
-                        fail(name, "fmi2SetReal/fmi2GetReal", status, t + h)
-            if (k + 1) % every == 0 or k + 1 == n_steps:
-                store(start + (k + 1) * h)
-            bar.update()
-    finally:
-        bar.close()
-    return result(stored[0])
+            for k in range(n_steps):
+                t = start + k * h
+                if stop_request is not None and stop_request.requested:  # Ctrl-C: stop here
+                    self.stop(f"interrupted at t = {t:.6g} s", Interrupted, time=t)
+                # the units due at this step: (name, step size, read now): a slow one steps
+                # over N·h and its outputs reach the others when that step ends
+                step(t, [(n, min(r, n_steps - k) * h, r == 1) for n, r in rates if k % r == 0])
+                self.publish_slow(k, t)
+                if (k + 1) % every == 0 or k + 1 == n_steps:
+                    self.store(start + (k + 1) * h)
+                bar.update()
+        finally:
+            bar.close()
+        return self.result()
