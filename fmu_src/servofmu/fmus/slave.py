@@ -75,6 +75,7 @@ UNITS: dict[str, tuple[dict[str, int], tuple[tuple[str, float, float], ...]]] = 
     "W/K": ({"kg": 1, "m": 2, "s": -3, "K": -1}, ()),
     "W/(m2.K)": ({"kg": 1, "s": -3, "K": -1}, ()),
     "1/K": ({"K": -1}, ()),
+    "kg/m3": ({"kg": 1, "m": -3}, (("g/cm3", 1.0e-3, 0.0),)),
     "1": ({}, ()),
 }
 
