@@ -109,9 +109,13 @@ def mean_diameter(bearing) -> float:
 
 
 def skf_loads(force_a, force_b, radial_load):
-    """(Fa,A, Fa,B, Fr) [N]: each bearing's axial load from the equilibrium (compressive, ≥ 0)
-    and its share of the external radial load [N] (the pair solve makes Fr,A = Fr,B = F_r/2)."""
-    return force_a, force_b, 0.5 * abs(radial_load)
+    """(Fa,A, Fa,B, Fr) [N]: each bearing's axial load from the equilibrium and its share of
+    the external radial load [N] (the pair solve makes Fr,A = Fr,B = F_r/2). A bearing that has
+    lost its preload under a radial load can have Σ Q·sin α slightly below 0 (balls past the
+    groove bottom on the far side): the SKF model's Fa is a thrust, so it counts as 0."""
+    if type(force_a) is float and type(force_b) is float:
+        return max(force_a, 0.0), max(force_b, 0.0), 0.5 * abs(radial_load)
+    return np.maximum(force_a, 0.0), np.maximum(force_b, 0.0), 0.5 * abs(radial_load)
 
 
 def skf_torques(pair, loads, kinematic_viscosity, speed):
