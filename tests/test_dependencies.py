@@ -116,8 +116,8 @@ def test_dependencies_hold_under_each_friction_model(fmus, model):
     }
     only = {"speed", "temperature", "axial_load", "radial_load", "shim", "n_balls"}
     # (lubrication solid refuses a grease term: probed at the default base above)
-    _check(fmus["BearingFriction"], "BearingFriction", base,
-           only | set(parameters_in(*_FRICTION_GROUPS)) - {"friction_model", "lubrication"})  # fmt: skip
+    friction = set(parameters_in(*_FRICTION_GROUPS)) - {"friction_model", "lubrication"}
+    _check(fmus["BearingFriction"], "BearingFriction", base, only | friction)
 
 
 def _check(path, name, base_values, only=None):
