@@ -275,7 +275,10 @@ def _calibrate_datasheet(args) -> int:
     if cal.poor and not args.allow_poor_fit:
         ssv.unlink(missing_ok=True)
     else:
-        comment = f"grease term of {cal.lubricant} calibrated on its {cal.test} datasheet torque"
+        comment = (
+            f"grease term of {cal.lubricant} calibrated on its {cal.test} datasheet torque "
+            f"(servofmu calibrate --datasheet {cal.lubricant}), with its base oil"
+        )
         files.append(
             write_ssv(
                 cal.parameters, ssv, component=args.component, only=GREASE_PARAMETERS,
