@@ -270,3 +270,35 @@ def test_fmu_friction_model_through_parameters_gives_the_library_numbers(fmus, m
         )
     finally:
         fmu.close()
+
+
+def test_the_grease_variant_is_what_the_calibration_writes():
+    # ssp/seeker_gimbal/variants/grease_g1074.ssv is servofmu calibrate --datasheet's output
+    from servofmu.build.ssp import SSP_DIR
+    from servofmu.build.xmlsafe import parse
+    from servofmu.calibration.datasheet import GREASE_PARAMETERS
+    from servofmu.physics.bearing_parameters import parameter
+
+    path = SSP_DIR / "seeker_gimbal" / "variants" / "grease_g1074.ssv"
+    bound = {}
+    for prm in parse(path.read_bytes(), path.name).iter("{*}Parameter"):
+        (value,) = list(prm)
+        bound[prm.get("name").removeprefix("bearing.")] = value.get("value")
+    cal = calibrate_datasheet("molykote_g1074")
+    assert set(bound) == set(GREASE_PARAMETERS)
+    for name, value in cal.parameters.items():
+        spec = parameter(name)
+        expected = spec.item(value) if spec.choices else value
+        assert float(bound[name]) == expected, name
+
+
+def test_the_reduction_factors_the_ehl_model_leaves_out():
+    # the numbers friction_models' docstring states for the 71803 at 10 °/s (Krytox 143AA)
+    n = 10.0 / 6.0  # r/min
+    for celsius, ish, rs in ((-40.0, 1.6e-4, 0.92), (-60.0, None, 0.002)):
+        out = BearingModel(_pair("ehl_per_contact")).evaluate(celsius + 273.15, W)
+        nu = out.kinematic_viscosity / 1e-6  # mm²/s
+        if ish is not None:
+            assert 1.0 - rf._phi_ish(nu, n, 21.5) == pytest.approx(ish, rel=0.05)
+            assert nu == pytest.approx(4.1e4, rel=0.01)
+        assert rf._phi_rs(nu, n, 17.0, 26.0, 4.4, 6e-8) == pytest.approx(rs, rel=0.05)

@@ -15,11 +15,14 @@ elsewhere; it writes none itself:
   ball–race contact (Biboulet & Houpert 2010) from that contact's load, contact angle and Hertz
   ellipse and the lubricant's dynamic viscosity η = ν(T)·ρ at the part temperatures, in place
   of Palmgren's term, plus Yu's hysteresis and spin (and Ning's sliding for a dry film) per
-  contact. The fit is for a fully flooded, isothermal contact: no thermal (inlet shear) or
-  starvation reduction is applied. At the speeds of a servo (entrainment speeds of mm/s) inlet
-  shear heating is negligible — SKF's φish of the 71803 at 10 °/s and −40 °C is 1 − 4e-5 —
-  while the starvation of a slowly turning grease-packed bearing (the grease pushed aside, a
-  thinner inlet meniscus) would lower the rolling torque, by an amount no cited law gives here.
+  contact. No thermal (inlet shear) or starvation reduction is applied: Biboulet &
+  Houpert's fit is for a fully flooded, isothermal contact, and SKF's factors φish and φrs are
+  empirical for a bearing's total rolling moment, not for one contact. For scale, on the
+  gimbal's 71803 at 10 °/s and −40 °C (Krytox 143AA, ν = 4.1e4 mm²/s) φish is 1 − 1.6e-4
+  (inlet heating is negligible at servo speeds), while SKF's replenishment factor for grease
+  is 0.92 there and 0.002 at −60 °C (ν extrapolated to 2.9e6 mm²/s): a starved, slowly turning
+  grease-packed contact would have less rolling torque than this model gives, by an amount no
+  cited per-contact law gives here (tests/test_friction_models.py checks these numbers).
 
 The grease term (:mod:`.grease_torque`, 0 = off) adds, per bearing, Palmgren's M0 with a
 factor f0 calibrated on a grease datasheet's low-temperature torque test, at the base oil's
