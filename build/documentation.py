@@ -71,6 +71,7 @@ class Curve:
     caption: str
     right: tuple[str, str, np.ndarray] | None = None  # (axis label, series label, values)
     log_y: bool = False
+    y_min: float | None = None  # lower end of the y axis (what lies below is cut off)
 
 
 def _build_start(name: str) -> bool:
@@ -95,7 +96,6 @@ def _bearing_curve() -> Curve:
             row += fmu.get("running_torque", "breakaway_torque")
         rows.append(row)
     torque = 1e3 * np.array(rows)  # N·m → N·mm
-    torque[torque < 0.01] = np.nan  # not drawn on the log axis (the unloaded pair)
     return Curve(
         "BearingFriction: friction torque versus temperature",
         "temperature [°C]",
@@ -112,7 +112,7 @@ def _bearing_curve() -> Curve:
         "axis). The thermal coupling of frame, shaft and bearings changes fits and preload with "
         "temperature; the lubricant's viscosity adds the viscous part of the running torque. "
         "skf2004 and ehl_per_contact see the bearings' loads: once the preload is lost they "
-        "fall below 0.01 N·mm (not drawn), and SKF's replenishment factor cuts its rolling "
+        "fall below 0.01 N·mm (the axis' end), and SKF's replenishment factor cuts its rolling "
         "torque where the base oil's extrapolated viscosity exceeds about 1e5 mm²/s (below "
         "−45 °C). "
         + (
@@ -121,6 +121,7 @@ def _bearing_curve() -> Curve:
             else "With the default mounting the preload is lost above about 36 °C (unloaded)."
         ),
         log_y=True,
+        y_min=0.01,
     )
 
 
@@ -243,6 +244,8 @@ def plot_curve(curve: Curve, path: Path) -> Path:
         twin.set_ylabel(axis_label)
     if curve.log_y:
         ax.set_yscale("log")
+    if curve.y_min is not None:
+        ax.set_ylim(bottom=curve.y_min)
     ax.set_title(curve.title, fontsize=10)
     ax.set_xlabel(curve.xlabel)
     ax.set_ylabel(curve.ylabel)
