@@ -449,18 +449,23 @@ def _speed_terms(pair: BearingPair, viscosity, pitch_diameter, coulomb, excess, 
     Coulomb torque (hysteresis + spin + sliding of the contacts), the breakaway excess, the
     contacts' sliding torque [N·m] and the model's ``rolling`` data (:func:`rolling_data`);
     floats in, floats out on the per-step path."""
-    model = pair.friction.model
-    running = coulomb
+    fm = pair.friction
+    model = fm.model
     if model == "yu2017":
         s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
         viscous = 2.0 * _palmgren(viscosity, w, pitch_diameter, s0)
+        running = coulomb + viscous
     elif model == "skf2004":
         viscous, sliding, _ = skf_torques(pair, rolling, viscosity, w)
-        running = running + sliding
+        running = coulomb + sliding + viscous
     else:
         viscous = ehl_torque(rolling, w)
-    grease = grease_running(pair, viscosity, w)
-    running = running + viscous + grease
+        running = coulomb + viscous
+    if fm.grease is None:
+        grease = 0.0
+    else:
+        grease = grease_running(pair, viscosity, w)
+        running = running + grease
     signed = _regularised(w, running, excess, pair.regularisation_speed, pair.stribeck_speed)
     return signed, running, sliding, viscous, grease
 
@@ -605,9 +610,18 @@ class PointState:
         unloaded) (:func:`state_flags`), the viscous torque at rest [N·m]
         (:func:`rest_torque`, evaluated when not given) and the friction model's ``rolling``
         data (:func:`rolling_data`, floats)."""
-        hyst, spin, slide, inner, outer = contact_terms(pair, *torques)
         nu, dm = thermal.kinematic_viscosity, thermal.pitch_diameter
-        coulomb, excess, breakaway = state_torques(pair, hyst, spin, slide, nu, dm, rolling, rest)
+        fm = pair.friction
+        if fm.model == "yu2017" and fm.grease is None:  # the default: the per-step hot path
+            hyst, spin, slide, inner, outer = torques
+            coulomb, excess = _coulomb_excess(pair, hyst, spin, slide)
+            rest = rest_torque(pair, nu, dm) if rest is None else rest
+            breakaway = coulomb + excess + rest
+        else:
+            hyst, spin, slide, inner, outer = contact_terms(pair, *torques)
+            coulomb, excess, breakaway = state_torques(
+                pair, hyst, spin, slide, nu, dm, rolling, rest
+            )
         return cls(
             hyst,
             spin,
