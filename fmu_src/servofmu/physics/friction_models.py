@@ -50,6 +50,7 @@ from .rolling_friction import (
     REPLENISHMENT_KRS,
     SkfConstants,
     _pair_moments,
+    _pair_starting,
 )
 from .units import CST, MM, NMM, RPM
 
@@ -122,12 +123,12 @@ def skf_loads(force_a, force_b, radial_load):
 
 
 def skf_torques(pair, loads, kinematic_viscosity, speed):
-    """(φish·φrs·ΣMrr, ΣMsl, ΣMsl(n → 0)) [N·m] of the pair (:func:`.rolling_friction.
-    pair_moments` without its checks) at the loads of :func:`skf_loads`, viscosity ν [m²/s]
-    and speed ω [rad/s]."""
+    """(φish·φrs·ΣMrr, ΣMsl) [N·m] of the pair (:func:`.rolling_friction.pair_moments`
+    without its checks) at the loads of :func:`skf_loads`, viscosity ν [m²/s] and speed ω
+    [rad/s]."""
     fm, b = pair.friction, pair.bearing
     fa_a, fa_b, fr = loads
-    out = _pair_moments(
+    rolling, sliding = _pair_moments(
         fm.skf,
         b.bore / MM,
         b.outer_diameter / MM,
@@ -140,7 +141,18 @@ def skf_torques(pair, loads, kinematic_viscosity, speed):
         fm.skf_boundary_friction,
         fm.skf_film_friction,
     )
-    return out[0] * NMM, out[1] * NMM, out[2] * NMM
+    return rolling * NMM, sliding * NMM
+
+
+def skf_starting(pair, loads):
+    """SKF's starting torque of the pair ΣMsl(n → 0) [N·m] at the loads of :func:`skf_loads`
+    (open bearings: no seal moment)."""
+    fm, b = pair.friction, pair.bearing
+    fa_a, fa_b, fr = loads
+    start = _pair_starting(
+        fm.skf, b.bore / MM, b.outer_diameter / MM, fa_a, fa_b, fr, fm.skf_boundary_friction
+    )
+    return start * NMM
 
 
 def ehl_torque(terms, speed):

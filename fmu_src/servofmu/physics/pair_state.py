@@ -34,6 +34,7 @@ from .friction_models import (
     grease_rest_and_start,
     grease_running,
     skf_loads,
+    skf_starting,
     skf_torques,
 )
 from .geometry import RaceGeometry
@@ -456,7 +457,7 @@ def _speed_terms(pair: BearingPair, viscosity, pitch_diameter, coulomb, excess, 
         viscous = 2.0 * _palmgren(viscosity, w, pitch_diameter, s0)
         running = coulomb + viscous
     elif model == "skf2004":
-        viscous, sliding, _ = skf_torques(pair, rolling, viscosity, w)
+        viscous, sliding = skf_torques(pair, rolling, viscosity, w)
         running = coulomb + sliding + viscous
     else:
         viscous = ehl_torque(rolling, w)
@@ -497,7 +498,7 @@ def state_torques(pair: BearingPair, hysteresis, spin, sliding, viscosity, pitch
     the grease term's starting torque (:func:`.friction_models.grease_rest_and_start`)."""
     if pair.friction.model == "skf2004":
         coulomb = excess = 0.0
-        rest = skf_torques(pair, rolling, viscosity, 0.0)[2]
+        rest = skf_starting(pair, rolling)
     else:
         coulomb, excess = _coulomb_excess(pair, hysteresis, spin, sliding)
         if rest is None:

@@ -577,20 +577,25 @@ def skf_friction(
 
 
 def _pair_moments(c, d_mm, big_d_mm, fa_a, fa_b, fr, nu_cst, n_rpm, krs, mu_bl, mu_ehl):
-    """(φish·φrs·ΣMrr, ΣMsl, ΣMsl(n = 0)) [N·mm] of two angular-contact bearings of one size
-    with axial loads fa_a, fa_b and radial load fr each [N], in the catalogue's units,
-    elementwise on floats or arrays (see :func:`pair_moments`)."""
+    """(φish·φrs·ΣMrr, ΣMsl) [N·mm] of two angular-contact bearings of one size with axial
+    loads fa_a, fa_b and radial load fr each [N], in the catalogue's units, elementwise on
+    floats or arrays (see :func:`pair_moments`)."""
     dm_mm = 0.5 * (d_mm + big_d_mm)
-    nu_n = nu_cst * n_rpm
     reduction = _phi_ish(nu_cst, n_rpm, dm_mm) * _phi_rs(nu_cst, n_rpm, d_mm, big_d_mm, c.kz, krs)
     phi_bl = _phi_bl(nu_cst, n_rpm, dm_mm)
     mu_sl = phi_bl * mu_bl + (1.0 - phi_bl) * mu_ehl
     grr_a, gsl_a = _angular_contact_g(c, dm_mm, fr, fa_a, n_rpm)
     grr_b, gsl_b = _angular_contact_g(c, dm_mm, fr, fa_b, n_rpm)
-    start_a = _angular_contact_g(c, dm_mm, fr, fa_a, 0.0)[1]
-    start_b = _angular_contact_g(c, dm_mm, fr, fa_b, 0.0)[1]
-    rolling = reduction * (grr_a + grr_b) * nu_n**0.6
-    return rolling, mu_sl * (gsl_a + gsl_b), mu_bl * (start_a + start_b)
+    return reduction * (grr_a + grr_b) * (nu_cst * n_rpm) ** 0.6, mu_sl * (gsl_a + gsl_b)
+
+
+def _pair_starting(c, d_mm, big_d_mm, fa_a, fa_b, fr, mu_bl):
+    """ΣMsl(n → 0) = μbl·(Gsl,A + Gsl,B) at n = 0 [N·mm] (SKF "Starting torque": μsl = μbl
+    since φbl = 1, no centrifugal load), elementwise on floats or arrays."""
+    dm_mm = 0.5 * (d_mm + big_d_mm)
+    gsl_a = _angular_contact_g(c, dm_mm, fr, fa_a, 0.0)[1]
+    gsl_b = _angular_contact_g(c, dm_mm, fr, fa_b, 0.0)[1]
+    return mu_bl * (gsl_a + gsl_b)
 
 
 def pair_moments(
@@ -649,10 +654,12 @@ def pair_moments(
     check_nonnegative("krs", krs)
     check_range("mu_bl", mu_bl, 0.0, 1.0)
     check_range("mu_ehl", mu_ehl, 0.0, 1.0)
+    d_mm, big_d_mm = d / MM, big_d / MM
     out = _pair_moments(
-        constants, d / MM, big_d / MM, fa_a, fa_b, fr, _cst(nu), _rpm(speed), krs, mu_bl, mu_ehl
+        constants, d_mm, big_d_mm, fa_a, fa_b, fr, _cst(nu), _rpm(speed), krs, mu_bl, mu_ehl
     )
-    return tuple(_scalar(x * NMM) for x in out)
+    start = _pair_starting(constants, d_mm, big_d_mm, fa_a, fa_b, fr, mu_bl)
+    return tuple(_scalar(x * NMM) for x in (*out, start))
 
 
 def bearing_loads(ball_load, contact_angle, azimuth=None):
