@@ -57,6 +57,11 @@ from .units import CST, MM, NMM, RPM
 FRICTION_MODELS = ("yu2017", "skf2004", "ehl_per_contact")
 #: Density assumed for a lubricant without a recorded one [kg/m³] (a hydrocarbon oil).
 ASSUMED_DENSITY = 870.0
+#: Provenance of the SKF coefficients that do not depend on bearing or lubricant.
+SKF_SOURCES = {
+    "skf_replenishment": "catalogue: SKF 10000 EN, Krs = 6e-8 for grease and oil-air",
+    "skf_boundary_friction": "catalogue: SKF 10000 EN p. 103, μbl 'generally ≈ 0,15'",
+}
 
 
 @dataclass(frozen=True)
@@ -216,24 +221,7 @@ def preset(bearing, lubricant=None, model: str = "yu2017", grease=None) -> Frict
     from .rolling_friction import series_constants
 
     skf = series_constants(bearing.key, float(bearing.nominal_contact_angle))
-    oil_class = getattr(lubricant, "oil_class", "") or ""
-    if oil_class:
-        film = MU_EHL[oil_class]
-        film_src = (
-            f"catalogue: SKF 10000 EN p. 103, μEHL of {oil_class} oils (lubricant "
-            f"{lubricant.key}: {oil_class} base oil)"
-        )
-    else:
-        film = MU_EHL["mineral"]
-        film_src = (
-            "catalogue: SKF 10000 EN p. 103, μEHL of mineral oils (assumed: oil class unknown)"
-        )
-    density = getattr(lubricant, "density", None)
-    if density is not None:
-        density_src = f"{lubricant.source('density')} ({lubricant.key})"
-    else:
-        density = ASSUMED_DENSITY
-        density_src = "assumed: a hydrocarbon oil (no density recorded for the lubricant)"
+    (film, film_src), (density, density_src) = lubricant_numbers(lubricant)
     return FrictionModel(
         model=model,
         skf=skf,
@@ -243,9 +231,36 @@ def preset(bearing, lubricant=None, model: str = "yu2017", grease=None) -> Frict
         lubricant_density=float(density),
         grease=grease,
         provenance=(
-            ("skf_replenishment", "catalogue: SKF 10000 EN, Krs = 6e-8 for grease and oil-air"),
-            ("skf_boundary_friction", "catalogue: SKF 10000 EN p. 103, μbl 'generally ≈ 0,15'"),
+            *SKF_SOURCES.items(),
             ("skf_film_friction", film_src),
             ("lubricant_density", density_src),
         ),
     )
+
+
+def lubricant_numbers(lubricant) -> tuple[tuple[float, str], tuple[float, str]]:
+    """((μEHL, source), (density [kg/m³], source)) of a lubricant record (or None): SKF's μEHL
+    of its base oil's ``oil_class`` (mineral when unknown, labelled assumed) and its recorded
+    density (else :data:`ASSUMED_DENSITY`, labelled assumed).
+
+    >>> from servofmu.physics import catalog
+    >>> (mu, _), (rho, src) = lubricant_numbers(catalog.lubricant_record("xc_5606j"))
+    >>> mu, rho, src[:7]
+    (0.05, 870.1, 'derived')
+    """
+    oil_class = getattr(lubricant, "oil_class", "") or ""
+    if oil_class:
+        film = (
+            MU_EHL[oil_class],
+            f"catalogue: SKF 10000 EN p. 103, μEHL of {oil_class} oils (lubricant "
+            f"{lubricant.key}: {oil_class} base oil)",
+        )
+    else:
+        film = (
+            MU_EHL["mineral"],
+            "catalogue: SKF 10000 EN p. 103, μEHL of mineral oils (assumed: oil class unknown)",
+        )
+    density = getattr(lubricant, "density", None)
+    if density is None:
+        return film, (ASSUMED_DENSITY, "assumed: a hydrocarbon oil (no density recorded)")
+    return film, (float(density), f"{lubricant.source('density')} ({lubricant.key})")

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 from . import catalog
 from .friction import FrictionCoefficients
+from .friction_models import SKF_SOURCES, FrictionModel, lubricant_numbers
 from .friction_models import preset as friction_preset
 from .geometry import BallBearing
 from .materials import Material
@@ -88,22 +89,22 @@ def lubricant_values(key: str) -> tuple[dict, dict]:
     rec = catalog.lubricant_record(key)
     if rec.viscosity is None:
         return {"lubrication": "solid"}, {"lubrication": f"catalogue: lubricant {key} (dry film)"}
-    fm = friction_preset(catalog.bearing("71803"), rec)  # the lubricant's numbers only
+    (film, film_src), (density, density_src) = lubricant_numbers(rec)
     values = {
         "lubrication": "grease",
         "lubricant_viscosity_40": float(rec.viscosity_40),
         "lubricant_viscosity_100": float(rec.viscosity_100),
         "lubricant_walther_c": walther_c_si(rec.viscosity.c),
-        "lubricant_density": fm.lubricant_density,
-        "skf_film_friction": fm.skf_film_friction,
+        "lubricant_density": density,
+        "skf_film_friction": film,
     }
     sources = {
         "lubrication": f"catalogue: lubricant {key} ({rec.lubricant_type})",
         "lubricant_viscosity_40": f"{rec.source('viscosity_40')} ({key})",
         "lubricant_viscosity_100": f"{rec.source('viscosity_100')} ({key})",
         "lubricant_walther_c": f"{rec.viscosity.source('c')} ({key})",
-        "lubricant_density": fm.source("lubricant_density"),
-        "skf_film_friction": fm.source("skf_film_friction"),
+        "lubricant_density": density_src,
+        "skf_film_friction": film_src,
     }
     return values, sources
 
@@ -328,7 +329,7 @@ def _coefficient_values(mounting: str, solid: bool) -> tuple[dict, dict]:
         "stribeck_speed": "assumed",
         "pressure_limit": "handbook: ISO 76, 4200 MPa for ball bearings",
     }
-    fm = friction_preset(catalog.bearing("71803"))  # the catalogue's SKF coefficients
+    fm = FrictionModel()  # the catalogue's SKF coefficients (μbl, Krs)
     unused = "not used (grease_f0 = 0: no grease term)"
     values |= {
         "friction_model": "yu2017",
@@ -340,8 +341,7 @@ def _coefficient_values(mounting: str, solid: bool) -> tuple[dict, dict]:
     }
     sources |= {
         "friction_model": "assumed: Yu 2017's model, the default for the paper reproductions",
-        "skf_replenishment": fm.source("skf_replenishment"),
-        "skf_boundary_friction": fm.source("skf_boundary_friction"),
+        **SKF_SOURCES,
         "grease_f0": "assumed: off (calibrate it on a datasheet: servofmu calibrate --datasheet)",
         "grease_starting_ratio": f"{unused}: 1",
         "grease_reference_speed": f"{unused}: the 1 r/min of ASTM D1478 and JIS K 2220",
