@@ -205,6 +205,13 @@ def parameter_problems(p: Mapping[str, object]) -> list[str]:
             f"lubricant_viscosity_100 = {nu100!r} m2/s must be below lubricant_viscosity_40 "
             f"= {nu40!r} m2/s (a lubricant thins on heating)"
         )
+    c = p["lubricant_walther_c"]
+    for name in ("lubricant_viscosity_40", "lubricant_viscosity_100"):
+        if p["lubrication"] == "grease" and not p[name] + c > CST:
+            found.append(
+                f"{name} = {p[name]!r} m2/s with lubricant_walther_c = {c!r} m2/s gives "
+                f"ν + c = {(p[name] + c) / CST:.4g} cSt; Walther's lg lg(ν + c) needs > 1 cSt"
+            )
     method = p["preload_method"]
     if method == "spring":
         for name, unit in (("spring_stiffness", "N/m"), ("spring_compression", "m")):
