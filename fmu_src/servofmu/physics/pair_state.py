@@ -688,7 +688,16 @@ class PointState:
     def outputs(self, pair: BearingPair, w: float) -> BearingOutputs:
         """:class:`BearingOutputs` at speed ``w`` [rad/s] (float): the same numbers as
         :func:`bearing_outputs` on the exact path's state."""
-        signed, running, sliding, viscous, grease = self.speed_terms(pair, w)
+        signed, running, sliding, viscous, grease = _speed_terms(
+            pair,
+            self.kinematic_viscosity,
+            self.pitch_diameter,
+            self.coulomb_torque,
+            self.breakaway_excess,
+            self.sliding_torque,
+            self.rolling,
+            w,
+        )  # (speed_terms inlined: the per-step path)
         return BearingOutputs(
             signed,
             running,
