@@ -43,9 +43,9 @@ lint: $(STAMP)
 
 ## benchmarks (not part of the test run)
 bench: $(STAMP)
-	$(BIN)/python benchmarks/bench_bearing.py
+	$(BIN)/python benchmarks/bench_bearing.py --models
 	$(BIN)/python benchmarks/bench_actuator.py
-	$(BIN)/python benchmarks/bench_fmus.py
+	$(BIN)/python benchmarks/bench_fmus.py --models
 	$(BIN)/python benchmarks/bench_harness.py
 	$(BIN)/python benchmarks/bench_sweep.py
 	$(BIN)/python benchmarks/bench_thermal_network.py

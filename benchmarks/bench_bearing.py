@@ -11,6 +11,9 @@
    the same temperatures (thermal_state + load_state + bearing_outputs per point, the exact
    path), measured in one run; the ratio is what matters.
 
+``--models`` also times the per-step loops under the other friction models (parameter
+``friction_model``: skf2004, ehl_per_contact; Yu's gimbal, no grease term).
+
 Prints a small table; ``--json`` prints the figures as JSON.
 """
 
@@ -78,14 +81,23 @@ def main() -> None:
     parser.add_argument("--points", type=int, default=1000)
     parser.add_argument("--steps", type=int, default=4000)
     parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument(
+        "--models", action="store_true", help="also the per-step loops of skf2004, ehl_per_contact"
+    )
     args = parser.parse_args()
 
-    pair = pair_from_parameters(default_parameters("yu2017_gimbal"))
+    params = default_parameters("yu2017_gimbal")
+    pair = pair_from_parameters(params)
     figures = {}
-    for label, values in LOOPS.items():
-        secs, fallbacks = per_step(pair, values, args.steps, args.repeat)
-        figures[f"step: {label} [us]"] = secs * 1e6
-        figures[f"step: {label}, exact fallbacks"] = fallbacks
+    models = {"": pair}
+    if args.models:
+        for m in ("skf2004", "ehl_per_contact"):
+            models[f"{m}: "] = pair_from_parameters(params | {"friction_model": m})
+    for prefix, p in models.items():
+        for label, values in LOOPS.items():
+            secs, fallbacks = per_step(p, values, args.steps, args.repeat)
+            figures[f"step: {prefix}{label} [us]"] = secs * 1e6
+            figures[f"step: {prefix}{label}, exact fallbacks"] = fallbacks
     firsts = []
     for _ in range(3):
         t0 = time.perf_counter()

@@ -52,55 +52,72 @@ def _ramp(k: int) -> float:
     return 213.15 + 140.0 * (phase if phase <= 1.0 else 2.0 - phase)
 
 
-# inputs changed every step (value at step k) and the output read back
+# BearingFriction's inputs changed every step (value at step k) and the output read back
+_BEARING_INPUTS = ("temperature", "speed", "axial_load", "radial_load")
+BEARING_LOOPS = {
+    "speed changes": lambda k: (253.15, 0.2 * math.sin(1e-3 * k), 5.0, 0.0),
+    "speed and axial load change": lambda k: (
+        253.15,
+        0.2 * math.sin(1e-3 * k),
+        5.0 + math.sin(2e-3 * k),
+        0.0,
+    ),
+    "ramp -60..+80 degC, 20 N axial": lambda k: (_ramp(k), 0.2 * math.sin(1e-3 * k), 20.0, 0.0),
+    "ramp, axial 10-30 N, radial 0-20 N": lambda k: (
+        _ramp(k),
+        0.2 * math.sin(1e-3 * k),
+        20.0 + 10.0 * math.sin(7e-3 * k),
+        10.0 + 10.0 * math.sin(1.1e-2 * k),
+    ),
+}
+#: The other friction models (parameter friction_model: item) and their loops (--models).
+OTHER_MODELS = {"skf2004": 2, "ehl_per_contact": 3}
+
+# inputs changed every step (value at step k), the output read back, parameters set
 LOOPS = {
-    "Empty": (("a", "b", "c", "d"), lambda k: (1.0 + 1e-3 * k, 2.0, 3.0, 4.0), "y"),
-    "BearingFriction (speed changes)": (
-        ("temperature", "speed", "axial_load", "radial_load"),
-        lambda k: (253.15, 0.2 * math.sin(1e-3 * k), 5.0, 0.0),
-        "friction_torque",
-    ),
-    "BearingFriction (speed and axial load change)": (
-        ("temperature", "speed", "axial_load", "radial_load"),
-        lambda k: (253.15, 0.2 * math.sin(1e-3 * k), 5.0 + math.sin(2e-3 * k), 0.0),
-        "friction_torque",
-    ),
-    "BearingFriction (ramp -60..+80 degC, 20 N axial)": (
-        ("temperature", "speed", "axial_load", "radial_load"),
-        lambda k: (_ramp(k), 0.2 * math.sin(1e-3 * k), 20.0, 0.0),
-        "friction_torque",
-    ),
-    "BearingFriction (ramp, axial 10-30 N, radial 0-20 N)": (
-        ("temperature", "speed", "axial_load", "radial_load"),
-        lambda k: (
-            _ramp(k),
-            0.2 * math.sin(1e-3 * k),
-            20.0 + 10.0 * math.sin(7e-3 * k),
-            10.0 + 10.0 * math.sin(1.1e-2 * k),
-        ),
-        "friction_torque",
-    ),
+    "Empty": (("a", "b", "c", "d"), lambda k: (1.0 + 1e-3 * k, 2.0, 3.0, 4.0), "y", {}),
+    **{
+        f"BearingFriction ({what})": (_BEARING_INPUTS, values, "friction_torque", {})
+        for what, values in BEARING_LOOPS.items()
+    },
     "ActuatorStiffness": (
         ("temperature", "speed", "load_torque", "angle"),
         lambda k: (293.15, 0.0, 150.0 + 50.0 * math.sin(1e-3 * k), 0.17),
         "stiffness",
+        {},
     ),
-    "DCMotor": (("voltage", "load_torque"), lambda k: (math.sin(1e-3 * k), 1e-3), "speed"),
+    "DCMotor": (("voltage", "load_torque"), lambda k: (math.sin(1e-3 * k), 1e-3), "speed", {}),
     "ServoController": (
         ("reference", "measurement"),
         lambda k: (math.sin(1e-3 * k), 0.9 * math.sin(1e-3 * k)),
         "command",
+        {},
     ),
     # a chamber ramp of 1 K/s seen at 1 ms steps: radiation re-linearised every 0.1 K (default)
     "ThermalNetwork (chamber ramp, power loss changes)": (
         ("ambient_temperature", "sink_temperature", "power_loss"),
         lambda k: (233.15 + 1e-3 * k, 233.15 + 1e-3 * k, 0.1 + 0.05 * math.sin(1e-3 * k)),
         "shaft_temperature",
+        {},
     ),
 }
 
 
-def _slave(path: Path):
+def _model_loops() -> dict:
+    """BearingFriction's loops under the other friction models (``--models``)."""
+    return {
+        f"BearingFriction {model} ({what})": (
+            _BEARING_INPUTS,
+            values,
+            "friction_torque",
+            {"friction_model": item},
+        )
+        for model, item in OTHER_MODELS.items()
+        for what, values in BEARING_LOOPS.items()
+    }
+
+
+def _slave(path: Path, integers: dict):
     md = read_model_description(str(path))
     slave = FMU2Slave(
         guid=md.guid,
@@ -108,11 +125,14 @@ def _slave(path: Path):
         modelIdentifier=md.coSimulation.modelIdentifier,
         instanceName="bench",
     )
+    vr = {v.name: v.valueReference for v in md.modelVariables}
     slave.instantiate()
     slave.setupExperiment(startTime=0.0)
     slave.enterInitializationMode()
+    if integers:  # choices: FMI Integers
+        slave.setInteger([vr[n] for n in integers], list(integers.values()))
     slave.exitInitializationMode()
-    return slave, {v.name: v.valueReference for v in md.modelVariables}
+    return slave, vr
 
 
 class Loop:
@@ -120,8 +140,8 @@ class Loop:
     ``steps`` steps of it (the history continues from one call to the next, so that no call
     starts with a jump of its inputs)."""
 
-    def __init__(self, path: Path, inputs, values, output, total: int):
-        self.slave, vr = _slave(path)
+    def __init__(self, path: Path, inputs, values, output, integers, total: int):
+        self.slave, vr = _slave(path, integers)
         self.ins, self.out = [vr[n] for n in inputs], [vr[output]]
         self.series = [values(k) for k in range(total)]
         self.k, self.t = 0, 0.0
@@ -150,6 +170,11 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--json", action="store_true")
     parser.add_argument("--clock", choices=("cpu", "wall"), default="cpu")
+    parser.add_argument(
+        "--models",
+        action="store_true",
+        help="also BearingFriction's loops under friction_model skf2004 and ehl_per_contact",
+    )
     args = parser.parse_args()
     clock = time.process_time if args.clock == "cpu" else time.perf_counter
     from pythonfmu.builder import FmuBuilder
@@ -159,9 +184,10 @@ def main() -> None:
         paths = {p.stem: p for p in build_all(tmp / "fmus", FMUS)}
         (tmp / "Empty.py").write_text(EMPTY)
         paths["Empty"] = Path(FmuBuilder.build_FMU(tmp / "Empty.py", dest=tmp / "fmus"))
+        specs = LOOPS | (_model_loops() if args.models else {})
         loops = {
             label: Loop(paths[label.split(" ")[0]], *spec, args.steps * args.repeat)
-            for label, spec in LOOPS.items()
+            for label, spec in specs.items()
         }
         # the loops take turns, so that every one sees the same spells of other load
         runs = {label: [] for label in loops}
@@ -180,7 +206,7 @@ def main() -> None:
         )
         return
     for label, secs in figures.items():
-        print(f"{label:48s} {secs * 1e6:8.2f} µs/step   {secs / empty:5.2f} × empty")
+        print(f"{label:60s} {secs * 1e6:8.2f} µs/step   {secs / empty:5.2f} × empty")
 
 
 if __name__ == "__main__":

@@ -37,12 +37,14 @@ class _Slave:
     Python API (set/get by value reference, initialization, fmi2DoStep): the FMU's own code,
     without the binary."""
 
-    def __init__(self, name: str, **inputs):
+    def __init__(self, name: str, integers=None, **inputs):
         self.slave = slave_class(name)(instance_name="documentation")
         self.vr = {v.name: ref for ref, v in self.slave.vars.items()}
         self.slave.setup_experiment(0.0, None, None)
         self.slave.enter_initialization_mode()
         self.set(**inputs)
+        if integers:  # choices (FMI Integer)
+            self.slave.set_integer([self.vr[k] for k in integers], list(integers.values()))
         self.slave.exit_initialization_mode()
 
     def set(self, **values):
@@ -69,6 +71,7 @@ class Curve:
     caption: str
     right: tuple[str, str, np.ndarray] | None = None  # (axis label, series label, values)
     log_y: bool = False
+    y_min: float | None = None  # lower end of the y axis (what lies below is cut off)
 
 
 def _build_start(name: str) -> bool:
@@ -79,30 +82,46 @@ def _build_start(name: str) -> bool:
 
 
 def _bearing_curve() -> Curve:
-    """Running and breakaway torque versus temperature, −60…+80 °C, at 10 °/s."""
+    """Running and breakaway torque versus temperature, −60…+80 °C, at 10 °/s (default
+    friction model), and the running torque of the other friction models."""
     celsius = np.arange(-60.0, 80.0 + 1e-9, 2.5)
     speed = math.radians(10.0)
-    fmu = _Slave("BearingFriction", speed=speed)
+    fmus = [_Slave("BearingFriction", speed=speed)]
+    fmus += [_Slave("BearingFriction", {"friction_model": i}, speed=speed) for i in (2, 3)]
     rows = []
     for c in celsius:
-        fmu.set(temperature=c + 273.15)
-        rows.append(fmu.get("running_torque", "breakaway_torque"))
+        row = []
+        for fmu in fmus:
+            fmu.set(temperature=c + 273.15)
+            row += fmu.get("running_torque", "breakaway_torque")
+        rows.append(row)
     torque = 1e3 * np.array(rows)  # N·m → N·mm
     return Curve(
         "BearingFriction: friction torque versus temperature",
         "temperature [°C]",
         "torque [N·mm]",
         celsius,
-        (("running torque at 10 °/s", torque[:, 0]), ("breakaway torque", torque[:, 1])),
-        "Default parameters, no external load, shaft speed 10 °/s (logarithmic torque axis). "
-        "The thermal coupling of frame, shaft and bearings changes fits and preload with "
+        (
+            ("running torque at 10 °/s (yu2017, default)", torque[:, 0]),
+            ("breakaway torque", torque[:, 1]),
+            ("running torque, friction_model skf2004", torque[:, 2]),
+            ("running torque, friction_model ehl_per_contact", torque[:, 4]),
+        ),
+        "Default parameters (friction_model yu2017, no grease term) and the other friction "
+        "models' running torque, no external load, shaft speed 10 °/s (logarithmic torque "
+        "axis). The thermal coupling of frame, shaft and bearings changes fits and preload with "
         "temperature; the lubricant's viscosity adds the viscous part of the running torque. "
+        "skf2004 and ehl_per_contact see the bearings' loads: once the preload is lost they "
+        "fall below 0.01 N·mm (the axis' end), and SKF's replenishment factor cuts its rolling "
+        "torque where the base oil's extrapolated viscosity exceeds about 1e5 mm²/s (below "
+        "−45 °C). "
         + (
             "The start values are this build's preset (see the parameters' provenance)."
             if _build_start("BearingFriction")
             else "With the default mounting the preload is lost above about 36 °C (unloaded)."
         ),
         log_y=True,
+        y_min=0.01,
     )
 
 
@@ -225,6 +244,8 @@ def plot_curve(curve: Curve, path: Path) -> Path:
         twin.set_ylabel(axis_label)
     if curve.log_y:
         ax.set_yscale("log")
+    if curve.y_min is not None:
+        ax.set_ylim(bottom=curve.y_min)
     ax.set_title(curve.title, fontsize=10)
     ax.set_xlabel(curve.xlabel)
     ax.set_ylabel(curve.ylabel)

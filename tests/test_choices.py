@@ -39,7 +39,8 @@ def test_every_choice_is_a_structural_choice_with_named_items(fmus):
     items = _items(fmus["BearingFriction"])
     choices = {p.name for p in PARAMETERS if p.choices}
     assert choices == {
-        "lubrication", "arrangement", "preload_method", "loop_model", "loop_reading"
+        "lubrication", "arrangement", "preload_method", "loop_model", "loop_reading",
+        "friction_model",
     }  # fmt: skip
     assert set(items) == choices | {"temperature_mode"}  # the FMU's own choice of inputs
     assert list(items["temperature_mode"]) == ["uniform", "housing_shaft", "parts"]
@@ -47,11 +48,12 @@ def test_every_choice_is_a_structural_choice_with_named_items(fmus):
     assert list(items["arrangement"]) == ["face_to_face", "back_to_back"]
     assert list(items["preload_method"]) == ["shim", "force", "spring"]
     assert items["loop_model"]["yoke"] == parameter("loop_model").item("yoke") == 2
+    assert list(items["friction_model"]) == ["yu2017", "skf2004", "ehl_per_contact"]
     assert _items(fmus["ServoController"]) == {"mode": {"position": 1, "speed": 2}}
     actuator = _items(fmus["ActuatorStiffness"])
-    assert set(actuator) == {f"support_{c}" for c in choices - {"lubrication"}} | {
-        "temperature_mode"
-    }
+    assert set(actuator) == {
+        f"support_{c}" for c in choices - {"lubrication", "friction_model"}
+    } | {"temperature_mode"}
     for path in fmus.values():  # no String variable is left
         if path.suffix == ".fmu":
             xml = read_member(path, "modelDescription.xml")

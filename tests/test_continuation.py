@@ -25,6 +25,7 @@ from servofmu.physics.bearing import (
 )
 from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
 from servofmu.physics.friction import ball_torque_terms
+from servofmu.physics.grease_torque import GreaseTorqueTerm
 from servofmu.physics.hertz import curvature_difference_of_ellipticity, ellipticity
 
 REL = 1e-9
@@ -102,6 +103,79 @@ def test_axial_trajectory_equals_the_exact_path(name):
         assert {"overloaded", "unloaded"} <= seen
     if name == "yu_tight":
         assert "locked" in seen
+
+
+def _with_model(pair, model, grease=None):
+    """``pair`` with friction model ``model`` (its catalogue numbers) and a grease term."""
+    fm = dataclasses.replace(pair.friction, model=model, grease=grease)
+    return dataclasses.replace(pair, friction=fm)
+
+
+#: A grease term of the size G-1074's datasheet point gives (f0 ≈ 50, ks ≈ 2 at 1 r/min).
+GREASE = GreaseTorqueTerm(f0=50.0, starting_ratio=2.0, reference_speed=2 * math.pi / 60)
+
+
+@pytest.mark.parametrize("model", ["skf2004", "ehl_per_contact"])
+@pytest.mark.parametrize("name", ["yu_stated", "yu_yoke", "ning_solid"])
+def test_axial_trajectory_of_each_friction_model_equals_the_exact_path(name, model):
+    # the same random trajectory as the yu2017 test above (through preload loss, overload,
+    # the cold), every friction model's outputs against the exact vectorised path; the grease
+    # term on for the greased pairs
+    pair = PAIRS[name]()
+    grease = GREASE if pair.lubrication == "grease" else None
+    pair = _with_model(pair, model, grease)
+    model_ = BearingModel(pair)
+    t, fa, _, w = _trajectory(1, 100, radial=False)
+    flags = None
+    for i in range(len(t)):
+        out = model_.evaluate(float(t[i]), float(w[i]), float(fa[i]))
+        now = {f for f in FLAGS if getattr(out, f)}
+        if i % 5 == 0 or now != flags:
+            exact = operating_outputs(pair, float(t[i]), float(w[i]), float(fa[i]))
+            assert_equal_outputs(out, exact, f"step {i}")
+        flags = now
+    assert model_.exact_steps <= 0.1 * len(t)
+    if grease is not None:
+        assert out.grease_torque > 0.0
+    if model == "skf2004":
+        assert out.hysteresis_torque == out.spin_torque == 0.0 < out.sliding_torque
+
+
+@pytest.mark.parametrize("model", ["skf2004", "ehl_per_contact"])
+def test_radial_trajectory_of_each_friction_model_equals_the_exact_path(model):
+    pair = _with_model(PAIRS["yu_printed"](), model, GREASE)
+    model_ = BearingModel(pair)
+    t, fa, fr, w = _trajectory(2, 16, radial=True)
+    fr = fr + 1.0
+    for i in range(len(t)):
+        args = (float(t[i]), float(w[i]), float(fa[i]), float(fr[i]))
+        assert_equal_outputs(model_.evaluate(*args), operating_outputs(pair, *args), f"step {i}")
+    assert model_.exact_steps <= 2
+
+
+@pytest.mark.parametrize("model", ["skf2004", "ehl_per_contact"])
+def test_speed_alone_and_a_restored_state_give_the_same_numbers(model):
+    # the FMU's speed-only path (speed_outputs on the kept state) and a state restored from
+    # JSON (the EHL terms and SKF loads are floats in it) give evaluate's numbers bit for bit
+    pair = _with_model(PAIRS["yu_yoke"](), model, GREASE)
+    a = BearingModel(pair)
+    a.evaluate(243.15, 0.1, 4.0, 2.0)
+    for w in (0.0, -0.05, 0.3):
+        out = a.evaluate(243.15, w, 4.0, 2.0)
+        fast = a.speed_outputs(w)
+        assert fast == (
+            out.friction_torque,
+            out.running_torque,
+            out.sliding_torque,
+            out.viscous_torque,
+            out.grease_torque,
+            out.power_loss,
+        )
+    saved = json.loads(json.dumps(a.state()))
+    b = BearingModel(pair)
+    b.restore(saved)
+    assert b.evaluate(243.15, 0.3, 4.0, 2.0) == a.evaluate(243.15, 0.3, 4.0, 2.0)
+    assert b.evaluate(243.5, 0.2, 4.5, 2.1) == a.evaluate(243.5, 0.2, 4.5, 2.1)
 
 
 @pytest.mark.parametrize("name", ["yu_printed", "ning_solid"])

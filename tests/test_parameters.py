@@ -110,6 +110,12 @@ def test_resolve_applies_presets_first_then_numbers():
             {"lubricant_viscosity_100": 40e-6},
             "lubricant_viscosity_100 = 4e-05 m2/s must be below lubricant_viscosity_40",
         ),
+        (  # found by the FMI fuzzing: the message named Walther's nu2, not the parameter
+            {"lubricant_viscosity_100": 1e-8},
+            "lubricant_viscosity_100 = 1e-08 m2/s with lubricant_walther_c",
+        ),
+        ({"grease_f0": 5.0, "lubrication": "solid"}, "grease_f0 = 5.0 (a grease term) needs"),
+        ({"friction_model": "palmgren"}, "friction_model = 'palmgren' is not one of"),
         ({"preload_method": "spring"}, "preload_method = spring needs spring_stiffness > 0"),
         ({"preload_method": "force"}, "preload_method = force needs assembly_preload > 0 N"),
         ({"housing_outer_diameter": 20e-3}, "housing_outer_diameter = 0.02 m must exceed"),

@@ -23,6 +23,7 @@ def examples():
         "stiffness_breakdown(": "actuator",
         "run(": "harness",
         "tn.network(": "thermal",
+        'friction_model="skf2004"': "friction",
     }
     out = {}
     for code in blocks:
@@ -114,3 +115,17 @@ def test_harness_example_obeys_newtons_law(examples):
     assert np.max(np.abs(balance[turning])) < 0.01 * np.max(p["torque_constant"] * i[turning])
     # colder grease, larger friction: −40 °C at the start against −20 °C at the end
     assert friction[t < 0.2].mean() > 1.5 * friction[-10:].mean()
+
+
+def test_friction_model_example_adds_up(examples):
+    # SKF: running = rolling + sliding (no per-contact terms), starting = Msl at rest; EHL with
+    # the grease term: running = hysteresis + spin + rolling + grease
+    ns = examples["friction"]
+    out, cold = ns["out"], ns["cold"]
+    assert out.hysteresis_torque == out.spin_torque == 0.0
+    assert out.running_torque == pytest.approx(out.viscous_torque + out.sliding_torque, rel=1e-12)
+    assert 0.0 < out.breakaway_torque < out.running_torque
+    parts = cold.hysteresis_torque + cold.spin_torque + cold.sliding_torque
+    parts += cold.viscous_torque + cold.grease_torque
+    assert cold.running_torque == pytest.approx(parts, rel=1e-12)
+    assert f"{cold.viscous_torque} {cold.grease_torque}" in ns["__printed__"]

@@ -81,7 +81,7 @@ def test_friction_vs_temperature_electrical_method_matches_the_model(results):
 def test_friction_vs_temperature_compares_the_mountings(results):
     """The main job's side-by-side table: what the frame's design does to the gimbal."""
     res = results["friction_vs_temperature"]
-    (table,) = res.tables
+    table = res.tables[0]
     assert (res.files[0].parent / "mountings.csv").exists()
 
     def at(mounting, temp):
@@ -264,3 +264,50 @@ def test_chamber_loops_read_the_same_torque_as_the_millisecond_gimbal(fmus):
         assert res["motor.speed"][-1] == pytest.approx(gimbal["motor.speed"][-1], rel=1e-6)
         # the bearing's loss (0.55 mW at −40 °C) warms the parts a little: 6e-6 less torque
         assert res["motor.current"][-1] == pytest.approx(gimbal["motor.current"][-1], rel=2e-5)
+
+
+def test_each_friction_model_at_minus_40_in_the_co_simulation(results):
+    """Issue 17: the gimbal's −40 °C torque of every friction model, beside Yu's 3.17 N·mm,
+    measured by the electrical method in the co-simulation (the harness computes no physics)."""
+    res = results["friction_vs_temperature"]
+    table = res.tables[1]
+    assert (res.files[0].parent / "friction_models.csv").exists()
+    rows = {(r["friction model"], r["grease term"] != "none"): r for r in table.rows}
+    assert set(rows) == {(m, g) for m in ("yu2017", "skf2004", "ehl_per_contact")
+                         for g in (False, True)}  # fmt: skip
+    for r in table.rows:
+        assert r["Yu 2017 [N.mm]"] == 3.17
+        # k_t·i at steady state is the bearing's running torque (+ b·ω of the motor)
+        assert r["k_t*i [N.mm]"] == pytest.approx(r["running [N.mm]"], rel=0.01)
+    # the default model's row is the main table's −40 °C forward point
+    (main,) = [r for r in res.rows if r["temperature [degC]"] == -40.0
+               and r["direction"] == "forward"]  # fmt: skip
+    assert rows["yu2017", False]["k_t*i [N.mm]"] == pytest.approx(
+        main["measured k_t*i [N.mm]"], rel=1e-3
+    )
+    # the models differ; without grease the SKF and EHL predictions lie within 0.5–10× Yu's
+    for m in ("skf2004", "ehl_per_contact"):
+        assert rows[m, False]["running [N.mm]"] != pytest.approx(
+            rows["yu2017", False]["running [N.mm]"], rel=0.01
+        )
+        assert 0.5 * 3.17 < rows[m, False]["k_t*i [N.mm]"] < 10 * 3.17
+    # the grease term adds its running torque and a larger starting one
+    for m in ("yu2017", "skf2004", "ehl_per_contact"):
+        with_g, without = rows[m, True], rows[m, False]
+        assert with_g["grease [N.mm]"] > 0.0 == without["grease [N.mm]"]
+        assert with_g["breakaway [N.mm]"] > with_g["running [N.mm]"]
+
+
+def test_space_bearing_friction_models_at_minus_40(results):
+    res = results["thermal_cycle"]
+    (table,) = res.tables
+    rows = {r["friction model"]: r for r in table.rows}
+    assert set(rows) == {"yu2017", "skf2004", "ehl_per_contact"}
+    for r in table.rows:
+        assert r["k_t*i [N.mm]"] == pytest.approx(r["running [N.mm]"], rel=0.02)
+    # a dry film: no fluid, so the contacts' EHL model is Yu's (Ning's) to the digit
+    assert rows["ehl_per_contact"]["running [N.mm]"] == rows["yu2017"]["running [N.mm]"]
+    # SKF at rest and running: only its sliding term (ν = 0), starting = running
+    assert rows["skf2004"]["breakaway [N.mm]"] == pytest.approx(
+        rows["skf2004"]["running [N.mm]"], rel=1e-6
+    )

@@ -251,7 +251,69 @@ def _mounting_for(bearing: str) -> str:
     )
 
 
+def _calibrate_datasheet(args) -> int:
+    """``servofmu calibrate --datasheet LUBRICANT``: the grease term on a datasheet's
+    low-temperature torque (calibration/datasheet.py)."""
+    from .calibration import write_ssv
+    from .calibration.datasheet import GREASE_PARAMETERS, calibrate_datasheet, to_text
+
+    other = [
+        f"--{n.replace('_', '-')}"
+        for n in ("data", "bearing", "mounting", "lubricant", "fit", "speed")
+        if getattr(args, n)
+    ] + (["--set"] if args.set else [])
+    if other:
+        raise ValueError(
+            f"--datasheet fits the grease term on the datasheet's own test bearing: "
+            f"{', '.join(other)} do not apply (bind the written set on your bearing's)"
+        )
+    cal = calibrate_datasheet(args.datasheet, args.test)
+    out = Path(args.out or f"out/calibration/datasheet_{args.datasheet}")
+    out.mkdir(parents=True, exist_ok=True)
+    ssv = out / "calibrated.ssv"
+    files = [out / "report.txt"]
+    if cal.poor and not args.allow_poor_fit:
+        ssv.unlink(missing_ok=True)
+    else:
+        comment = (
+            f"grease term of {cal.lubricant} calibrated on its {cal.test} datasheet torque "
+            f"(servofmu calibrate --datasheet {cal.lubricant}), with its base oil"
+        )
+        files.append(
+            write_ssv(
+                cal.parameters, ssv, component=args.component, only=GREASE_PARAMETERS,
+                comment=comment,
+            )
+        )  # fmt: skip
+    text = to_text(cal)
+    (out / "report.txt").write_text(text + "\n")
+    if args.json:
+        import json
+
+        print(json.dumps(cal.as_dict(), indent=2))
+    else:
+        print(text)
+        print("\n".join(f"file: {f}" for f in files))
+    if cal.poor:
+        if not args.allow_poor_fit:
+            print(
+                f"servofmu: calibration failed: {cal.problems[0]}; no calibrated.ssv written "
+                f"(report in {out / 'report.txt'}; --allow-poor-fit writes it anyway)",
+                file=sys.stderr,
+            )
+            return 1
+        print(f"servofmu: warning: poor fit accepted (--allow-poor-fit): {cal.problems[0]}",
+              file=sys.stderr)  # fmt: skip
+    return 0
+
+
 def _calibrate(args) -> int:
+    if args.datasheet:
+        return _calibrate_datasheet(args)
+    if args.test:
+        raise ValueError("--test names the datasheet test of --datasheet")
+    if not args.data:
+        raise ValueError("name DATA.csv of measured friction torque, or --datasheet LUBRICANT")
     from .calibration import (
         UNKNOWNS,
         calibrate,
@@ -626,9 +688,23 @@ def build_parser() -> argparse.ArgumentParser:
         "friction torque versus temperature. DATA.csv has a header naming each column with "
         "its unit: 'temperature [degC]' or '[K]', 'torque [N.mm]' or '[N.m]', optionally "
         "'speed [deg/s]', '[rad/s]' or '[rpm]' and 'direction' (forward/reverse); '#' lines "
-        "are comments.",
+        "are comments. Or, with --datasheet LUBRICANT, calibrate the grease term (grease_f0, "
+        "grease_starting_ratio) on the grease's published low-temperature torque test "
+        "(physics/data/grease_torques.toml).",
     )
-    c.add_argument("data", help="CSV file of measured friction torque")
+    c.add_argument("data", nargs="?", help="CSV file of measured friction torque")
+    c.add_argument(
+        "--datasheet",
+        metavar="LUBRICANT",
+        help="calibrate the grease term on this grease's datasheet low-temperature torque "
+        "(ASTM D1478 / JIS K 2220 points of physics/data/grease_torques.toml) instead of DATA",
+    )
+    c.add_argument(
+        "--test",
+        metavar="KEY",
+        help="with --datasheet: the test whose points to use (jis_k2220, astm_d1478) when the "
+        "grease has points of several",
+    )
     c.add_argument(
         "--bearing", help="bearing designation (default: the mounting's; 71803 without one)"
     )

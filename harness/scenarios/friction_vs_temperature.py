@@ -6,6 +6,12 @@ running torque (the BearingFriction output at that speed).
 One run of the seeker_gimbal system with the chamber temperature and the speed reference as
 stepped signals, as in a climatic-chamber test. k_t·i also carries the motor's own viscous
 damping b·ω (0.0017 N·mm at 10 °/s), which the electrical method cannot separate either.
+
+A further table sets each friction model of BearingFriction (``friction_model``) in the same
+system at −40 °C, without and with the grease term of Molykote G-1074 (variant
+``grease_g1074``: f0 and ks calibrated on the grease's JIS K 2220 −40 °C datasheet point by
+``servofmu calibrate --datasheet``, with its base oil), next to Yu's 3.17 N·mm: every number
+from the co-simulation (k_t·i) or from BearingFriction's outputs.
 """
 
 from __future__ import annotations
@@ -32,6 +38,17 @@ MOUNTINGS = {
 }
 #: Yu 2017's measured (Fig 9) and computed (Fig 8) total friction torque at −40 °C [N·mm].
 YU_M40 = 3.17
+#: BearingFriction's friction models and what in each was calibrated (what its −40 °C value is).
+FRICTION_MODELS = {
+    "yu2017": "s0 and μ calibrated on Yu's −40 °C values, in the yoke chosen knowing them: "
+    "consistent with Yu, not a prediction",
+    "skf2004": "SKF 2004 with catalogue constants (the 72 B series as labelled fallback for the "
+    "718 series) and μbl = 0.15: a prediction",
+    "ehl_per_contact": "contact EHL rolling (Biboulet & Houpert, literature constants; Krytox "
+    "density assumed) + Yu's hysteresis (α_r assumed) and spin (μ calibrated on Yu)",
+}
+#: The variant with the grease term of Molykote G-1074 (ssp/seeker_gimbal/variants).
+GREASE_VARIANT = "grease_g1074"
 
 
 def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
@@ -44,6 +61,7 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
             label: _electrical_method(system, variant, plateau, out if variant is None else None)
             for label, variant in MOUNTINGS.items()
         }
+        models = _model_table(system, kt, plateau)
     finally:
         system.close()
     res = runs["yoke (default)"]
@@ -66,11 +84,22 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
             "−40 °C value is consistent with Yu, not a prediction; the other mountings use the "
             "same coefficients.",
         ],
-        tables=[_mounting_table(runs, kt, plateau)],
+        tables=[_mounting_table(runs, kt, plateau), models],
+    )
+    result.notes.append(
+        "friction models: the default yoke at −40 °C and +10 °/s, BearingFriction's "
+        "friction_model set in the system, without and with the grease term of Molykote "
+        f"G-1074 (variant {GREASE_VARIANT}: f0 and ks calibrated on its JIS K 2220 −40 °C "
+        "datasheet point on a full 6204, carried to the 71803 by Palmgren's dm³ and the base "
+        "oil's ν(T); as if the gimbal were packed full of it). Calibrated: "
+        + "; ".join(f"{m}: {what}" for m, what in FRICTION_MODELS.items())
     )
     result.write_table(out / "friction_vs_temperature.csv")
     result.write_table(out / "mountings.csv", result.tables[0])
-    result.files.append(_plot(rows, result.tables[0], out / "friction_vs_temperature.png"))
+    result.write_table(out / "friction_models.csv", result.tables[1])
+    result.files.append(
+        _plot(rows, result.tables[0], result.tables[1], out / "friction_vs_temperature.png")
+    )
     return result
 
 
@@ -95,6 +124,53 @@ def _electrical_method(system, variant, plateau, out):
             "bearing.temperature",
         ],
         out_dir=out,
+    )
+
+
+_MODEL_OUTPUTS = ("running_torque", "breakaway_torque", "viscous_torque", "grease_torque")
+
+
+def _model_table(system, kt, plateau) -> Table:
+    """Each friction model at −40 °C, forward at +10 °/s, without and with the grease term:
+    k_t·i and BearingFriction's running, breakaway, viscous and grease torques at steady
+    state (one run of half a plateau each)."""
+    cold = celsius_to_kelvin(TEMPS_C[0])
+    rows = []
+    for grease in (False, True):
+        for model in FRICTION_MODELS:
+            variant = [GREASE_VARIANT] if grease else []
+            res = run_system(
+                system,
+                parameters=[*variant, {"bearing.friction_model": model}],
+                signals={
+                    "bearing.temperature": Steps((0.0,), (cold,)),
+                    "controller.reference": Steps((0.0,), (SPEED,)),
+                },
+                stop=plateau / 2,
+                record=["motor.current", *(f"bearing.{n}" for n in _MODEL_OUTPUTS)],
+            )
+            t, end = res["time"], plateau / 2 + 1e-9
+
+            def mean(name, res=res, t=t, end=end):
+                return plateau_mean(t, res[name], 0.0, end) / NMM
+
+            rows.append(
+                {
+                    "friction model": model,
+                    "grease term": "G-1074 (calibrated)" if grease else "none",
+                    "k_t*i [N.mm]": kt * mean("motor.current"),
+                    "running [N.mm]": mean("bearing.running_torque"),
+                    "breakaway [N.mm]": mean("bearing.breakaway_torque"),
+                    "viscous/rolling [N.mm]": mean("bearing.viscous_torque"),
+                    "grease [N.mm]": mean("bearing.grease_torque"),
+                    "Yu 2017 [N.mm]": YU_M40,
+                }
+            )
+    return Table(
+        f"Friction models at {TEMPS_C[0]:g} °C (default yoke, +{SPEED / DEG:g} °/s) next to Yu "
+        f"2017's {YU_M40} N·mm; grease term: Molykote G-1074 calibrated on its datasheet",
+        list(rows[0]),
+        rows,
     )
 
 
@@ -157,13 +233,13 @@ def _mounting_table(runs, kt, plateau) -> Table:
     )
 
 
-def _plot(rows, mountings: Table, path: Path) -> Path:
+def _plot(rows, mountings: Table, models: Table, path: Path) -> Path:
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=110)
+    fig, ax = plt.subplots(figsize=(9.6, 4.6), dpi=110)
     for direction, marker in (("forward", "o"), ("reverse", "s")):
         sel = [r for r in rows if r["direction"] == direction]
         ax.semilogy(
@@ -190,6 +266,14 @@ def _plot(rows, mountings: Table, path: Path) -> Path:
             label=f"k_t·i, {label}",
         )
     ax.plot([-40.0], [YU_M40], "r*", ms=10, label=f"Yu 2017: {YU_M40} N·mm at −40 °C")
+    for r, marker in zip(models.rows, ("x", "+", "1", "x", "+", "1"), strict=True):
+        if r["friction model"] == "yu2017" and r["grease term"] == "none":
+            continue  # the default model: the black line
+        grease = ", G-1074 grease" if r["grease term"] != "none" else ""
+        ax.plot(
+            [-40.0], [r["k_t*i [N.mm]"]], marker, ms=9, mew=1.5,
+            label=f"k_t·i, {r['friction model']}{grease} (yoke)",
+        )  # fmt: skip
     from matplotlib.ticker import FormatStrFormatter, FuncFormatter
 
     ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))  # 0.1, 1, 10 [N·mm]
@@ -200,10 +284,12 @@ def _plot(rows, mountings: Table, path: Path) -> Path:
     ax.set_xlabel("chamber temperature [°C]")
     ax.set_ylabel("friction torque [N·mm]")
     ax.set_title(
-        "Seeker gimbal: electrical method in the co-simulation, four mountings", fontsize=10
+        "Seeker gimbal: electrical method in the co-simulation, four mountings; friction "
+        "models at −40 °C",
+        fontsize=10,
     )
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     fig.tight_layout()
     fig.savefig(path)
     plt.close(fig)

@@ -9,6 +9,9 @@ rings, shaft and housing), so the cycle's duration only has to be long against t
 loop's settling; one cycle of 60 s (20 s coarse) stands for the hours of a chamber cycle, and
 the two branches coincide. A measured hysteresis between them would be thermal lag, which this
 model does not have.
+
+A further table sets each friction model of BearingFriction (``friction_model``) in the same
+system at −40 °C (every number from the co-simulation or BearingFriction's outputs).
 """
 
 from __future__ import annotations
@@ -21,11 +24,22 @@ from servofmu.physics.units import NMM, UM, celsius_to_kelvin
 
 from .. import load_system
 from .. import run as run_system
-from ..signals import Cycle
-from .common import ScenarioResult, system_path
+from ..signals import Cycle, Steps
+from .common import ScenarioResult, Table, plateau_mean, system_path
 
 LOW_C, HIGH_C = -60.0, 80.0  # °C, the alternating-temperature range
 TABLE_C = tuple(range(-60, 81, 20))  # °C, rows of the table on each branch
+MODELS_C = -40.0  # °C of the friction-model table
+#: BearingFriction's friction models, and what each is for Ning's dry MoS2 film.
+FRICTION_MODELS = {
+    "yu2017": "Ning's hysteresis, sliding and inner-race spin (α_r and μ assumed): no fluid, "
+    "no viscous term",
+    "skf2004": "SKF 2004 with catalogue constants (72 B fallback) and its boundary μbl = 0.15 "
+    "for lubricated contacts: a dry film is outside the model (no oil, no rolling term)",
+    "ehl_per_contact": "as yu2017: no fluid, so no hydrodynamic rolling torque",
+}
+#: Yu 2017's measured −40 °C torque of the gimbal's 71803 pair [N·mm]: another bearing, for scale.
+YU_M40 = 3.17
 
 
 def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
@@ -65,6 +79,7 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
             ],
             out_dir=out,
         )
+        models = _model_table(system, kt)
     finally:
         system.close()
     t = res["time"]
@@ -122,9 +137,16 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
             "measured: k_t·i of the DCMotor (includes its viscous damping b·ω and the "
             "acceleration torque of the speed loop); model: BearingFriction running torque. "
             "Rows are interpolated on each branch at the listed temperatures.",
+            f"friction models: the system held at {MODELS_C:g} °C, BearingFriction's "
+            "friction_model set in it; "
+            + "; ".join(f"{m}: {what}" for m, what in FRICTION_MODELS.items())
+            + f". Yu 2017's {YU_M40} N·mm is the gimbal's 71803 pair, not this bearing: a "
+            "scale, not a reference.",
         ],
+        tables=[models],
     )
     result.write_table(out / "thermal_cycle.csv")
+    result.write_table(out / "friction_models.csv", models)
     result.files.append(
         res.plot(
             out / "thermal_cycle.png",
@@ -139,3 +161,34 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
         )
     )
     return result
+
+
+def _model_table(system, kt) -> Table:
+    """Each friction model with the system held at :data:`MODELS_C`: k_t·i and BearingFriction's
+    running and breakaway torque at steady state (2 s each)."""
+    stop = 2.0
+    rows = []
+    for model in FRICTION_MODELS:
+        res = run_system(
+            system,
+            parameters=[{"bearing.friction_model": model}],
+            signals={"bearing.temperature": Steps((0.0,), (celsius_to_kelvin(MODELS_C),))},
+            stop=stop,
+            record=["motor.current", "bearing.running_torque", "bearing.breakaway_torque"],
+        )
+        t, end = res["time"], stop + 1e-9
+        rows.append(
+            {
+                "friction model": model,
+                "k_t*i [N.mm]": kt * plateau_mean(t, res["motor.current"], 0.0, end) / NMM,
+                "running [N.mm]": plateau_mean(t, res["bearing.running_torque"], 0.0, end) / NMM,
+                "breakaway [N.mm]": plateau_mean(t, res["bearing.breakaway_torque"], 0.0, end)
+                / NMM,
+                "Yu 2017, gimbal 71803 (scale) [N.mm]": YU_M40,
+            }
+        )
+    return Table(
+        f"Friction models at {MODELS_C:g} °C, 10 rpm (Ning's 71807C pair, MoS2 film)",
+        list(rows[0]),
+        rows,
+    )

@@ -14,6 +14,16 @@ FMU was built with are in ``resources/presets/`` as SSP parameter sets. An incon
 geometry that cannot be a bearing, ν100 ≥ ν40, a spring preload without a stiffness, …) is
 refused at fmi2ExitInitializationMode with a logged error naming the values, and every step is
 discarded until it is fixed.
+
+``friction_model`` chooses the torque (:mod:`servofmu.physics.friction_models`): ``yu2017``
+(default: Yu's hysteresis and spin per contact + Palmgren's viscous term), ``skf2004`` (the SKF
+model per bearing with its own axial and radial load; ``skf_*`` its series constants and
+coefficients) or ``ehl_per_contact`` (the hydrodynamic rolling torque of every ball-race
+contact, Biboulet & Houpert 2010, with ``lubricant_density``, + Yu's hysteresis and spin).
+``viscous_torque`` is the chosen model's rolling/viscous part; ``grease_torque`` the grease
+term (``grease_f0``, ``grease_starting_ratio``, ``grease_reference_speed``; 0 = off) that
+adds to running and breakaway torque. running_torque = hysteresis + spin + sliding + viscous +
+grease.
 """
 
 from __future__ import annotations
@@ -33,9 +43,17 @@ _TEMPS = TEMPERATURE_INPUTS
 _ALL = (*_TEMPS, "speed", "axial_load", "radial_load")
 _LOADS = (*_TEMPS, "axial_load", "radial_load")
 _STATE = ("fit", "loop")  # parameter groups that fix the thermal and load state
-_TORQUE = (*_STATE, "lubrication", "hysteresis", "sliding", "viscous")  # Coulomb + viscous
+_MODEL = ("friction_model", "skf", "density")  # the friction model and its numbers
+_TORQUE = (*_STATE, "lubrication", "hysteresis", "sliding", "viscous", *_MODEL, "grease")
 #: What BearingModel.speed_outputs returns, in its order: the outputs that move with speed.
-_SPEED_FIELDS = ("friction_torque", "running_torque", "viscous_torque", "power_loss")
+_SPEED_FIELDS = (
+    "friction_torque",
+    "running_torque",
+    "sliding_torque",
+    "viscous_torque",
+    "grease_torque",
+    "power_loss",
+)
 
 
 def _out(name, description, unit, display=None, *, depends=_LOADS, groups=_STATE, **kw):
@@ -69,13 +87,18 @@ class BearingFriction(ServoSlave):
 
     description = (
         "Friction torque of a preloaded pair of angular-contact ball bearings in a frame, with "
-        "the thermal coupling of frame, shaft and bearings (Yu 2017; Ning)"
+        "the thermal coupling of frame, shaft and bearings (Yu 2017; Ning); friction model "
+        "yu2017, skf2004 or ehl_per_contact, and a grease term for the cold"
     )
     FEEDTHROUGH = True
     DEFAULT_EXPERIMENT = (0.0, 1.0, 1.0e-3)
     PHYSICS = (
         "servofmu.physics.bearing",
         "servofmu.physics.friction",
+        "servofmu.physics.friction_models",
+        "servofmu.physics.rolling_friction",
+        "servofmu.physics.ehl_rolling",
+        "servofmu.physics.grease_torque",
         "servofmu.physics.fits",
         "servofmu.physics.preload",
         "servofmu.physics.equilibrium",
@@ -126,7 +149,7 @@ class BearingFriction(ServoSlave):
             "N.m",
             "N.mm",
             depends=_ALL,
-            groups=(*_TORQUE, "lubricant", "breakaway", "regularisation"),
+            groups=(*_TORQUE, "lubricant", "breakaway", "grease_start", "regularisation"),
         ),
         _out(
             "running_torque",
@@ -141,36 +164,46 @@ class BearingFriction(ServoSlave):
             "Breakaway (starting) torque",
             "N.m",
             "N.mm",
-            groups=(*_TORQUE, "breakaway"),
+            groups=(*_TORQUE, "lubricant", "breakaway", "grease_start"),
         ),
         _out(
             "hysteresis_torque",
-            "Elastic hysteresis torque (Yu eq 1-3)",
+            "Elastic hysteresis torque (Yu eq 1-3; 0 under skf2004)",
             "N.m",
             "N.mm",
-            groups=(*_STATE, "hysteresis"),
+            groups=(*_STATE, "hysteresis", "friction_model"),
         ),
         _out(
             "spin_torque",
-            "Ball spin torque (Yu eq 5-7; Ning inner-race spin)",
+            "Ball spin torque (Yu eq 5-7; Ning inner-race spin; 0 under skf2004)",
             "N.m",
             "N.mm",
-            groups=(*_STATE, "lubrication", "sliding"),
+            groups=(*_STATE, "lubrication", "sliding", "friction_model"),
         ),
         _out(
             "sliding_torque",
-            "Differential (Heathcote) sliding torque (Ning)",
+            "Sliding torque: differential (Heathcote) sliding (Ning); SKF's Msl under skf2004",
             "N.m",
             "N.mm",
-            groups=(*_STATE, "lubrication", "sliding"),
+            depends=_ALL,
+            groups=(*_STATE, "lubrication", "lubricant", "sliding", "friction_model", "skf"),
         ),
         _out(
             "viscous_torque",
-            "Palmgren viscous torque (Yu eq 8)",
+            "Rolling/viscous torque of the friction model: Palmgren (yu2017, Yu eq 8), "
+            "φish·φrs·Mrr (skf2004) or the contacts' EHL rolling torque (ehl_per_contact)",
+            "N.m",
+            "N.mm",
+            depends=_ALL,
+            groups=(*_STATE, "lubrication", "lubricant", "viscous", *_MODEL),
+        ),
+        _out(
+            "grease_torque",
+            "Running torque of the grease term (grease_f0; 0: off), part of running_torque",
             "N.m",
             "N.mm",
             depends=(*_TEMPS, "speed"),
-            groups=("fit", "lubrication", "lubricant", "viscous"),
+            groups=("fit", "lubrication", "lubricant", "grease"),
         ),
         _out("preload", "Axial force in the preload loop", "N"),
         _out("contact_angle", "Operating contact angle of bearing A", "rad", "deg"),
@@ -196,7 +229,7 @@ class BearingFriction(ServoSlave):
             "Power dissipated by friction",
             "W",
             depends=_ALL,
-            groups=(*_TORQUE, "lubricant", "breakaway", "regularisation"),
+            groups=(*_TORQUE, "lubricant", "breakaway", "grease_start", "regularisation"),
         ),
         _out("max_contact_pressure", "Largest Hertz contact pressure", "Pa", "MPa"),
         _out(

@@ -75,6 +75,7 @@ UNITS: dict[str, tuple[dict[str, int], tuple[tuple[str, float, float], ...]]] = 
     "W/K": ({"kg": 1, "m": 2, "s": -3, "K": -1}, ()),
     "W/(m2.K)": ({"kg": 1, "s": -3, "K": -1}, ()),
     "1/K": ({"K": -1}, ()),
+    "kg/m3": ({"kg": 1, "m": -3}, (("g/cm3", 1.0e-3, 0.0),)),
     "1": ({}, ()),
 }
 
@@ -448,7 +449,7 @@ class ServoSlave(Fmi2Slave):
             return False
         try:
             self.compute()
-        except (ValueError, ArithmeticError) as exc:
+        except Exception as exc:  # an output getter calls this: no exception may leave it
             self._error = f"{type(exc).__name__}: {exc}"
             return False
         self._error = ""

@@ -240,15 +240,16 @@ class BearingModel:
             raise ValueError(f"speed = {speed!r} rad/s is outside the valid range (-inf, inf)")
         return point.outputs(self.pair, float(speed))
 
-    def speed_outputs(self, speed: float) -> tuple[float, float, float, float]:
-        """(friction_torque [N·m], running_torque [N·m], viscous_torque [N·m], power_loss [W])
-        at ``speed`` [rad/s] for the state of the last :meth:`evaluate` call: the per-step path
-        when only the speed changed (the same equations, so the same numbers as evaluate)."""
+    def speed_outputs(self, speed: float) -> tuple[float, float, float, float, float, float]:
+        """(friction_torque, running_torque, sliding_torque, viscous_torque, grease_torque
+        [N·m], power_loss [W]) at ``speed`` [rad/s] for the state of the last :meth:`evaluate`
+        call: the per-step path when only the speed changed (the same equations, so the same
+        numbers as evaluate)."""
         if not math.isfinite(speed):
             raise ValueError(f"speed = {speed!r} rad/s is outside the valid range (-inf, inf)")
         w = float(speed)
-        signed, running, viscous = self._point.speed_terms(self.pair, w)
-        return signed, running, viscous, signed * w
+        signed, running, sliding, viscous, grease = self._point.speed_terms(self.pair, w)
+        return signed, running, sliding, viscous, grease, signed * w
 
     # ---------------------------------------------------------------- exact
     def thermal(self, temperature) -> ThermalState:

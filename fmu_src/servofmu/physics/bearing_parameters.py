@@ -24,8 +24,8 @@ no defined order, and a preset choice that overrode numbers (or numbers that ove
 would silently depend on it.
 
 The choices that remain are structural: ``lubrication``, ``arrangement``, ``preload_method``,
-``loop_model`` and ``loop_reading``. One more choice is one more ``_choice`` entry of
-``parameter_table._table`` (and its use in :func:`pair_from_parameters`).
+``loop_model``, ``loop_reading`` and ``friction_model``. One more choice is one more
+``_choice`` entry of ``parameter_table._table`` (and its use in :func:`pair_from_parameters`).
 """
 
 from __future__ import annotations
@@ -36,7 +36,9 @@ from collections.abc import Mapping
 
 from .fits import RadialFit
 from .friction import FrictionCoefficients
+from .friction_models import FrictionModel
 from .geometry import BallBearing, bearing_geometry_problems
+from .grease_torque import GreaseTorqueTerm
 from .materials import Material
 from .mounting import Mounting
 from .pair import BearingPair
@@ -64,6 +66,7 @@ from .presets import (
     resolve,
     walther_c_si,
 )
+from .rolling_friction import SkfConstants
 from .units import CST
 from .viscosity import walther_from_reference
 
@@ -202,6 +205,13 @@ def parameter_problems(p: Mapping[str, object]) -> list[str]:
             f"lubricant_viscosity_100 = {nu100!r} m2/s must be below lubricant_viscosity_40 "
             f"= {nu40!r} m2/s (a lubricant thins on heating)"
         )
+    c = p["lubricant_walther_c"]
+    for name in ("lubricant_viscosity_40", "lubricant_viscosity_100"):
+        if p["lubrication"] == "grease" and not p[name] + c > CST:
+            found.append(
+                f"{name} = {p[name]!r} m2/s with lubricant_walther_c = {c!r} m2/s gives "
+                f"ν + c = {(p[name] + c) / CST:.4g} cSt; Walther's lg lg(ν + c) needs > 1 cSt"
+            )
     method = p["preload_method"]
     if method == "spring":
         for name, unit in (("spring_stiffness", "N/m"), ("spring_compression", "m")):
@@ -213,7 +223,38 @@ def parameter_problems(p: Mapping[str, object]) -> list[str]:
         )
     if p["loop_reading"] == "printed" and not (p["housing_length"] and p["shaft_length"]):
         found.append("loop_reading = printed needs a housing and a shaft member (lengths > 0)")
+    if p["grease_f0"] > 0 and p["lubrication"] != "grease":
+        found.append(
+            f"grease_f0 = {p['grease_f0']!r} (a grease term) needs lubrication = grease (the base "
+            f"oil's viscosity), not {p['lubrication']}"
+        )
     return found
+
+
+def friction_from_parameters(p: Mapping[str, object]) -> FrictionModel:
+    """The :class:`~.friction_models.FrictionModel` of the numbers ``friction_model``,
+    ``skf_*``, ``lubricant_density`` and ``grease_*`` of parameter set ``p`` (checked)."""
+    skf = SkfConstants(
+        key="parameters",
+        bearing_type="angular_contact",
+        **{f: p[f"skf_{f}"] for f in ("r1", "r2", "r3", "s1", "s2", "s3", "kz")},
+    )
+    grease = None
+    if p["grease_f0"] > 0:
+        grease = GreaseTorqueTerm(
+            f0=p["grease_f0"],
+            starting_ratio=p["grease_starting_ratio"],
+            reference_speed=p["grease_reference_speed"],
+        )
+    return FrictionModel(
+        model=p["friction_model"],
+        skf=skf,
+        skf_replenishment=p["skf_replenishment"],
+        skf_boundary_friction=p["skf_boundary_friction"],
+        skf_film_friction=p["skf_film_friction"],
+        lubricant_density=p["lubricant_density"],
+        grease=grease,
+    )
 
 
 def _material(name: str, p: Mapping, prefix: str, poisson: float | None = None) -> Material:
@@ -346,4 +387,5 @@ def pair_from_parameters(p: Mapping[str, object]) -> BearingPair:
         regularisation_speed=p["regularisation_speed"],
         stribeck_speed=p["stribeck_speed"],
         pressure_limit=p["pressure_limit"],
+        friction=friction_from_parameters(p),
     )

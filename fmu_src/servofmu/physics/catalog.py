@@ -316,6 +316,7 @@ def _lubricant_record(key: str, entry: dict) -> LubricantRecord:
         density=v.get("density"),
         density_temperature=v.get("density_temperature"),
         pour_point=v.get("pour_point"),
+        oil_class=entry.get("oil_class", ""),
         low_temperature_torque=torques,
         provenance=tuple(sorted(prov.items())),
     )

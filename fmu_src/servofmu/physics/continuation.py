@@ -67,7 +67,9 @@ import math
 
 from scipy.special import ellipe, ellipk
 
+from .ehl_rolling import contact_rolling_terms
 from .friction import _heathcote, _hysteresis, _spin
+from .friction_models import skf_loads
 from .hertz import ellipticity
 from .materials import reduced_compliance
 from .pair import assembly_geometry, effective_shim, loop_stiffness
@@ -192,6 +194,8 @@ class PairConstants:
         self.solid = pair.lubrication == "solid"
         self.sliding = bool(pair.sliding)
         self.pressure_limit = float(pair.pressure_limit)
+        self.friction_model = pair.friction.model
+        self.density = float(pair.friction.lubricant_density)
 
 
 class Thermal:
@@ -727,7 +731,9 @@ class PairSolver:
             if sol is None:
                 return None
             x, ka, kb, jac = sol
-            point, redo = self._point(th, x, ka, kb, axial_load == 0.0 and mode == "axial")
+            point, redo = self._point(
+                th, x, ka, kb, axial_load == 0.0 and mode == "axial", radial_load
+            )
             if not redo:
                 self._advance(x, inputs, jac)
                 return point
@@ -852,23 +858,33 @@ class PairSolver:
         s = dist + delta
         return (_sqrt(s * s - a * a) - a2_0) / cp
 
-    def _point(self, th: Thermal, x, ka: float, kb: float, symmetric: bool):
+    def _point(self, th: Thermal, x, ka: float, kb: float, symmetric: bool, radial_load: float):
         """The step's :class:`~.pair_state.PointState` from the balls' last evaluation
         (:func:`ring_sums`): torques [N·m], forces [N], the pair's stiffness [N/m], the
         load-weighted contact angle of A [rad], the largest pressure [Pa], flags; and whether
         an anchor moved so far that the step must be solved again. B mirrors A when
-        ``symmetric`` (its anchors follow A's)."""
+        ``symmetric`` (its anchors follow A's). The friction model's data
+        (:func:`~.pair_state.rolling_data`): the bearings' loads under ``skf2004``
+        (``radial_load`` [N] the external one), the contacts' EHL terms under
+        ``ehl_per_contact``."""
         c = self.c
         ring_a, ring_b = self.rings
-        sa = ring_sums(th, c, ring_a)
+        ehl = c.friction_model == "ehl_per_contact"
+        eta = th.kinematic_viscosity * c.density if ehl else None
+        sa = ring_sums(th, c, ring_a, eta)
         if symmetric:
             sb = sa
             for a, b in zip(ring_a, ring_b, strict=True):
                 if b.anc_i.k != a.anc_i.k or b.anc_o.k != a.anc_o.k:
                     b.anc_i, b.anc_o, b.base = a.anc_i.copy(), a.anc_o.copy(), None
         else:
-            sb = ring_sums(th, c, ring_b)
+            sb = ring_sums(th, c, ring_b, eta)
         fa, fb = sa[8], sb[8]
+        rolling = None
+        if ehl:
+            rolling = tuple(ta + tb for ta, tb in zip(sa[10], sb[10], strict=True))
+        elif c.friction_model == "skf2004":
+            rolling = skf_loads(fa, fb, radial_load)
         p_max = max(sa[5], sb[5])
         flags = state_flags(self.pair, th.clearance, p_max, fa, fb)
         if th.rest_torque is None:
@@ -888,14 +904,18 @@ class PairSolver:
             ),
             (flags["overloaded"], flags["locked"], flags["unloaded"]),
             th.rest_torque,
+            rolling,
         )
         return point, sa[9] or sb[9]
 
 
-def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
+def ring_sums(th: Thermal, c: PairConstants, balls, eta: float | None = None) -> tuple:
     """Weighted sums over one bearing's balls at their last evaluation: (hysteresis, spin,
     sliding, inner ring, outer ring torques [N·m], largest pressure [Pa], Σ w·Q [N],
-    Σ w·Q·α [N·rad], Fa [N], redo), with the Hertz constants from the balls' bases.
+    Σ w·Q·α [N·rad], Fa [N], redo, EHL terms), with the Hertz constants from the balls' bases.
+    With a dynamic viscosity ``eta`` [Pa·s] (``ehl_per_contact``), the EHL terms are those of
+    :func:`.ehl_rolling.contact_rolling_terms` of every loaded contact (inner, then outer, ball
+    by ball; the scale times the ball's weight) as five lists; else None.
 
     The torques are those of :func:`friction.ball_torque_terms` (Yu 2017 eq 1–3, 5–7; Ning)
     at the race radii (dm ∓ Dw·cos α)/2: each term is a product of powers of the load, the
@@ -914,6 +934,7 @@ def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
     solid = c.solid
     hyst = spin = slide = inner = outer = p_max = qsum = qalpha = fa = 0.0
     redo = False
+    ehl = None if eta is None else ([], [], [], [], [])
     for b in balls:
         q = b.load
         if q <= 0.0:
@@ -953,6 +974,18 @@ def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
         qsum += w * q
         qalpha += w * q * _atan2(sin_a, cos_a)
         fa += w * q * sin_a
+        if ehl is not None:
+            g = gs * cos_a
+            for a, k, e, inv_f, on_inner in (
+                (a_i, k_i, e_i, f_i, True),
+                (a_o, k_o, e_o, f_o, False),
+            ):
+                t = contact_rolling_terms(
+                    q, a * q3, k, e, g, dw, dm, inv_f, c.compliance, eta, on_inner
+                )
+                ehl[0].append(w * t[0])
+                for j in range(1, 5):
+                    ehl[j].append(t[j])
         anc_i, anc_o = b.anc_i, b.anc_o
         drift_i, drift_o = abs(k_i - anc_i.k), abs(k_o - anc_o.k)
         if drift_i > ANCHOR_DRIFT * anc_i.k or drift_o > ANCHOR_DRIFT * anc_o.k:
@@ -961,7 +994,7 @@ def ring_sums(th: Thermal, c: PairConstants, balls) -> tuple:
                     redo |= drift > ANCHOR_REDO * anc.k
                     anc.set(k)
             b.base = None
-    return hyst, spin, slide, inner, outer, p_max, qsum, qalpha, fa, redo
+    return hyst, spin, slide, inner, outer, p_max, qsum, qalpha, fa, redo, ehl
 
 
 def torque_coefficients(th: Thermal, c: PairConstants) -> tuple:

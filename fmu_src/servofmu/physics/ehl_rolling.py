@@ -31,6 +31,8 @@ there is no inconsistency, only two parameterisations. This module follows the o
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ._checks import check_finite, check_nonnegative, check_positive, check_range
@@ -148,17 +150,101 @@ def hydrodynamic_rolling_force(
     rho = 1.0 / rx + 1.0 / rz
     c = contact_constants(rho, (1.0 / rx - 1.0 / rz) / rho, 2.0 / e_red)
     a = c.semi_axes(w)[0]
-    kappa = 1.0 / c.ellipticity  # b/a
-    beta = 4.0 / np.pi * c.e_integral / (1.0 + rx / rz)
+    terms = _force_terms(w, a, c.ellipticity, c.e_integral, rx, rz, e_red)
     with np.errstate(divide="ignore", invalid="ignore"):
-        big_u = 2.0 * eta * u / (e_red * rx)
-        big_w = w / (e_red * rx**2)
-        m = beta**0.25 * kappa * big_w / big_u**0.75
-        ivr = 0.77 * beta ** (-1.0 / 3.0) * kappa**0.12 * big_u ** (-1.0 / 12.0)
-        ehl = 1.8 * beta**-0.25
-        t_star = (2.0 * a / rx) * ((ivr - ehl) / (1.0 + m / 6.6) + ehl) * big_u**0.75
-    force = np.where((w > 0.0) & (u > 0.0), t_star * e_red * rx**2, 0.0)
+        force = 2.0 * a * e_red * rx * _force_factor(*terms, 2.0 * eta * u / (e_red * rx))
+    force = np.where((w > 0.0) & (u > 0.0), force, 0.0)
     return float(force) if force.ndim == 0 else force
+
+
+# Biboulet & Houpert's fit split into what depends on the contact (load, ellipse, radii) and
+# what depends on the speed, elementwise on floats (the per-step path) or arrays.
+def _force_terms(load, semi_major_axis, ellipticity, e_integral, rx, rz, e_red):
+    """(0.77·β^(−1/3)·κ^0.12, 1.8·β^(−1/4), β^(1/4)·κ·W) of one contact: M = (last)/U^(3/4)
+    (eq 14, 31, 32; κ = b/a = 1/ellipticity, W = w/(E'·Rx²))."""
+    beta = (4.0 / math.pi) * e_integral / (1.0 + rx / rz)
+    kappa = 1.0 / ellipticity
+    b4 = beta**0.25
+    return (
+        0.77 * beta ** (-1.0 / 3.0) * kappa**0.12,
+        1.8 / b4,
+        b4 * kappa * load / (e_red * rx * rx),
+    )
+
+
+def _force_factor(ivr, ehl, m0, u):
+    """T̃*·Rx/(2a) of eq 32 at the dimensionless speed U, from :func:`_force_terms`:
+    [(ivr·U^(−1/12) − ehl)/(1 + M/6.6) + ehl]·U^(3/4), M = m0/U^(3/4), written as
+    (ivr·U^(2/3) − ehl·V)·V/(V + m0/6.6) + ehl·V with V = U^(3/4) (finite at U = 0)."""
+    v = u**0.75
+    return (ivr * u ** (2.0 / 3.0) - ehl * v) * v / (v + m0 / 6.6) + ehl * v
+
+
+def contact_rolling_terms(
+    load,
+    semi_major_axis,
+    ellipticity,
+    e_integral,
+    gamma,
+    ball_diameter,
+    pitch_diameter,
+    inverse_conformity,
+    compliance,
+    dynamic_viscosity,
+    inner,
+):
+    """Speed-independent terms of one ball–race contact's hydrodynamic rolling torque about
+    the bearing axis (Biboulet & Houpert 2010 eq 32; power balance of the module docstring),
+    from the contact's Hertz data: with them :func:`contact_rolling_torque` gives the torque
+    at any speed. Elementwise on floats or arrays; a contact must carry load (Q > 0).
+
+    Parameters
+    ----------
+    load : Q [N], > 0
+    semi_major_axis : a [m] (across the rolling direction)
+    ellipticity : k = a/b [-]
+    e_integral : E(m) [-] of the contact ellipse
+    gamma : γ = Dw·cos α/dm [-]
+    ball_diameter, pitch_diameter : Dw, dm [m]
+    inverse_conformity : 1/f = Dw/r [-] of the groove (r the groove radius)
+    compliance : η = (1 − ν1²)/E1 + (1 − ν2²)/E2 [1/Pa] (E' = 2/η)
+    dynamic_viscosity : η0 [Pa·s] (0: a dry film, no rolling torque)
+    inner : True for the inner race (Rx = Dw·(1 − γ)/2), False for the outer (1 + γ)
+
+    Returns
+    -------
+    tuple
+        (2a·E'·Rx·dm·(1 − γ²)/2 [N·m], ivr [-], ehl [-], m0 [-], U per rad/s [s]):
+        torque = first × :func:`_force_factor` (ivr, ehl, m0, U), U = last·|ω|.
+
+    >>> t = contact_rolling_terms(1.0, 1e-4, 8.0, 1.05, 0.1, 0.003, 0.03, 1 / 0.53, 1e-11,
+    ...                           0.05, True)
+    >>> round(contact_rolling_torque(*t, 1.0) * 1e9, 3)  # nN·m at 1 rad/s
+    3119.009
+    """
+    e_red = 2.0 / compliance
+    rx = 0.5 * ball_diameter * ((1.0 - gamma) if inner else (1.0 + gamma))
+    rz = ball_diameter / (2.0 - inverse_conformity)
+    arm = 0.5 * pitch_diameter * (1.0 - gamma * gamma)
+    ivr, ehl, m0 = _force_terms(load, semi_major_axis, ellipticity, e_integral, rx, rz, e_red)
+    return (
+        2.0 * semi_major_axis * e_red * rx * arm,
+        ivr,
+        ehl,
+        m0,
+        dynamic_viscosity * arm / (e_red * rx),
+    )
+
+
+def contact_rolling_torque(scale, ivr, ehl, m0, u_per_speed, speed):
+    """Hydrodynamic rolling torque of one contact about the bearing axis [N·m] at speed ω
+    [rad/s] (sign ignored) from :func:`contact_rolling_terms`: F_R·dm·(1 − γ²)/2, with
+    U = 2·η0·u_m/(E'·Rx) and u_m = (dm/4)·(1 − γ²)·|ω|. Elementwise on floats or arrays.
+
+    >>> contact_rolling_torque(1.0, 1.0, 1.0, 1.0, 0.0, 5.0)  # dry: U = 0
+    0.0
+    """
+    return scale * _force_factor(ivr, ehl, m0, u_per_speed * abs(speed))
 
 
 def ehl_rolling_torque(

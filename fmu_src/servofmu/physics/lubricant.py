@@ -13,6 +13,9 @@ from ._checks import check_nonnegative, check_positive, check_temperature
 from .viscosity import WaltherViscosity
 
 LUBRICANT_TYPES = ("oil", "grease", "solid")
+#: Classes of base oil for the SKF model's full-film sliding coefficient μEHL (SKF 10000 EN
+#: p. 103: mineral 0.05, synthetic 0.04, transmission fluids 0.1); "" when not recorded.
+OIL_CLASSES = ("", "mineral", "synthetic", "transmission")
 
 
 @dataclass(frozen=True)
@@ -60,6 +63,8 @@ class LubricantRecord:
         check the two-point fit; not used by it
     density : base-oil density [kg/m³] at ``density_temperature`` [K] (None: not published)
     pour_point : base-oil pour point [K] (None: not published)
+    oil_class : "mineral", "synthetic" or "transmission" (:data:`OIL_CLASSES`; "" unknown), from
+        the base oil the entry names
     low_temperature_torque : datasheet torque tests, :class:`TorqueTest`
     provenance : ((field, source), ...)
     """
@@ -75,6 +80,7 @@ class LubricantRecord:
     density: float | None = None
     density_temperature: float | None = None
     pour_point: float | None = None
+    oil_class: str = ""
     low_temperature_torque: tuple[TorqueTest, ...] = ()
     provenance: tuple[tuple[str, str], ...] = ()
 
@@ -83,6 +89,8 @@ class LubricantRecord:
             raise ValueError(
                 f"lubricant_type = {self.lubricant_type!r} is not one of {LUBRICANT_TYPES}"
             )
+        if self.oil_class not in OIL_CLASSES:
+            raise ValueError(f"oil_class = {self.oil_class!r} is not one of {OIL_CLASSES}")
         fluid = self.lubricant_type != "solid"
         if fluid != (self.viscosity is not None):
             raise ValueError(

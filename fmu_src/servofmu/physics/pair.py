@@ -12,6 +12,7 @@ from . import catalog
 from ._checks import check_choice, check_positive
 from .fits import mounted_geometry
 from .friction import FrictionCoefficients
+from .friction_models import DEFAULT_FRICTION, FrictionModel, preset
 from .geometry import BallBearing, RaceGeometry
 from .mounting import Mounting
 from .preload import PreloadLoop, loop_interference, shim_for_preload
@@ -41,6 +42,8 @@ class BearingPair:
     pressure_limit : maximum Hertz pressure above which the pair is overloaded [Pa]
     differential_sliding : include Heathcote sliding; None: True for solid, False for grease
     thermal_coupling : False ignores the fit pressures (Yu Fig 3 "without coupling")
+    friction : :class:`~.friction_models.FrictionModel`: which friction model (Yu 2017 by
+        default), its numbers, and the grease term (off by default)
     """
 
     bearing: BallBearing
@@ -53,11 +56,17 @@ class BearingPair:
     pressure_limit: float = PRESSURE_LIMIT
     differential_sliding: bool | None = None
     thermal_coupling: bool = True
+    friction: FrictionModel = DEFAULT_FRICTION
 
     def __post_init__(self):
         check_choice("lubrication", self.lubrication, LUBRICATIONS)
         if self.lubrication == "grease" and self.lubricant is None:
             raise ValueError("lubrication = 'grease' needs a lubricant viscosity model")
+        if self.friction.grease is not None and self.lubrication != "grease":
+            raise ValueError(
+                "a grease term (grease_f0 > 0) needs lubrication = 'grease' (the base oil's "
+                f"viscosity), not {self.lubrication!r}"
+            )
         check_positive("regularisation_speed", self.regularisation_speed, "rad/s")
         check_positive("stribeck_speed", self.stribeck_speed, "rad/s")
         check_positive("pressure_limit", self.pressure_limit, "Pa")
@@ -69,11 +78,19 @@ class BearingPair:
         return self.differential_sliding
 
     @classmethod
-    def from_catalog(cls, mounting: str, lubricant: str | None = None, **overrides):
+    def from_catalog(
+        cls,
+        mounting: str,
+        lubricant: str | None = None,
+        friction_model: str = "yu2017",
+        **overrides,
+    ):
         """Pair built from catalogue keys: ``mounting`` (``data/mountings.toml``; it names its
         bearing and its friction coefficients, ``data/coefficients.toml``, calibrated where a
         paper allows) and ``lubricant`` (``data/lubricants.toml``; a dry film gives solid
-        lubrication). Other fields as keyword overrides.
+        lubrication), with ``friction_model`` (:data:`~.friction_models.FRICTION_MODELS`, its
+        numbers from the catalogue: :func:`~.friction_models.preset`). Other fields as keyword
+        overrides.
 
         >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
         >>> round(pair.coefficients.sliding_friction, 4)  # calibrated on Yu 2017 (§3, Fig 8)
@@ -84,10 +101,13 @@ class BearingPair:
         coefficients = catalog.mounting_coefficients(mounting)
         if coefficients is not None:
             kwargs["coefficients"] = coefficients
+        record = None
         if lubricant is not None:
             visc = catalog.lubricant(lubricant)
             kwargs["lubricant"] = visc
             kwargs["lubrication"] = "solid" if visc is None else "grease"
+            record = catalog.lubricant_record(lubricant)
+        kwargs["friction"] = preset(kwargs["bearing"], record, friction_model)
         kwargs.update(overrides)
         return cls(**kwargs)
 

@@ -8,9 +8,10 @@ Ning §1–2):
    contact angles (Jones), the speed-independent torques (eq 1–7, Ning), preload, axial
    stiffness, maximum contact pressure and the flags ``overloaded``, ``locked`` and
    ``unloaded`` (:func:`state_flags`);
-3. :func:`bearing_outputs` — the speed-dependent part: Palmgren's viscous torque (eq 8), the
-   total (eq 9), breakaway versus running torque, the regularised signed friction torque and
-   the power loss.
+3. :func:`bearing_outputs` — the speed-dependent part: the rolling/viscous torque of the
+   pair's friction model (Palmgren's eq 8 for ``yu2017``; :mod:`.friction_models`), the total
+   (eq 9), breakaway versus running torque, the regularised signed friction torque and the
+   power loss.
 
 Every root is found with bracketing solvers (scipy), so this path cannot fail to converge: it
 is the reference of the per-step continuation (:mod:`.continuation`) and its fallback.
@@ -24,9 +25,18 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from ._checks import check_finite
+from .ehl_rolling import contact_rolling_terms
 from .equilibrium import _axial_state, _ring_stiffness
 from .fits import mounted_geometry
 from .friction import BallSetTorques, _palmgren, _regularised, ball_set_torques
+from .friction_models import (
+    ehl_torque,
+    grease_rest_and_start,
+    grease_running,
+    skf_loads,
+    skf_starting,
+    skf_torques,
+)
 from .geometry import RaceGeometry
 from .pair import BearingPair, loop_closure, loop_stiffness
 from .preload import pair_axial_stiffness, pair_equilibrium, pair_offsets
@@ -149,6 +159,9 @@ class LoadState:
     radial_a, radial_b : radial displacements of the shaft in A and B [m]
     ball_cosines : per-ball cos α of A and B over half the ring (ψ = 2πj/Z, j ≤ Z/2) under
         a radial load, else None (the continuation's start after an exact solve)
+    rolling : what the friction model's speed terms need besides the viscosity
+        (:func:`rolling_data`): None (``yu2017``), the bearings' loads (``skf2004``) or the
+        contacts' terms (``ehl_per_contact``)
     """
 
     force_a: np.ndarray
@@ -168,6 +181,7 @@ class LoadState:
     radial_a: float = 0.0
     radial_b: float = 0.0
     ball_cosines: tuple | None = None
+    rolling: tuple | None = None
 
 
 def state_flags(
@@ -219,6 +233,52 @@ def _add(t1: BallSetTorques, t2: BallSetTorques) -> BallSetTorques:
     return BallSetTorques(*(getattr(t1, f.name) + getattr(t2, f.name) for f in fields(t1)))
 
 
+def _ehl_terms(pair: BearingPair, thermal: ThermalState, balls) -> tuple:
+    """The contacts' terms of :func:`.ehl_rolling.contact_rolling_terms` (arrays, a trailing
+    contact axis: every ball's inner contact, then its outer one, bearing after bearing) from
+    ``balls`` = [(Q, α, inner, outer, weight)] with a trailing ball axis; a contact without
+    load gets a zero scale (and m0 = 1, so that nothing divides 0 by 0)."""
+    geom = thermal.geometry
+
+    def g(x):
+        return np.asarray(x, dtype=float)[..., None]
+
+    dw, dm = g(geom.ball_diameter), g(geom.pitch_diameter)
+    eta = g(thermal.kinematic_viscosity) * pair.friction.lubricant_density
+    parts = []
+    for q, alpha, inner, outer, weight in balls:
+        loaded = q > 0.0
+        q_safe = np.where(loaded, q, 1.0)
+        gamma = dw * np.cos(alpha) / dm
+        for c, r, is_inner in (
+            (inner, geom.inner_groove_radius, True),
+            (outer, geom.outer_groove_radius, False),
+        ):
+            a = c.a_coef * np.cbrt(q_safe)
+            t = contact_rolling_terms(
+                q_safe, a, c.ellipticity, c.e_integral, gamma, dw, dm, dw / g(r),
+                geom.compliance, eta, is_inner,
+            )  # fmt: skip
+            scale = np.where(loaded, weight * t[0], 0.0)
+            m0 = np.where(loaded, t[3], 1.0)
+            shape = np.broadcast_shapes(*(np.shape(x) for x in t))
+            parts.append(tuple(np.broadcast_to(x, shape) for x in (scale, t[1], t[2], m0, t[4])))
+    return tuple(np.concatenate([p[i] for p in parts], axis=-1) for i in range(5))
+
+
+def rolling_data(pair: BearingPair, thermal: ThermalState, force_a, force_b, radial_load, balls):
+    """What the speed terms of the pair's friction model need besides viscosity and pitch
+    diameter: None for ``yu2017``; (Fa,A, Fa,B, Fr) [N] for ``skf2004``
+    (:func:`.friction_models.skf_loads`); the contacts' terms for ``ehl_per_contact``
+    (:func:`_ehl_terms` of ``balls``)."""
+    model = pair.friction.model
+    if model == "skf2004":
+        return skf_loads(force_a, force_b, radial_load)
+    if model == "ehl_per_contact":
+        return _ehl_terms(pair, thermal, balls)
+    return None
+
+
 def _max_pressure(load, inner, outer):
     return np.maximum(inner.max_pressure(load), outer.max_pressure(load)).max(axis=-1)
 
@@ -262,6 +322,10 @@ def axial_load_state(pair: BearingPair, thermal: ThermalState, offset_a, offset_
     )
     p_max = np.maximum(_max_pressure(qa, *ea), _max_pressure(qb, *eb))
     angle = np.where(sa.ball_load > 0, sa.contact_angle, geom.free_contact_angle)
+    rolling = rolling_data(
+        pair, thermal, sa.axial_force, sb.axial_force, 0.0,
+        [(qa, ala, *ea, float(z)), (qb, alb, *eb, float(z))],
+    )  # fmt: skip
     return LoadState(
         force_a=sa.axial_force,
         force_b=sb.axial_force,
@@ -274,6 +338,7 @@ def axial_load_state(pair: BearingPair, thermal: ThermalState, offset_a, offset_
         axial_displacement=0.5 * (np.asarray(offset_a) - np.asarray(offset_b)),
         offset_a=np.asarray(offset_a),
         offset_b=np.asarray(offset_b),
+        rolling=rolling,
     )
 
 
@@ -301,6 +366,10 @@ def _combined_load_state(pair, thermal, f_ext, f_r) -> LoadState:
         float(_max_pressure(lb.load, lb.inner, lb.outer)[0]),
     )
     fa, fb = float(la.axial_force[0]), float(lb.axial_force[0])
+    rolling = rolling_data(
+        pair, thermal, fa, fb, f_r,
+        [(b.load[0], b.contact_angle[0], _first(b.inner), _first(b.outer), 1.0) for b in (la, lb)],
+    )  # fmt: skip
     return LoadState(
         force_a=fa,
         force_b=fb,
@@ -317,7 +386,13 @@ def _combined_load_state(pair, thermal, f_ext, f_r) -> LoadState:
         radial_a=st.radial_a,
         radial_b=st.radial_b,
         ball_cosines=tuple(np.cos(b.contact_angle[0, : geom.n_balls // 2 + 1]) for b in (la, lb)),
+        rolling=rolling,
     )
+
+
+def _first(c):
+    """The contact constants of the first (only) operating point of an equilibrium state."""
+    return type(c)(*(np.asarray(getattr(c, f.name))[0] for f in fields(c)))
 
 
 @dataclass(slots=True)
@@ -325,7 +400,9 @@ class BearingOutputs:
     """Everything the BearingFriction FMU reports (DESIGN §3), SI; arrays or floats.
 
     friction_torque [N·m] signed like speed (opposes rotation), running_torque and
-    breakaway_torque [N·m], hysteresis/spin/sliding/viscous_torque [N·m], preload [N],
+    breakaway_torque [N·m], hysteresis/spin/sliding/viscous_torque [N·m] (viscous: the
+    rolling/viscous part of the friction model: Palmgren, SKF's φish·φrs·Mrr or the contacts'
+    EHL rolling torque), grease_torque [N·m] (the grease term's running torque), preload [N],
     contact_angle [rad], radial_clearance [m], kinematic_viscosity [m²/s], axial_stiffness
     [N/m], power_loss [W], overloaded, locked, unloaded (see :func:`state_flags`); plus
     inner_ring_torque/outer_ring_torque [N·m], max_contact_pressure [Pa],
@@ -340,6 +417,7 @@ class BearingOutputs:
     spin_torque: float
     sliding_torque: float
     viscous_torque: float
+    grease_torque: float
     preload: float
     contact_angle: float
     radial_clearance: float
@@ -364,16 +442,33 @@ class BearingOutputs:
         return {f.name: getattr(self, f.name) for f in fields(self)}
 
 
-def _speed_terms(pair: BearingPair, viscosity, pitch_diameter, coulomb, excess, w):
-    """(signed friction, running, viscous torque) [N·m] at speed w [rad/s] (Yu 2017 eq 8–9
-    and the regularised sign) from the kinematic viscosity [m²/s], the pitch diameter [m], the
-    Coulomb torque (hysteresis + spin + sliding) and the breakaway excess [N·m]; floats in,
-    floats out on the per-step path."""
-    s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
-    viscous = 2.0 * _palmgren(viscosity, w, pitch_diameter, s0)
-    running = coulomb + viscous
+def _speed_terms(pair: BearingPair, viscosity, pitch_diameter, coulomb, excess, sliding, rolling,
+                 w):  # fmt: skip
+    """(signed friction, running, sliding, viscous, grease torque) [N·m] at speed w [rad/s]
+    (Yu 2017 eq 8–9 and the regularised sign; the friction model of
+    :mod:`.friction_models`) from the kinematic viscosity [m²/s], the pitch diameter [m], the
+    Coulomb torque (hysteresis + spin + sliding of the contacts), the breakaway excess, the
+    contacts' sliding torque [N·m] and the model's ``rolling`` data (:func:`rolling_data`);
+    floats in, floats out on the per-step path."""
+    fm = pair.friction
+    model = fm.model
+    if model == "yu2017":
+        s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
+        viscous = 2.0 * _palmgren(viscosity, w, pitch_diameter, s0)
+        running = coulomb + viscous
+    elif model == "skf2004":
+        viscous, sliding = skf_torques(pair, rolling, viscosity, w)
+        running = coulomb + sliding + viscous
+    else:
+        viscous = ehl_torque(rolling, w)
+        running = coulomb + viscous
+    if fm.grease is None:
+        grease = 0.0
+    else:
+        grease = grease_running(pair, viscosity, w)
+        running = running + grease
     signed = _regularised(w, running, excess, pair.regularisation_speed, pair.stribeck_speed)
-    return signed, running, viscous
+    return signed, running, sliding, viscous, grease
 
 
 def _coulomb_excess(pair: BearingPair, hysteresis, spin, sliding):
@@ -383,29 +478,70 @@ def _coulomb_excess(pair: BearingPair, hysteresis, spin, sliding):
     return hysteresis + spin + sliding, excess
 
 
+def contact_terms(pair: BearingPair, hysteresis, spin, sliding, inner, outer):
+    """The per-contact torques (hysteresis, spin, sliding, inner ring, outer ring) [N·m] as the
+    friction model counts them: Yu's and Ning's terms, or zeros under ``skf2004`` (the SKF
+    model's moments replace them)."""
+    if pair.friction.model == "skf2004":
+        zero = 0.0 * hysteresis
+        return zero, zero, zero, zero, zero
+    return hysteresis, spin, sliding, inner, outer
+
+
+def state_torques(pair: BearingPair, hysteresis, spin, sliding, viscosity, pitch_diameter,
+                  rolling, rest=None):  # fmt: skip
+    """(Coulomb torque, breakaway excess, breakaway torque) [N·m] of the state: the running
+    torque at rest plus the excess of the starting torque over it. ``yu2017``: hysteresis +
+    spin + sliding, (μ_s/μ − 1)·(spin + sliding), Palmgren at rest (``rest``, :func:`rest_torque`
+    when not given); ``ehl_per_contact``: the same without Palmgren (no hydrodynamic force at
+    rest); ``skf2004``: Msl(n → 0) of both bearings (SKF's starting torque, no excess); plus
+    the grease term's starting torque (:func:`.friction_models.grease_rest_and_start`)."""
+    if pair.friction.model == "skf2004":
+        coulomb = excess = 0.0
+        rest = skf_starting(pair, rolling)
+    else:
+        coulomb, excess = _coulomb_excess(pair, hysteresis, spin, sliding)
+        if rest is None:
+            rest = rest_torque(pair, viscosity, pitch_diameter)
+    if pair.friction.grease is not None:
+        g_rest, g_start = grease_rest_and_start(pair, viscosity)
+        excess = excess + (g_start - g_rest)
+        rest = rest + g_rest
+    return coulomb, excess, coulomb + excess + rest
+
+
 def rest_torque(pair: BearingPair, viscosity, pitch_diameter):
-    """Viscous torque of the pair at rest (Palmgren's eq 8 below its threshold) [N·m]."""
-    s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
+    """Viscous torque of the pair at rest (Palmgren's eq 8 below its threshold; ``yu2017``
+    only, 0 for the other friction models) [N·m]."""
+    yu = pair.lubricant is not None and pair.friction.model == "yu2017"
+    s0 = pair.coefficients.palmgren_s0 if yu else 0.0
     return 2.0 * _palmgren(viscosity, 0.0, pitch_diameter, s0)
 
 
 def bearing_outputs(
     pair: BearingPair, thermal: ThermalState, load: LoadState, speed
 ) -> BearingOutputs:
-    """Speed-dependent outputs at ``speed`` [rad/s] (Yu 2017 eq 8–9; regularised sign)."""
+    """Speed-dependent outputs at ``speed`` [rad/s] (Yu 2017 eq 8–9, or the pair's friction
+    model; regularised sign)."""
     w = speed if type(speed) is float else check_finite("speed", speed, "rad/s")
     t = load.torques
     nu, dm = thermal.kinematic_viscosity, thermal.pitch_diameter
-    coulomb, excess = _coulomb_excess(pair, t.hysteresis, t.spin, t.sliding)
-    signed, running, viscous = _speed_terms(pair, nu, dm, coulomb, excess, w)
+    hyst, spin, slide, inner, outer = contact_terms(
+        pair, t.hysteresis, t.spin, t.sliding, t.inner_ring, t.outer_ring
+    )
+    coulomb, excess, breakaway = state_torques(pair, hyst, spin, slide, nu, dm, load.rolling)
+    signed, running, sliding, viscous, grease = _speed_terms(
+        pair, nu, dm, coulomb, excess, slide, load.rolling, w
+    )
     return BearingOutputs(
         friction_torque=signed,
         running_torque=running,
-        breakaway_torque=coulomb + excess + rest_torque(pair, nu, dm),
-        hysteresis_torque=t.hysteresis,
-        spin_torque=t.spin,
-        sliding_torque=t.sliding,
+        breakaway_torque=breakaway,
+        hysteresis_torque=hyst,
+        spin_torque=spin,
+        sliding_torque=sliding,
         viscous_torque=viscous,
+        grease_torque=grease,
         preload=load.preload,
         contact_angle=load.contact_angle,
         radial_clearance=thermal.clearance,
@@ -415,8 +551,8 @@ def bearing_outputs(
         overloaded=load.overloaded,
         locked=load.locked,
         unloaded=load.unloaded,
-        inner_ring_torque=t.inner_ring,
-        outer_ring_torque=t.outer_ring,
+        inner_ring_torque=inner,
+        outer_ring_torque=outer,
         max_contact_pressure=load.max_contact_pressure,
         outer_fit_pressure=thermal.outer_fit_pressure,
         inner_fit_pressure=thermal.inner_fit_pressure,
@@ -432,9 +568,11 @@ def bearing_outputs(
 class PointState:
     """Everything BearingFriction reports at one operating point except what moves with speed,
     as floats: the per-step state of :class:`~.bearing.BearingModel` (from the continuation or
-    the exact path), with the Coulomb torque, breakaway excess, pitch diameter [m] and
-    kinematic viscosity [m²/s] that the speed terms need. Fields as :class:`BearingOutputs`
-    (torques [N·m], forces [N], angle [rad], lengths [m], stiffness [N/m], pressures [Pa])."""
+    the exact path), with the Coulomb torque, breakaway excess, pitch diameter [m], kinematic
+    viscosity [m²/s] and friction model data (``rolling``, :func:`rolling_data` as floats:
+    JSON-serialisable) that the speed terms need. Fields as :class:`BearingOutputs`
+    (torques [N·m], forces [N], angle [rad], lengths [m], stiffness [N/m], pressures [Pa]);
+    ``sliding_torque`` is that of the contacts (the SKF model's moves with speed)."""
 
     hysteresis_torque: float
     spin_torque: float
@@ -461,18 +599,30 @@ class PointState:
     overloaded: bool
     locked: bool
     unloaded: bool
+    rolling: tuple | list | None = None
 
     @classmethod
-    def of(cls, pair: BearingPair, thermal, torques, load, flags, rest=None) -> PointState:
+    def of(cls, pair: BearingPair, thermal, torques, load, flags, rest=None,
+           rolling=None) -> PointState:  # fmt: skip
         """From the thermal state ``thermal`` (clearance, viscosity, pitch diameter, fits),
         ``torques`` = (hysteresis, spin, sliding, inner ring, outer ring) [N·m], ``load`` =
         (preload [N], contact angle [rad], axial stiffness [N/m], largest pressure [Pa],
         force_a, force_b [N], axial displacement [m]), ``flags`` = (overloaded, locked,
-        unloaded) (:func:`state_flags`) and the viscous torque at rest [N·m]
-        (:func:`rest_torque`, evaluated when not given)."""
-        hyst, spin, slide, inner, outer = torques
+        unloaded) (:func:`state_flags`), the viscous torque at rest [N·m]
+        (:func:`rest_torque`, evaluated when not given) and the friction model's ``rolling``
+        data (:func:`rolling_data`, floats)."""
         nu, dm = thermal.kinematic_viscosity, thermal.pitch_diameter
-        coulomb, excess = _coulomb_excess(pair, hyst, spin, slide)
+        fm = pair.friction
+        if fm.model == "yu2017" and fm.grease is None:  # the default: the per-step hot path
+            hyst, spin, slide, inner, outer = torques
+            coulomb, excess = _coulomb_excess(pair, hyst, spin, slide)
+            rest = rest_torque(pair, nu, dm) if rest is None else rest
+            breakaway = coulomb + excess + rest
+        else:
+            hyst, spin, slide, inner, outer = contact_terms(pair, *torques)
+            coulomb, excess, breakaway = state_torques(
+                pair, hyst, spin, slide, nu, dm, rolling, rest
+            )
         return cls(
             hyst,
             spin,
@@ -481,7 +631,7 @@ class PointState:
             outer,
             coulomb,
             excess,
-            coulomb + excess + (rest_torque(pair, nu, dm) if rest is None else rest),
+            breakaway,
             load[0],
             load[1],
             thermal.clearance,
@@ -497,6 +647,7 @@ class PointState:
             load[5],
             load[6],
             *flags,
+            rolling,
         )
 
     @classmethod
@@ -517,31 +668,45 @@ class PointState:
                 load.axial_displacement,
             ),
             (load.overloaded, load.locked, load.unloaded),
+            rolling=_rolling_floats(load.rolling),
         )
 
     def speed_terms(self, pair: BearingPair, w: float):
-        """(signed friction, running, viscous torque) [N·m] at speed ``w`` [rad/s]."""
+        """(signed friction, running, sliding, viscous, grease torque) [N·m] at speed ``w``
+        [rad/s]."""
         return _speed_terms(
             pair,
             self.kinematic_viscosity,
             self.pitch_diameter,
             self.coulomb_torque,
             self.breakaway_excess,
+            self.sliding_torque,
+            self.rolling,
             w,
         )
 
     def outputs(self, pair: BearingPair, w: float) -> BearingOutputs:
         """:class:`BearingOutputs` at speed ``w`` [rad/s] (float): the same numbers as
         :func:`bearing_outputs` on the exact path's state."""
-        signed, running, viscous = self.speed_terms(pair, w)
+        signed, running, sliding, viscous, grease = _speed_terms(
+            pair,
+            self.kinematic_viscosity,
+            self.pitch_diameter,
+            self.coulomb_torque,
+            self.breakaway_excess,
+            self.sliding_torque,
+            self.rolling,
+            w,
+        )  # (speed_terms inlined: the per-step path)
         return BearingOutputs(
             signed,
             running,
             self.breakaway_torque,
             self.hysteresis_torque,
             self.spin_torque,
-            self.sliding_torque,
+            sliding,
             viscous,
+            grease,
             self.preload,
             self.contact_angle,
             self.radial_clearance,
@@ -566,6 +731,17 @@ class PointState:
     def as_dict(self) -> dict:
         """The fields as a JSON-serialisable dict."""
         return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
+def _rolling_floats(rolling):
+    """The exact path's :func:`rolling_data` of one operating point as floats: the SKF loads
+    as floats, the EHL terms as tuples of floats of the loaded contacts only."""
+    if rolling is None:
+        return None
+    if isinstance(rolling[0], np.ndarray) and np.ndim(rolling[0]) == 1:
+        keep = rolling[0] > 0.0
+        return tuple(tuple(float(x) for x in np.asarray(r)[keep]) for r in rolling)
+    return tuple(float(x) for x in rolling)
 
 
 def operating_outputs(

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .friction_models import FRICTION_MODELS
 from .geometry import MAX_CONTACT_ANGLE
 from .mounting import PRELOAD_METHODS
 from .preload import ARRANGEMENTS, LOOP_MODELS
@@ -91,6 +92,11 @@ GROUPS = {
     "viscous": "Palmgren factor",
     "regularisation": "smooth sign and breakaway decay through zero speed",
     "limit": "overload pressure",
+    "friction_model": "which friction model: Yu 2017, SKF 2004 or the contacts' EHL rolling",
+    "skf": "the SKF model's series constants and friction coefficients",
+    "density": "the (base) oil's density (EHL rolling torque)",
+    "grease": "the grease term's factor f0 (running torque)",
+    "grease_start": "the grease term's starting ratio and test speed (breakaway torque)",
 }
 
 _LUBRICATIONS = (
@@ -134,6 +140,27 @@ _LOOP_READINGS = (
         "members with the housing material's, the ring widths not counted",
     ),
 )
+_FRICTION_MODELS = (
+    Choice(
+        "yu2017",
+        "yu2017",
+        "Yu 2017 eq 1-9: hysteresis, spin (and Ning's sliding) per contact + Palmgren's "
+        "viscous torque s0·(ν·n)^(2/3)·dm³",
+    ),
+    Choice(
+        "skf2004",
+        "skf2004",
+        "SKF 2004: φish·φrs·Mrr + Msl per bearing with its own axial and radial load "
+        "(open, no oil bath)",
+    ),
+    Choice(
+        "ehl_per_contact",
+        "ehl_per_contact",
+        "Biboulet & Houpert 2010 hydrodynamic rolling torque of every ball-race contact + Yu's "
+        "hysteresis and spin per contact",
+    ),
+)
+assert tuple(c.key for c in _FRICTION_MODELS) == FRICTION_MODELS
 assert {c.key for c in _ARRANGEMENTS} == set(ARRANGEMENTS)
 assert tuple(c.key for c in _PRELOAD_METHODS) == PRELOAD_METHODS
 assert tuple(c.key for c in _LOOP_MODELS) == LOOP_MODELS
@@ -492,6 +519,75 @@ def _table() -> tuple[ParameterSpec, ...]:
             1.0e8,
             1.0e11,
         ),
+        # ---- the friction model (issue 17); appended, so that earlier references stay
+        *_friction_model_specs(),
+    )
+
+
+def _skf(name, description, lo, hi):
+    return _real(f"skf_{name}", f"SKF model: {description}", "skf", "1", None, lo, hi)
+
+
+def _friction_model_specs() -> tuple[ParameterSpec, ...]:
+    return (
+        _choice(
+            "friction_model",
+            "Friction model: yu2017 (default), skf2004 or ehl_per_contact",
+            "friction_model",
+            "FrictionModel",
+            _FRICTION_MODELS,
+        ),
+        _skf("r1", "rolling constant R1 (Table 2b; catalogue units)", 1.0e-12, 1.0),
+        _skf("r2", "rolling constant R2 of the axial load", 1.0e-6, 100.0),
+        _skf("r3", "rolling constant R3 of the centrifugal load", 0.0, 1.0e-6),
+        _skf("s1", "sliding constant S1 (Table 2b; catalogue units)", 1.0e-12, 1.0),
+        _skf("s2", "sliding constant S2 of the axial load", 1.0e-6, 1000.0),
+        _skf("s3", "sliding constant S3 of the centrifugal load", 0.0, 1.0e-6),
+        _skf("kz", "geometry constant Kz of the replenishment factor", 1.0e-3, 100.0),
+        _skf(
+            "replenishment",
+            "replenishment/starvation constant Krs (6e-8 grease, 3e-8 oil bath)",
+            0.0,
+            1.0e-5,
+        ),
+        _skf("boundary_friction", "boundary sliding coefficient μbl (≈ 0.15)", 0.0, 1.0),
+        _skf("film_friction", "full-film sliding coefficient μEHL (0.05 mineral)", 0.0, 1.0),
+        _real(
+            "lubricant_density",
+            "Density of the (base) oil: dynamic viscosity ν·ρ of the EHL rolling torque",
+            "density",
+            "kg/m3",
+            "g/cm3",
+            100.0,
+            5000.0,
+        ),
+        _real(
+            "grease_f0",
+            "Grease term: Palmgren factor f0 calibrated on a datasheet torque (0: off)",
+            "grease",
+            "1",
+            None,
+            0.0,
+            1.0e5,
+        ),
+        _real(
+            "grease_starting_ratio",
+            "Grease term: starting/running torque ratio ks of the datasheet test",
+            "grease_start",
+            "1",
+            None,
+            0.1,
+            1000.0,
+        ),
+        _real(
+            "grease_reference_speed",
+            "Grease term: speed of the datasheet test (ks holds there)",
+            "grease_start",
+            "rad/s",
+            "rpm",
+            1.0e-6,
+            1.0e4,
+        ),
     )
 
 
@@ -507,7 +603,11 @@ LUBRICANT_FIELDS = (
     "lubricant_viscosity_40",
     "lubricant_viscosity_100",
     "lubricant_walther_c",
+    "lubricant_density",
+    "skf_film_friction",
 )
+#: The SKF series constants: a bearing preset sets them (its series, or the fallback).
+SKF_SERIES_FIELDS = ("skf_r1", "skf_r2", "skf_r3", "skf_s1", "skf_s2", "skf_s3", "skf_kz")
 
 
 def spec(name: str) -> ParameterSpec:

@@ -17,13 +17,15 @@ from dataclasses import dataclass
 
 from . import catalog
 from .friction import FrictionCoefficients
+from .friction_models import SKF_SOURCES, FrictionModel, lubricant_numbers
+from .friction_models import preset as friction_preset
 from .geometry import BallBearing
 from .materials import Material
 from .mounting import Mounting
 from .pair import PRESSURE_LIMIT
-from .parameter_table import LUBRICANT_FIELDS, PARAMETER_NAMES
+from .parameter_table import LUBRICANT_FIELDS, PARAMETER_NAMES, SKF_SERIES_FIELDS
 from .preload import LoopMember, member_kind
-from .units import CST
+from .units import CST, RPM
 
 #: Catalogue mounting whose values are the defaults (Yu 2017's seeker gimbal).
 DEFAULT_MOUNTING = "yu2017_gimbal"
@@ -50,11 +52,13 @@ def _material_values(prefix: str, mat: Material, poisson: bool = True) -> tuple[
 
 def bearing_values(b: BallBearing) -> tuple[dict, dict]:
     """(values, sources) of the bearing numbers of :data:`BEARING_FIELDS` for a
-    :class:`BallBearing` (a catalogue bearing: a preset).
+    :class:`BallBearing` (a catalogue bearing: a preset), and the SKF constants of its series
+    (:data:`SKF_SERIES_FIELDS`; :func:`.rolling_friction.series_constants`, a labelled
+    fallback when the series is not in the table).
 
     >>> values, sources = bearing_values(catalog.bearing("71803"))
-    >>> values["n_balls"], sources["bore"]
-    (15, 'paper: Yu 2017 §2')
+    >>> values["n_balls"], sources["bore"], sources["skf_r1"][:18]
+    (15, 'paper: Yu 2017 §2', 'fallback (assumed)')
     """
     geometry = ("bore", "outer_diameter", "width", "ball_diameter", "pitch_diameter",
                 "nominal_contact_angle", "inner_curvature", "outer_curvature")  # fmt: skip
@@ -65,6 +69,11 @@ def bearing_values(b: BallBearing) -> tuple[dict, dict]:
         v, s = _material_values(prefix, mat)
         values |= v
         sources |= {k: (b.source(f"{prefix}_material") or src) for k, src in s.items()}
+    skf = friction_preset(b).skf
+    for name in SKF_SERIES_FIELDS:
+        field = name.removeprefix("skf_")
+        values[name] = float(getattr(skf, field))
+        sources[name] = f"{skf.source(field)} (bearing {b.key})"
     return values, sources
 
 
@@ -80,17 +89,22 @@ def lubricant_values(key: str) -> tuple[dict, dict]:
     rec = catalog.lubricant_record(key)
     if rec.viscosity is None:
         return {"lubrication": "solid"}, {"lubrication": f"catalogue: lubricant {key} (dry film)"}
+    (film, film_src), (density, density_src) = lubricant_numbers(rec)
     values = {
         "lubrication": "grease",
         "lubricant_viscosity_40": float(rec.viscosity_40),
         "lubricant_viscosity_100": float(rec.viscosity_100),
         "lubricant_walther_c": walther_c_si(rec.viscosity.c),
+        "lubricant_density": density,
+        "skf_film_friction": film,
     }
     sources = {
         "lubrication": f"catalogue: lubricant {key} ({rec.lubricant_type})",
         "lubricant_viscosity_40": f"{rec.source('viscosity_40')} ({key})",
         "lubricant_viscosity_100": f"{rec.source('viscosity_100')} ({key})",
         "lubricant_walther_c": f"{rec.viscosity.source('c')} ({key})",
+        "lubricant_density": density_src,
+        "skf_film_friction": film_src,
     }
     return values, sources
 
@@ -314,6 +328,23 @@ def _coefficient_values(mounting: str, solid: bool) -> tuple[dict, dict]:
         "regularisation_speed": "assumed",
         "stribeck_speed": "assumed",
         "pressure_limit": "handbook: ISO 76, 4200 MPa for ball bearings",
+    }
+    fm = FrictionModel()  # the catalogue's SKF coefficients (μbl, Krs)
+    unused = "not used (grease_f0 = 0: no grease term)"
+    values |= {
+        "friction_model": "yu2017",
+        "skf_replenishment": fm.skf_replenishment,
+        "skf_boundary_friction": fm.skf_boundary_friction,
+        "grease_f0": 0.0,
+        "grease_starting_ratio": 1.0,
+        "grease_reference_speed": RPM,
+    }
+    sources |= {
+        "friction_model": "assumed: Yu 2017's model, the default for the paper reproductions",
+        **SKF_SOURCES,
+        "grease_f0": "assumed: off (calibrate it on a datasheet: servofmu calibrate --datasheet)",
+        "grease_starting_ratio": f"{unused}: 1",
+        "grease_reference_speed": f"{unused}: the 1 r/min of ASTM D1478 and JIS K 2220",
     }
     return values, sources
 

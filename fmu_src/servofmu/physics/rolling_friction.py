@@ -180,7 +180,40 @@ def inlet_shear_factor(kinematic_viscosity, speed, mean_diameter):
     nu = check_nonnegative("kinematic_viscosity", kinematic_viscosity, "m²/s")
     check_finite("speed", speed, "rad/s")
     dm = check_positive("mean_diameter", mean_diameter, "m")
-    return _scalar(1.0 / (1.0 + 1.84e-9 * (_rpm(speed) * dm / MM) ** 1.28 * _cst(nu) ** 0.64))
+    return _scalar(_phi_ish(_cst(nu), _rpm(speed), dm / MM))
+
+
+def _exp(x):
+    return math.exp(x) if type(x) is float else np.exp(x)
+
+
+# The equations in the catalogue's own units (ν mm²/s, n r/min, lengths mm, loads N, moments
+# N·mm), elementwise on Python floats (the per-step path of an FMU) or numpy arrays: the one
+# place each is written; the public functions check and convert, then call these.
+def _phi_ish(nu_cst, n_rpm, dm_mm):
+    """φish = 1/(1 + 1.84e-9·(n·dm)^1.28·ν^0.64) [-]."""
+    return 1.0 / (1.0 + 1.84e-9 * (n_rpm * dm_mm) ** 1.28 * nu_cst**0.64)
+
+
+def _phi_rs(nu_cst, n_rpm, d_mm, big_d_mm, kz, krs):
+    """φrs = 1/e^(Krs·ν·n·(d + D)·√(Kz/(2·(D − d)))) [-]."""
+    return _exp(-krs * nu_cst * n_rpm * (d_mm + big_d_mm) * (kz / (2.0 * (big_d_mm - d_mm))) ** 0.5)
+
+
+def _phi_bl(nu_cst, n_rpm, dm_mm):
+    """φbl = 1/e^(2.6e-8·(n·ν)^1.4·dm) [-]."""
+    return _exp(-2.6e-8 * (n_rpm * nu_cst) ** 1.4 * dm_mm)
+
+
+def _angular_contact_g(c, dm_mm, fr, fa, n_rpm):
+    """(Grr, Gsl) of an angular-contact ball bearing (SKF Table 2a; catalogue units):
+    Grr = R1·dm^1.97·(Fr + Fg + R2·Fa)^0.54, Fg = R3·dm^4·n²;
+    Gsl = S1·dm^0.26·((Fr + Fg)^(4/3) + S2·Fa^(4/3)), Fg = S3·dm^4·n²."""
+    centrifugal = dm_mm**4 * n_rpm * n_rpm
+    grr = c.r1 * dm_mm**1.97 * (fr + c.r3 * centrifugal + c.r2 * fa) ** 0.54
+    radial = fr + c.s3 * centrifugal
+    gsl = c.s1 * dm_mm**0.26 * (radial ** (4.0 / 3.0) + c.s2 * fa ** (4.0 / 3.0))
+    return grr, gsl
 
 
 def replenishment_factor(kinematic_viscosity, speed, bore, outer_diameter, kz, krs):
@@ -211,9 +244,7 @@ def replenishment_factor(kinematic_viscosity, speed, bore, outer_diameter, kz, k
     check_positive("kz", kz)
     check_nonnegative("krs", krs)
     d_mm, big_d_mm = np.asarray(bore) / MM, np.asarray(outer_diameter) / MM
-    exponent = krs * _cst(nu) * _rpm(speed) * (d_mm + big_d_mm)
-    exponent = exponent * np.sqrt(kz / (2.0 * (big_d_mm - d_mm)))
-    return _scalar(np.exp(-exponent))
+    return _scalar(_phi_rs(_cst(nu), _rpm(speed), d_mm, big_d_mm, kz, krs))
 
 
 def boundary_weighting(kinematic_viscosity, speed, mean_diameter):
@@ -239,7 +270,7 @@ def boundary_weighting(kinematic_viscosity, speed, mean_diameter):
     nu = check_nonnegative("kinematic_viscosity", kinematic_viscosity, "m²/s")
     check_finite("speed", speed, "rad/s")
     dm = check_positive("mean_diameter", mean_diameter, "m")
-    return _scalar(np.exp(-2.6e-8 * (_rpm(speed) * _cst(nu)) ** 1.4 * (dm / MM)))
+    return _scalar(_phi_bl(_cst(nu), _rpm(speed), dm / MM))
 
 
 def sliding_friction_coefficient(phi_bl, mu_bl=MU_BOUNDARY, mu_ehl=MU_EHL["mineral"]):
@@ -286,8 +317,7 @@ def _deep_groove_angle(axial_load, static_load_rating):
 def _g_rolling(c: SkfConstants, dm_mm, fr, fa, n, static_load_rating):
     """Grr (Table 2a), catalogue units: dm mm, F N, n r/min."""
     if c.bearing_type == "angular_contact":
-        fg = c.r3 * dm_mm**4 * n**2
-        return c.r1 * dm_mm**1.97 * (fr + fg + c.r2 * fa) ** 0.54
+        return _angular_contact_g(c, dm_mm, fr, fa, n)[0]
     loaded = fa > 0.0
     if not np.any(loaded):
         return c.r1 * dm_mm**1.96 * fr**0.54
@@ -303,8 +333,7 @@ def _g_sliding(c: SkfConstants, dm_mm, fr, fa, n, static_load_rating):
     as printed, so a deep-groove bearing's sliding moment jumps by dm^0.115 when an axial
     load appears."""
     if c.bearing_type == "angular_contact":
-        fg = c.s3 * dm_mm**4 * n**2
-        return c.s1 * dm_mm**0.26 * ((fr + fg) ** (4.0 / 3.0) + c.s2 * fa ** (4.0 / 3.0))
+        return _angular_contact_g(c, dm_mm, fr, fa, n)[1]
     loaded = fa > 0.0
     pure_radial = c.s1 * dm_mm**-0.26 * fr ** (5.0 / 3.0)
     if not np.any(loaded):
@@ -547,6 +576,92 @@ def skf_friction(
     )
 
 
+def _pair_moments(c, d_mm, big_d_mm, fa_a, fa_b, fr, nu_cst, n_rpm, krs, mu_bl, mu_ehl):
+    """(φish·φrs·ΣMrr, ΣMsl) [N·mm] of two angular-contact bearings of one size with axial
+    loads fa_a, fa_b and radial load fr each [N], in the catalogue's units, elementwise on
+    floats or arrays (see :func:`pair_moments`)."""
+    dm_mm = 0.5 * (d_mm + big_d_mm)
+    reduction = _phi_ish(nu_cst, n_rpm, dm_mm) * _phi_rs(nu_cst, n_rpm, d_mm, big_d_mm, c.kz, krs)
+    phi_bl = _phi_bl(nu_cst, n_rpm, dm_mm)
+    mu_sl = phi_bl * mu_bl + (1.0 - phi_bl) * mu_ehl
+    grr_a, gsl_a = _angular_contact_g(c, dm_mm, fr, fa_a, n_rpm)
+    grr_b, gsl_b = _angular_contact_g(c, dm_mm, fr, fa_b, n_rpm)
+    return reduction * (grr_a + grr_b) * (nu_cst * n_rpm) ** 0.6, mu_sl * (gsl_a + gsl_b)
+
+
+def _pair_starting(c, d_mm, big_d_mm, fa_a, fa_b, fr, mu_bl):
+    """ΣMsl(n → 0) = μbl·(Gsl,A + Gsl,B) at n = 0 [N·mm] (SKF "Starting torque": μsl = μbl
+    since φbl = 1, no centrifugal load), elementwise on floats or arrays."""
+    dm_mm = 0.5 * (d_mm + big_d_mm)
+    gsl_a = _angular_contact_g(c, dm_mm, fr, fa_a, 0.0)[1]
+    gsl_b = _angular_contact_g(c, dm_mm, fr, fa_b, 0.0)[1]
+    return mu_bl * (gsl_a + gsl_b)
+
+
+def pair_moments(
+    constants: SkfConstants,
+    bore,
+    outer_diameter,
+    axial_loads,
+    radial_load,
+    kinematic_viscosity,
+    speed,
+    krs=REPLENISHMENT_KRS["grease"],
+    mu_bl=MU_BOUNDARY,
+    mu_ehl=MU_EHL["mineral"],
+):
+    """The SKF model of a preloaded pair of angular-contact ball bearings: each bearing with
+    its own axial load (preload included) and its share of the radial load, the moments added
+    ("The SKF model ...": a single bearing under its own Fr and Fa). Open bearings (Mseal = 0)
+    without an oil bath (Mdrag = 0). Returns the reduced rolling moment φish·φrs·(Mrr,A +
+    Mrr,B), the sliding moment Msl,A + Msl,B and the starting torque Msl,A + Msl,B at n → 0
+    (μsl = μbl, no centrifugal load; SKF "Starting torque").
+
+    Parameters
+    ----------
+    constants : :class:`SkfConstants` of an angular-contact series (:func:`series_constants`)
+    bore, outer_diameter : d, D [m] of each bearing
+    axial_loads : (Fa,A, Fa,B) [N], each ≥ 0
+    radial_load : Fr [N] on each bearing, ≥ 0
+    kinematic_viscosity : ν [m²/s] at the operating temperature (0: a dry film, no rolling
+        moment, μsl = μbl)
+    speed : ω [rad/s] (sign ignored)
+    krs : replenishment/starvation constant (:data:`REPLENISHMENT_KRS`)
+    mu_bl, mu_ehl : μbl, μEHL [-]
+
+    Returns
+    -------
+    (rolling, sliding, starting) [N·m]
+
+    >>> c = skf_constants("72B")
+    >>> w = 1000 * 2 * 3.141592653589793 / 60
+    >>> m = pair_moments(c, 0.025, 0.052, (300.0, 100.0), 50.0, 20e-6, w)
+    >>> [round(x * 1e3, 3) for x in m]  # N·mm
+    [12.932, 5.966, 10.326]
+    """
+    if constants.bearing_type != "angular_contact":
+        raise ValueError(
+            f"SKF series {constants.key!r} is {constants.bearing_type}: a preloaded pair takes "
+            "angular-contact constants"
+        )
+    d, big_d = np.asarray(bore, float), np.asarray(outer_diameter, float)
+    mean_diameter(d, big_d)  # checks 0 < d < D
+    fa_a = check_nonnegative("axial_loads[0]", axial_loads[0], "N")
+    fa_b = check_nonnegative("axial_loads[1]", axial_loads[1], "N")
+    fr = check_nonnegative("radial_load", radial_load, "N")
+    nu = check_nonnegative("kinematic_viscosity", kinematic_viscosity, "m²/s")
+    check_finite("speed", speed, "rad/s")
+    check_nonnegative("krs", krs)
+    check_range("mu_bl", mu_bl, 0.0, 1.0)
+    check_range("mu_ehl", mu_ehl, 0.0, 1.0)
+    d_mm, big_d_mm = d / MM, big_d / MM
+    out = _pair_moments(
+        constants, d_mm, big_d_mm, fa_a, fa_b, fr, _cst(nu), _rpm(speed), krs, mu_bl, mu_ehl
+    )
+    start = _pair_starting(constants, d_mm, big_d_mm, fa_a, fa_b, fr, mu_bl)
+    return tuple(_scalar(x * NMM) for x in (*out, start))
+
+
 def bearing_loads(ball_load, contact_angle, azimuth=None):
     """Axial and radial load of one bearing from its per-ball contacts (static equilibrium of
     the ring): Fa = Σ Qj·sin αj, Fr = |Σ Qj·cos αj·(cos ψj, sin ψj)| [N].
@@ -603,9 +718,69 @@ def skf_constants(key: str) -> SkfConstants:
     entry = data[key]
     values, prov = {}, []
     for field, spec in entry.items():
-        if isinstance(spec, dict):
+        if isinstance(spec, dict) and field != "contact_angle":  # the series' angle: a key
             values[field], src = quantity(spec, field)
             prov.append((field, src))
     return SkfConstants(
         key=key, bearing_type=entry["bearing_type"], provenance=tuple(prov), **values
+    )
+
+
+#: The angular-contact series whose constants stand in for one that the transcribed Table 2b
+#: lacks (``data/skf_friction.toml`` lists only verified series).
+FALLBACK_SERIES = "72B"
+
+
+def series_constants(designation: str, contact_angle: float) -> SkfConstants:
+    """The SKF constants of an angular-contact ball bearing: the entry of
+    ``data/skf_friction.toml`` whose ``series_prefix`` starts the designation (followed by the
+    bore code's digits) and whose ``contact_angle`` is within 1° of the bearing's; else the
+    constants of :data:`FALLBACK_SERIES` (72 B(E), 40°), every value's provenance prefixed
+    "fallback (assumed)" and naming the bearing.
+
+    The fallback is a stated rule, not catalogue data: SKF's angular-contact constants differ
+    by series and contact angle, and only 72 B(E) could be verified here. A 15° bearing
+    (suffix C) carries more ball load per newton of axial load than a 40° one (Q ∝ 1/sin α),
+    which R2 and S2 of a 40° series do not see: the fallback's axial share is low for it.
+
+    Parameters
+    ----------
+    designation : bearing designation (a catalogue key such as "71803", "7205B", or
+        "parameters" for a bearing given by numbers)
+    contact_angle : nominal contact angle α0 [rad]
+
+    Returns
+    -------
+    :class:`SkfConstants` with per-value provenance
+
+    >>> series_constants("7205B", math.radians(40.0)).source("r1")[:32]
+    'catalogue: SKF 10000 EN Table 2b'
+    >>> series_constants("71803", math.radians(15.0)).source("r1")[:20]
+    'fallback (assumed): '
+    """
+    from .catalog import _table
+
+    angle = math.degrees(check_range("contact_angle", contact_angle, 0.0, math.pi / 2, unit="rad"))
+    for key, entry in _table("skf_friction").items():
+        prefix = entry.get("series_prefix")
+        if entry.get("bearing_type") != "angular_contact" or prefix is None:
+            continue
+        rest = designation[len(prefix) :]
+        if (
+            designation.startswith(prefix)
+            and rest[:1].isdigit()
+            and abs(entry["contact_angle"]["value"] - angle) <= 1.0
+        ):
+            return skf_constants(key)
+    base = skf_constants(FALLBACK_SERIES)
+    why = (
+        f"fallback (assumed): SKF Table 2b as transcribed (data/skf_friction.toml) has no "
+        f"angular-contact series for {designation} ({angle:.4g}°); the constants of series "
+        f"{FALLBACK_SERIES} (40°) are used"
+    )
+    return SkfConstants(
+        **{f: getattr(base, f) for f in ("key", "bearing_type", "r1", "r2", "s1", "s2", "kz")},
+        r3=base.r3,
+        s3=base.s3,
+        provenance=tuple((f, f"{why}: {src}") for f, src in base.provenance),
     )
