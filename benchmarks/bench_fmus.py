@@ -25,6 +25,7 @@ from pathlib import Path
 
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Slave
+from trajectories import BEARING_LOOPS  # benchmarks/ is the script's folder
 
 from servofmu.build.fmu import FMUS, build_all
 
@@ -46,30 +47,8 @@ class Empty(Fmi2Slave):
 """
 
 
-def _ramp(k: int) -> float:
-    """−60 → +80 °C over 1000 steps and back (a triangle of period 2000 steps) [K]."""
-    phase = (k % 2000) / 1000.0
-    return 213.15 + 140.0 * (phase if phase <= 1.0 else 2.0 - phase)
-
-
 # BearingFriction's inputs changed every step (value at step k) and the output read back
 _BEARING_INPUTS = ("temperature", "speed", "axial_load", "radial_load")
-BEARING_LOOPS = {
-    "speed changes": lambda k: (253.15, 0.2 * math.sin(1e-3 * k), 5.0, 0.0),
-    "speed and axial load change": lambda k: (
-        253.15,
-        0.2 * math.sin(1e-3 * k),
-        5.0 + math.sin(2e-3 * k),
-        0.0,
-    ),
-    "ramp -60..+80 degC, 20 N axial": lambda k: (_ramp(k), 0.2 * math.sin(1e-3 * k), 20.0, 0.0),
-    "ramp, axial 10-30 N, radial 0-20 N": lambda k: (
-        _ramp(k),
-        0.2 * math.sin(1e-3 * k),
-        20.0 + 10.0 * math.sin(7e-3 * k),
-        10.0 + 10.0 * math.sin(1.1e-2 * k),
-    ),
-}
 #: The other friction models (parameter friction_model: item) and their loops (--models).
 OTHER_MODELS = {"skf2004": 2, "ehl_per_contact": 3}
 

@@ -39,7 +39,7 @@ from ..physics.grease_torque import (
     grease_torque_points,
     torque_test,
 )
-from ..physics.parameter_table import spec
+from ..physics.parameter_table import LUBRICANT_FIELDS, spec
 from ..physics.presets import walther_c_si
 from ..physics.rolling_friction import MU_EHL
 from ..physics.units import CST, RPM, kelvin_to_celsius
@@ -47,12 +47,7 @@ from .fit import UNREPLICATED_LIMIT
 
 #: The parameters a datasheet calibration writes, in the order of the parameter table.
 GREASE_PARAMETERS = (
-    "lubrication",
-    "lubricant_viscosity_40",
-    "lubricant_viscosity_100",
-    "lubricant_walther_c",
-    "lubricant_density",
-    "skf_film_friction",
+    *LUBRICANT_FIELDS,  # the grease's base oil, as a lubricant preset sets it
     "grease_f0",
     "grease_starting_ratio",
     "grease_reference_speed",
