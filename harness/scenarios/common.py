@@ -33,18 +33,17 @@ def format_table(columns: list[str], rows: list[dict]) -> list[str]:
 
 
 def write_csv(path: Path, columns: list[str], rows: list[dict]) -> Path:
-    """A table as CSV: one header, floats to 9 significant digits."""
+    """A table as CSV (quoted where a cell needs it): one header, floats to 9 significant
+    digits."""
+    import csv
+
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    with path.open("w") as fh:
-        fh.write(",".join(columns) + "\n")
+    with path.open("w", newline="") as fh:
+        out = csv.writer(fh, lineterminator="\n")
+        out.writerow(columns)
         for row in rows:
-            fh.write(
-                ",".join(
-                    f"{row[c]:.9g}" if isinstance(row[c], float) else str(row[c]) for c in columns
-                )
-                + "\n"
-            )
+            out.writerow(f"{row[c]:.9g}" if isinstance(row[c], float) else row[c] for c in columns)
     return path
 
 
