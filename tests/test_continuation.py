@@ -239,21 +239,29 @@ def test_state_restore_mid_ramp_repeats_bit_for_bit():
 
 
 @pytest.mark.parametrize("f_rho", [0.85, 0.93, 0.97])
-def test_anchor_expansion_error_at_the_renewal_threshold(f_rho):
-    # k, K(m), E(m) from the second-order anchor expansion against scipy at Δk/k = ANCHOR_DRIFT
+@pytest.mark.parametrize(
+    ("threshold", "rel"),
+    [
+        # beyond ANCHOR_DRIFT an anchor is renewed for the next step
+        ("ANCHOR_DRIFT", 2e-12),
+        # a step is solved again only beyond ANCHOR_REDO: up to there the error stays < 2e-11
+        ("ANCHOR_REDO", 2e-11),
+    ],
+)
+def test_anchor_expansion_error_at_its_thresholds(f_rho, threshold, rel):
+    # k, K(m), E(m) from the second-order anchor expansion against scipy at Δk/k = threshold
     k0 = ellipticity(f_rho)
     anchor = continuation.Anchor(k0)
-    k_true = k0 * (1.0 + continuation.ANCHOR_DRIFT)
-    df = curvature_difference_of_ellipticity(k_true) - anchor.f
-    q = df / anchor.f1
+    k_true = k0 * (1.0 + getattr(continuation, threshold))
+    q = (curvature_difference_of_ellipticity(k_true) - anchor.f) / anchor.f1
     k = anchor.k + q * (1.0 - 0.5 * anchor.f2 * q / anchor.f1)
     dm = (1.0 - 1.0 / k**2) - anchor.m
     m_true = 1.0 - 1.0 / k_true**2
-    assert k == pytest.approx(k_true, rel=2e-12)
+    assert k == pytest.approx(k_true, rel=rel)
     k_int = anchor.k_int + (anchor.k1 + 0.5 * anchor.k2 * dm) * dm
     e_int = anchor.e_int + (anchor.e1 + 0.5 * anchor.e2 * dm) * dm
-    assert k_int == pytest.approx(float(ellipk(m_true)), rel=2e-12)
-    assert e_int == pytest.approx(float(ellipe(m_true)), rel=2e-12)
+    assert k_int == pytest.approx(float(ellipk(m_true)), rel=rel)
+    assert e_int == pytest.approx(float(ellipe(m_true)), rel=rel)
 
 
 def test_anchor_derivatives_against_finite_differences():
@@ -403,24 +411,6 @@ def test_contact_terms_derivatives_against_finite_differences():
             assert t0[i + 3] == pytest.approx((fp[i] - fm[i]) / (2 * h), rel=1e-6)
             second = (gp2[i] - 2 * t0[i] + gm2[i]) / h2**2
             assert 2 * t0[i + 2] == pytest.approx(second, rel=1e-3, abs=1e-9 * abs(t0[i]))
-
-
-@pytest.mark.parametrize("f_rho", [0.85, 0.93, 0.97])
-def test_anchor_expansion_error_at_the_redo_threshold(f_rho):
-    # beyond ANCHOR_DRIFT an anchor is renewed for the next step; a step is solved again only
-    # beyond ANCHOR_REDO: up to there the expansion's error stays below 2e-11
-    k0 = ellipticity(f_rho)
-    anchor = continuation.Anchor(k0)
-    k_true = k0 * (1.0 + continuation.ANCHOR_REDO)
-    q = (curvature_difference_of_ellipticity(k_true) - anchor.f) / anchor.f1
-    k = anchor.k + q * (1.0 - 0.5 * anchor.f2 * q / anchor.f1)
-    dm = (1.0 - 1.0 / k**2) - anchor.m
-    m_true = 1.0 - 1.0 / k_true**2
-    assert k == pytest.approx(k_true, rel=2e-11)
-    k_int = anchor.k_int + (anchor.k1 + 0.5 * anchor.k2 * dm) * dm
-    e_int = anchor.e_int + (anchor.e1 + 0.5 * anchor.e2 * dm) * dm
-    assert k_int == pytest.approx(float(ellipk(m_true)), rel=2e-11)
-    assert e_int == pytest.approx(float(ellipe(m_true)), rel=2e-11)
 
 
 @pytest.mark.parametrize("name", ["yu_printed", "ning_solid"])
