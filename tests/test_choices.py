@@ -45,7 +45,7 @@ def test_every_choice_is_a_structural_choice_with_named_items(fmus):
     assert set(items) == choices | {"temperature_mode"}  # the FMU's own choice of inputs
     assert list(items["temperature_mode"]) == ["uniform", "housing_shaft", "parts"]
     assert list(items["lubrication"]) == ["grease", "solid"]
-    assert list(items["arrangement"]) == ["face_to_face", "back_to_back"]
+    assert list(items["arrangement"]) == ["face_to_face", "back_to_back", "tandem"]
     assert list(items["preload_method"]) == ["shim", "force", "spring"]
     assert items["loop_model"]["yoke"] == parameter("loop_model").item("yoke") == 2
     assert list(items["friction_model"]) == ["yu2017", "skf2004", "ehl_per_contact"]

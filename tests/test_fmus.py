@@ -330,6 +330,16 @@ def test_bad_tunable_parameter_then_fixed(fmus):
             {"preload_method": "spring"},
             "preload_method = spring needs spring_stiffness > 0 N/m (got 0.0)",
         ),
+        (  # a tandem pair is preloaded by a force or a spring (physics/preload.py)
+            "BearingFriction",
+            {"arrangement": "tandem"},
+            "arrangement = tandem needs preload_method = spring or force (got shim)",
+        ),
+        (  # the screw pushes both ways: its support pair is opposed
+            "ActuatorStiffness",
+            {"support_arrangement": "tandem"},
+            "support pair: support_arrangement = 'tandem' is not valid for the screw's support",
+        ),
         (
             "ActuatorStiffness",
             {"support_ball_diameter": 7e-3},

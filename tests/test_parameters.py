@@ -120,7 +120,8 @@ def test_resolve_applies_presets_first_then_numbers():
         ({"preload_method": "force"}, "preload_method = force needs assembly_preload > 0 N"),
         ({"housing_outer_diameter": 20e-3}, "housing_outer_diameter = 0.02 m must exceed"),
         ({"n_balls": 15.5}, "n_balls = 15.5 must be an integer"),
-        ({"arrangement": "tandem"}, "arrangement = 'tandem' is not one of"),
+        ({"arrangement": "side_by_side"}, "arrangement = 'side_by_side' is not one of"),
+        ({"arrangement": "tandem"}, "arrangement = tandem needs preload_method = spring or"),
     ],
 )
 def test_an_inconsistent_set_is_refused_naming_its_values(changes, message):

@@ -30,7 +30,7 @@ from servofmu.fmus.part_temperatures import (
     temperatures,
 )
 from servofmu.fmus.slave import ServoSlave, Var, output, real_input, real_parameter, spec_parameter
-from servofmu.physics.actuator import Actuator, ActuatorModel
+from servofmu.physics.actuator import Actuator, ActuatorModel, check_support_pair
 from servofmu.physics.actuator import output_angle as mechanism_output_angle
 from servofmu.physics.bearing_parameters import (
     STATE_PARAMETERS,
@@ -359,6 +359,7 @@ class ActuatorStiffness(ServoSlave):
                 values[p.name.removeprefix("support_")] = p.key(value) if p.choices else value
             try:
                 support = pair_from_parameters(values)
+                check_support_pair(support)
             except ValueError as exc:  # the pair's names are this FMU's support_<name>
                 named = _SUPPORT_NAMES.sub(r"support_\1", str(exc))
                 raise ValueError(f"support pair: {named}") from None

@@ -205,7 +205,11 @@ class BearingFriction(ServoSlave):
             depends=(*_TEMPS, "speed"),
             groups=("fit", "lubrication", "lubricant", "grease"),
         ),
-        _out("preload", "Axial force in the preload loop", "N"),
+        _out(
+            "preload",
+            "Axial force in the preload loop ((F_A + F_B)/2; tandem: half the thrust)",
+            "N",
+        ),
         _out("contact_angle", "Operating contact angle of bearing A", "rad", "deg"),
         _out(
             "radial_clearance",

@@ -549,6 +549,21 @@ def stiffness_breakdown(
 SMALLEST_SCREW_FORCE = 1.0
 
 
+def check_support_pair(pair) -> None:
+    """ValueError unless :class:`~.pair.BearingPair` ``pair`` can support the screw: the screw
+    pushes both ways, so its pair must be opposed (a tandem pair carries thrust one way).
+
+    >>> from servofmu.physics.bearing import BearingPair
+    >>> check_support_pair(BearingPair.from_catalog("liu2014_screw_support", "mos2_film"))
+    """
+    if pair.mounting.arrangement == "tandem":
+        raise ValueError(
+            "arrangement = 'tandem' is not valid for the screw's support pair: the screw pushes "
+            "both ways and a tandem pair carries thrust one way (valid: face_to_face, "
+            "back_to_back)"
+        )
+
+
 @functools.lru_cache(maxsize=8)
 def _support_pair(mounting: str):
     from .bearing import BearingPair
@@ -603,6 +618,7 @@ class ActuatorModel:
             from .bearing import BearingModel
 
             pair = support_pair or _support_pair(act.support_mounting)
+            check_support_pair(pair)
             self._bearings = BearingModel(pair)
         self._y1 = float(act.slide_offset)
         self._screw_ratio = 2.0 * math.pi * act.crank_length / act.screw_lead  # i_s (eq 1)

@@ -11,7 +11,7 @@ Where each part lives (Yu 2017 §1–3; Ning §1–2):
 - :mod:`.continuation` — the same equations solved per step from the previous step's
   solution, on floats;
 - here, :class:`BearingModel`: the per-step evaluation an FMU calls, continuation first and
-  the exact path when the warm start fails.
+  the exact path when the warm start fails (a tandem pair: the exact path every step).
 
 The names of :mod:`.pair` and :mod:`.pair_state` are re-exported here, so that
 ``from servofmu.physics.bearing import BearingPair, thermal_state`` keeps working.
@@ -31,6 +31,7 @@ from .pair import (
     BearingPair,
     assembly_geometry,
     effective_shim,
+    is_tandem,
     loop_closure,
     loop_stiffness,
     with_mounting,
@@ -66,6 +67,7 @@ __all__ = [
     "axial_load_state",
     "bearing_outputs",
     "effective_shim",
+    "is_tandem",
     "load_state",
     "loop_closure",
     "loop_stiffness",
@@ -113,10 +115,11 @@ class BearingModel:
     The thermal and load state is solved by continuation from the previous call
     (:class:`continuation.PairSolver`); the exact path (:func:`thermal_state`,
     :func:`load_state`) solves the first call, and any call whose warm start fails, and seeds
-    the continuation again. A call whose temperatures and loads equal the previous call's
-    reuses its state (:class:`~.pair_state.PointState`): a change of speed alone costs only
-    the speed terms; a call whose temperatures equal the previous call's reuses the thermal
-    state.
+    the continuation again. A tandem pair (:func:`is_tandem`) has no continuation: the exact
+    path solves every call whose temperatures or loads changed. A call whose temperatures and
+    loads equal the previous call's reuses its state (:class:`~.pair_state.PointState`): a
+    change of speed alone costs only the speed terms; a call whose temperatures equal the
+    previous call's reuses the thermal state.
 
     Attributes
     ----------
@@ -162,8 +165,19 @@ class BearingModel:
 
     # ---------------------------------------------------------------- per step
     def _exact(self, th, temps, axial_load: float, radial_load: float) -> PointState:
-        th_exact = to_floats(thermal_state(self.pair, PartTemperatures(*temps)))
-        ls = to_floats(load_state(self.pair, th_exact, axial_load, radial_load))
+        """The exact path's state, seeding the continuation at the thermal state ``th``
+        (floats; None: no seed)."""
+        try:
+            th_exact = to_floats(thermal_state(self.pair, PartTemperatures(*temps)))
+            ls = to_floats(load_state(self.pair, th_exact, axial_load, radial_load))
+        except (ValueError, ArithmeticError) as exc:
+            raise ValueError(
+                f"no state at temperatures (housing, shaft, outer ring, inner ring) = "
+                f"{temps} K, axial_load = {axial_load!r} N, radial_load = "
+                f"{radial_load!r} N: {exc}"
+            ) from exc
+        if th is None:
+            return PointState.exact(self.pair, th_exact, ls)
         p = 0.5 * (ls.offset_a + ls.offset_b)
         z = 0.5 * (ls.offset_a - ls.offset_b)
         inputs = (*temps, axial_load, radial_load)
@@ -174,18 +188,14 @@ class BearingModel:
         return PointState.exact(self.pair, th_exact, ls)
 
     def _solve(self, temps, axial_load: float, radial_load: float) -> PointState:
+        if is_tandem(self.pair):  # no continuation for a tandem pair: every step is exact
+            self.exact_steps += 1
+            return self._exact(None, temps, axial_load, radial_load)
         th = self._th if temps == self._temps else thermal_floats(self.solver.c, temps)
         point = self.solver.solve(th, axial_load, radial_load)
         if point is None:
             self.exact_steps += 1
-            try:
-                point = self._exact(th, temps, axial_load, radial_load)
-            except (ValueError, ArithmeticError) as exc:
-                raise ValueError(
-                    f"no state at temperatures (housing, shaft, outer ring, inner ring) = "
-                    f"{temps} K, axial_load = {axial_load!r} N, radial_load = "
-                    f"{radial_load!r} N: {exc}"
-                ) from exc
+            point = self._exact(th, temps, axial_load, radial_load)
         self._th = th
         return point
 

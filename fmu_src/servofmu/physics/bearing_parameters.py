@@ -54,7 +54,7 @@ from .parameter_table import (
     parameters_in,
     spec,
 )
-from .preload import ARRANGEMENTS, LoopMember, PreloadLoop, YokeArm
+from .preload import ARRANGEMENTS, TANDEM, LoopMember, PreloadLoop, YokeArm
 from .presets import (
     DEFAULT_LUBRICANT,
     DEFAULT_MOUNTING,
@@ -182,8 +182,8 @@ def parameter_problems(p: Mapping[str, object]) -> list[str]:
     """Every inconsistency of a parameter set (after :func:`_checked`), each naming the
     values: a geometry that cannot be a bearing (:func:`geometry.bearing_geometry_problems`),
     seats that do not surround the rings, ν100 ≥ ν40, a spring preload without a stiffness or
-    compression, a force preload without a force, a yoke without arms, a loop with nothing
-    in it.
+    compression, a force preload without a force, a tandem pair preloaded by a shim, a yoke
+    without arms, a loop with nothing in it.
 
     >>> p = default_parameters() | {"preload_method": "spring", "spring_stiffness": 0.0}
     >>> parameter_problems(p)[0]
@@ -220,6 +220,11 @@ def parameter_problems(p: Mapping[str, object]) -> list[str]:
     if method == "force" and not p["assembly_preload"] > 0:
         found.append(
             f"preload_method = force needs assembly_preload > 0 N (got {p['assembly_preload']!r})"
+        )
+    if p["arrangement"] == TANDEM and method == "shim":
+        found.append(
+            "arrangement = tandem needs preload_method = spring or force (got shim): a tandem "
+            "pair has no opposed bearing to be shimmed against"
         )
     if p["loop_reading"] == "printed" and not (p["housing_length"] and p["shaft_length"]):
         found.append("loop_reading = printed needs a housing and a shaft member (lengths > 0)")
@@ -292,6 +297,8 @@ def _loop(p: Mapping, bearing: BallBearing, housing: Material, shaft: Material) 
         ("bearings", "bearings", bearing.ring_material),
         ("spacer", "spacer", spacer),
     ):
+        if kind not in arrangement:  # a tandem pair's rings lie in both paths and cancel
+            continue
         if kind == "bearings":
             if printed:
                 continue

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 from ._checks import check_positive, check_temperature
 from .fits import RadialFit
-from .preload import ARRANGEMENTS, PreloadLoop, arrangement_problems
+from .preload import ARRANGEMENTS, TANDEM, PreloadLoop, arrangement_problems
 
 #: How the preload is set at assembly: a rigid shim (axial interference), a force at the
 #: assembly temperature (the shim that gives it, then rigid: a nut tightened to a force), or a
@@ -29,8 +29,9 @@ class Mounting:
     loop : :class:`preload.PreloadLoop`
     assembly_preload : preload at T0 [N]; when given, the shim is derived from it
     provenance : ((field, source), ...)
-    arrangement : :data:`~.preload.ARRANGEMENTS`: "face_to_face" or "back_to_back"; the
-        loop members' roles must agree with it
+    arrangement : :data:`~.preload.ARRANGEMENTS`: "face_to_face", "back_to_back" or
+        "tandem" (then preloaded by a spring or a force); the loop members' roles must agree
+        with it
     """
 
     key: str
@@ -52,6 +53,11 @@ class Mounting:
                 f"arrangement = {self.arrangement!r} is not one of {sorted(ARRANGEMENTS)}"
             )
         problems = arrangement_problems(self.loop, self.arrangement)
+        if self.arrangement == TANDEM and self.assembly_preload is None:
+            problems.append(
+                "a tandem pair has no opposed bearing to be shimmed against: its preload is "
+                "a spring or a force (preload_method = spring or force)"
+            )
         if problems:
             raise ValueError(f"mounting {self.key!r}: " + "; ".join(problems))
 

@@ -38,8 +38,15 @@ from .friction_models import (
     skf_torques,
 )
 from .geometry import RaceGeometry
-from .pair import BearingPair, loop_closure, loop_stiffness
-from .preload import pair_axial_stiffness, pair_equilibrium, pair_offsets
+from .pair import BearingPair, is_tandem, loop_closure, loop_stiffness, tandem_preload
+from .preload import (
+    pair_axial_stiffness,
+    pair_equilibrium,
+    pair_offsets,
+    tandem_axial_stiffness,
+    tandem_equilibrium,
+    tandem_offsets,
+)
 from .temperatures import PARTS, PartTemperatures, part_temperatures
 
 
@@ -54,10 +61,11 @@ class ThermalState:
     geometry : mounted :class:`RaceGeometry`
     outer_fit_pressure, inner_fit_pressure : Lamé pressures [Pa]
     outer_interference, inner_interference : diametral fit interferences at T [m]
-    closure : loop closure C [m]
-    loop_stiffness : k_loop [N/m]
+    closure : loop closure C [m] (a tandem pair: the mismatch d of B relative to A)
+    loop_stiffness : k_loop [N/m] (a tandem pair: its preload spring's k_s, 0 for a force)
     kinematic_viscosity : ν [m²/s] (0 for a dry film)
-    preload_offset : offset of each bearing at zero external load [m]
+    preload_offset : offset of bearing A at zero external load [m] (B's too, but in a tandem
+        pair: the closure more)
     """
 
     temperatures: PartTemperatures
@@ -116,8 +124,12 @@ def thermal_state(pair: BearingPair, temperature) -> ThermalState:
         pair.bearing, m.fit, temps, m.assembly_temperature, pair.thermal_coupling
     )
     closure = loop_closure(pair, temps)
-    k = loop_stiffness(pair)
-    offsets = pair_offsets(mounted.race, closure, k, 0.0)
+    if is_tandem(pair):
+        k, thrust = tandem_preload(pair)
+        offsets = tandem_offsets(mounted.race, closure, k, thrust, 0.0)
+    else:
+        k = loop_stiffness(pair)
+        offsets = pair_offsets(mounted.race, closure, k, 0.0)
     t_lub = np.asarray(temps.lubricant)
     visc = (
         np.zeros_like(t_lub)
@@ -145,7 +157,7 @@ class LoadState:
     Attributes
     ----------
     force_a, force_b : axial forces of bearings A and B [N]
-    preload : loop force (F_A + F_B)/2 [N]
+    preload : loop force (F_A + F_B)/2 [N] (a tandem pair: half the thrust it carries)
     contact_angle : load-weighted operating contact angle of bearing A [rad] (the free
         contact angle when A carries no load)
     axial_stiffness : stiffness of the shaft in the pair [N/m]
@@ -153,7 +165,8 @@ class LoadState:
     overloaded, locked, unloaded : the flags of :func:`state_flags`
     torques : speed-independent torques of both bearings (:class:`friction.BallSetTorques`)
     axial_displacement : axial displacement of the shaft from its unloaded position,
-        z = (a_A − a_B)/2 [m] (positive towards bearing A)
+        z = (a_A − a_B)/2 [m] (positive towards bearing A; a tandem pair: a_A less its
+        offset at zero external load, positive along the thrust)
     converged : the load equilibrium was solved
     offset_a, offset_b : axial offsets of the groove curvature centres of A and B [m]
     radial_a, radial_b : radial displacements of the shaft in A and B [m]
@@ -292,7 +305,14 @@ def load_state(pair: BearingPair, thermal: ThermalState, axial_load=0.0, radial_
     f_r = check_finite("radial_load", radial_load, "N")
     if np.any(np.asarray(f_r) != 0):
         return _combined_load_state(pair, thermal, float(f_ext), float(f_r))
-    if np.all(np.asarray(f_ext) == 0):
+    if is_tandem(pair) and np.all(np.asarray(f_ext) == 0):
+        a_a = thermal.preload_offset
+        a_b = a_a + thermal.closure
+    elif is_tandem(pair):
+        k, thrust = tandem_preload(pair)
+        off = tandem_offsets(thermal.geometry, thermal.closure, k, thrust, f_ext)
+        a_a, a_b = off.offset_a, off.offset_b
+    elif np.all(np.asarray(f_ext) == 0):
         a_a = a_b = thermal.preload_offset
     else:
         off = pair_offsets(thermal.geometry, thermal.closure, thermal.loop_stiffness, f_ext)
@@ -331,22 +351,43 @@ def axial_load_state(pair: BearingPair, thermal: ThermalState, offset_a, offset_
         force_b=sb.axial_force,
         preload=0.5 * (sa.axial_force + sb.axial_force),
         contact_angle=angle,
-        axial_stiffness=pair_axial_stiffness(sa.axial_stiffness, sb.axial_stiffness, k),
+        axial_stiffness=_pair_stiffness(pair, sa.axial_stiffness, sb.axial_stiffness, k),
         max_contact_pressure=p_max,
         **state_flags(pair, geom.clearance, p_max, sa.axial_force, sb.axial_force),
         torques=t,
-        axial_displacement=0.5 * (np.asarray(offset_a) - np.asarray(offset_b)),
+        axial_displacement=_displacement(pair, thermal, offset_a, offset_b),
         offset_a=np.asarray(offset_a),
         offset_b=np.asarray(offset_b),
         rolling=rolling,
     )
 
 
+def _pair_stiffness(pair: BearingPair, ka, kb, k):
+    """Axial stiffness of the shaft [N/m] from the bearings' ``ka``, ``kb`` and the loop's
+    (a tandem pair: the spring's) ``k`` [N/m]."""
+    if is_tandem(pair):
+        return tandem_axial_stiffness(ka, kb, k)
+    return pair_axial_stiffness(ka, kb, k)
+
+
+def _displacement(pair: BearingPair, thermal: ThermalState, offset_a, offset_b):
+    """Axial displacement of the shaft from its unloaded position [m], positive towards A:
+    (a_A − a_B)/2; a tandem pair: a_A less its offset at zero external load, positive along
+    the thrust."""
+    if is_tandem(pair):
+        return np.asarray(offset_a) - np.asarray(thermal.preload_offset)
+    return 0.5 * (np.asarray(offset_a) - np.asarray(offset_b))
+
+
 def _combined_load_state(pair, thermal, f_ext, f_r) -> LoadState:
     if np.ndim(thermal.temperature):
         raise ValueError("a radial load needs a scalar temperature (one thermal state)")
     geom, k = thermal.geometry, thermal.loop_stiffness
-    st = pair_equilibrium(geom, float(thermal.closure), k, f_ext, f_r)
+    if is_tandem(pair):
+        st = tandem_equilibrium(geom, float(thermal.closure), k, tandem_preload(pair)[1],
+                                f_ext, f_r)  # fmt: skip
+    else:
+        st = pair_equilibrium(geom, float(thermal.closure), k, f_ext, f_r)
     la, lb = st.balls_a, st.balls_b
     t = _add(
         _torques(pair, geom, la.load, la.contact_angle, la.inner, la.outer),
@@ -375,11 +416,11 @@ def _combined_load_state(pair, thermal, f_ext, f_r) -> LoadState:
         force_b=fb,
         preload=0.5 * (fa + fb),
         contact_angle=angle,
-        axial_stiffness=float(pair_axial_stiffness(ka, kb, k)),
+        axial_stiffness=float(_pair_stiffness(pair, ka, kb, k)),
         max_contact_pressure=p_max,
         **state_flags(pair, geom.clearance, p_max, fa, fb, st.converged),
         torques=t,
-        axial_displacement=0.5 * (st.offset_a - st.offset_b),
+        axial_displacement=float(_displacement(pair, thermal, st.offset_a, st.offset_b)),
         converged=st.converged,
         offset_a=st.offset_a,
         offset_b=st.offset_b,

@@ -116,6 +116,13 @@ _ARRANGEMENTS = (
         "DB (O): the shaft between shoulder and nut is stretched by the preload; a growing "
         "shaft relieves the preload, a growing housing raises it",
     ),
+    Choice(
+        "tandem",
+        "tandem",
+        "DT: both bearings face the same way and share the thrust of a spring or force preload "
+        "(preload_method spring or force) and the axial load; a shaft growing against the "
+        "housing between them shifts the thrust onto bearing B",
+    ),
 )
 _PRELOAD_METHODS = (
     Choice("shim", "shim", "rigid: the shim (axial interference) sets the preload"),
@@ -297,14 +304,16 @@ def _table() -> tuple[ParameterSpec, ...]:
         # ---- the axial preload loop (Yu eq 14-15); group loop
         _choice(
             "arrangement",
-            "How the two bearings face each other (decides which parts' growth raises the preload)",
+            "How the two bearings face each other (decides which parts' growth raises the preload, "
+            "or in tandem how the thrust is shared)",
             "loop",
             "Arrangement",
             _ARRANGEMENTS,
         ),
         _length(
             "housing_length",
-            "Housing in the loop: between the outer-ring abutments (0: none)",
+            "Housing in the loop: between the outer-ring abutments (tandem: between the two "
+            "outer rings; 0: none)",
             "loop",
         ),
         _real(
@@ -317,7 +326,10 @@ def _table() -> tuple[ParameterSpec, ...]:
             10.0,
         ),
         _length(
-            "shaft_length", "Shaft in the loop: between the inner-ring abutments (0: none)", "loop"
+            "shaft_length",
+            "Shaft in the loop: between the inner-ring abutments (tandem: between the two inner "
+            "rings; 0: none)",
+            "loop",
         ),
         _real(
             "shaft_area",

@@ -2,9 +2,10 @@
 Ning §2.2).
 
 The two bearings (A and B, face-to-face or back-to-back: identical for axial and radial
-loads, tilt is not modelled) sit in a closed loop of parts: "opening" members (Yu: the frame
-of length L + 2·b0) whose growth relieves the preload, and "closing" members (Yu: the shaft L
-and the two bearing widths; Ning: the bearings and the spacer) whose growth increases it.
+loads, tilt is not modelled; tandem below) sit in a closed loop of parts: "opening" members
+(Yu: the frame of length L + 2·b0) whose growth relieves the preload, and "closing" members
+(Yu: the shaft L and the two bearing widths; Ning: the bearings and the spacer) whose growth
+increases it.
 
 Compatibility (Yu eq 14–15 rewritten with the general geometry of :mod:`geometry`):
 
@@ -16,6 +17,13 @@ after the play is taken up), σ_j = +1 for opening and −1 for closing members,
 the loop force and k_loop the structural axial stiffness of the loop (Yu eq 15's 1/C1, by
 default Σ L/(E·A) of the members with a section; a compliant yoke is modelled by setting it).
 Equilibrium adds F_A − F_B = F_ext.
+
+A tandem pair (both bearings facing the same way, :data:`ARRANGEMENTS`) has no such loop: a
+spring or a constant force pushes the set, the two bearings share that thrust and the
+external load, and the members between them only set how far B sits along the thrust
+relative to A (:func:`tandem_offsets`, :func:`tandem_equilibrium`):
+
+    F_A(a_A) + F_B(a_A + d) + k_s·a_A = T + F_ext,   d(T) = s − Σ_j σ_j·L_j·α_j·(T_j − T0)
 
 Notes on the printed equations:
 - Yu eq 14 assigns steel's expansion and modulus to the frame and aluminium's to the shaft,
@@ -35,7 +43,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
+from scipy.optimize import brentq, root
 from scipy.optimize.elementwise import bracket_root, find_root
 
 from ._checks import (
@@ -229,18 +237,32 @@ class PreloadLoop:
 #:   compressed. A growing shaft relieves the preload, a growing housing increases it
 #:   (Ning's space shaft).
 #:
+#: - tandem (DT): both bearings face the same way and share one thrust; they cannot preload
+#:   each other. The preload is a force on the set (a spring, or a constant force: the
+#:   ``assembly_preload``), so the loop between the two bearings does not close on them: its
+#:   members set how far bearing B is displaced along the thrust relative to A,
+#:   a_B − a_A = s − Σ σ_j·L_j·α_j·(T_j − T0) (:func:`tandem_offsets`). The inner path (shaft,
+#:   an inner spacer) is "closing": its growth moves B's inner ring further along the thrust
+#:   than A's, so B (the bearing further along the thrust) takes more of it; the housing (and
+#:   an outer spacer, entered as housing length) is "opening". The rings' widths lie in both
+#:   paths and cancel, so a tandem loop has no "bearings" member.
+#:
 #: So the shaft's axial growth relative to the housing raises the preload of a face-to-face
 #: pair and lowers that of a back-to-back pair (SKF, "Angular contact ball bearings: bearing
 #: arrangements"; Harris & Kotzalas 2007, *Advanced Concepts*, ch. 1 on preloading): with the
 #: same parts and temperatures the thermal terms of the shaft and the housing change sign
-#: between the two (tests/test_preload.py). The radial effects (fits, ring growth) are the
-#: same in both.
+#: between the two (tests/test_preload.py). In a tandem pair it leaves the thrust alone and
+#: shifts it between the bearings (tests/test_tandem.py). The radial effects (fits, ring
+#: growth) are the same in all three.
 ARRANGEMENTS = {
     "face_to_face": {"housing": "opening", "shaft": "closing", "spacer": "closing",
                      "bearings": "closing"},
     "back_to_back": {"housing": "closing", "shaft": "opening", "spacer": "closing",
                      "bearings": "closing"},
+    "tandem": {"housing": "opening", "shaft": "closing", "spacer": "closing"},
 }  # fmt: skip
+#: The arrangement whose bearings share a thrust instead of preloading each other.
+TANDEM = "tandem"
 #: Member kind by member name.
 MEMBER_KINDS = {"frame": "housing", "housing": "housing", "shaft": "shaft", "spacer": "spacer",
                 "bearings": "bearings"}  # fmt: skip
@@ -266,18 +288,34 @@ def member_role(name: str, arrangement: str) -> str:
     ('closing', 'opening')
     """
     check_choice("arrangement", arrangement, ARRANGEMENTS)
-    return ARRANGEMENTS[arrangement][member_kind(name)]
+    kind = member_kind(name)
+    if kind not in ARRANGEMENTS[arrangement]:
+        raise ValueError(
+            f"a {arrangement} pair has no loop member of kind {kind!r} (the rings' widths lie "
+            "in both paths between its bearings and cancel)"
+        )
+    return ARRANGEMENTS[arrangement][kind]
 
 
 def arrangement_problems(loop: PreloadLoop, arrangement: str) -> list[str]:
-    """Every member of ``loop`` whose role contradicts ``arrangement`` (empty: none)."""
+    """Every member of ``loop`` whose role contradicts ``arrangement``, or that a tandem pair
+    cannot have (empty: none)."""
     check_choice("arrangement", arrangement, ARRANGEMENTS)
-    return [
-        f"loop member {m.name!r} has role {m.role!r}, but in a {arrangement} pair it is "
-        f"{member_role(m.name, arrangement)!r}"
-        for m in loop.members
-        if m.name in MEMBER_KINDS and m.role != member_role(m.name, arrangement)
-    ]
+    found = []
+    for m in loop.members:
+        if m.name not in MEMBER_KINDS:
+            continue
+        if member_kind(m.name) not in ARRANGEMENTS[arrangement]:
+            found.append(
+                f"loop member {m.name!r} cannot be in a {arrangement} pair (the rings' widths "
+                "lie in both paths between its bearings and cancel)"
+            )
+        elif m.role != member_role(m.name, arrangement):
+            found.append(
+                f"loop member {m.name!r} has role {m.role!r}, but in a {arrangement} pair it "
+                f"is {member_role(m.name, arrangement)!r}"
+            )
+    return found
 
 
 #: Smallest loop stiffness [N/m] accepted: below it the loop carries no preload worth the
@@ -475,8 +513,6 @@ def pair_equilibrium(
     compatibility of :func:`pair_offsets`. Newton–Powell (scipy.optimize.root, hybr) with the
     analytic stiffness, started from the axial solution. Jones (1960) ball loads per bearing.
     """
-    from scipy.optimize import root
-
     from .equilibrium import _ball_loads, _ring_stiffness
 
     f_ext = check_finite("axial_load", axial_load, "N")
@@ -494,10 +530,8 @@ def pair_equilibrium(
         lb = _ball_loads(geom, np.atleast_1d(p - z)[:, None], np.atleast_1d(db)[:, None], zero)
         return la, lb
 
-    la0, _ = loads(float(start.offset_a[()] + start.offset_b[()]) / 2, 0.0, 0.0, 0.0)
-    krr = float(_ring_stiffness(geom, la0)[0, 1, 1])
-    dr0 = 0.5 * f_r / krr if krr > 0 else np.sign(f_r) * 0.5 * max(float(geom.clearance), 0.0)
     p0 = 0.5 * float(start.offset_a[()] + start.offset_b[()])
+    dr0 = _radial_start(geom, p0, f_r)
     z0 = 0.5 * float(start.offset_a[()] - start.offset_b[()])
 
     def unpack(x):
@@ -532,6 +566,29 @@ def pair_equilibrium(
         return np.array(res) / scale, jac / scale
 
     x0 = np.array([z0, dr0, dr0]) / a_len if rigid else np.array([p0, z0, dr0, dr0]) / a_len
+    x, resid = _best_root(fun, x0)
+    p, z, da, db = unpack(x)
+    la, lb = loads(p, z, da, db)
+    return PairState(p + z, p - z, da, db, la, lb, resid < 1e-9)
+
+
+def _radial_start(geom: RaceGeometry, offset: float, radial_load: float) -> float:
+    """Start δr [m] of a bearing at axial offset ``offset`` [m] carrying half of
+    ``radial_load`` [N]: from its radial stiffness there, or half the clearance without
+    contact."""
+    from .equilibrium import _ball_loads, _ring_stiffness
+
+    zero = np.zeros(1)
+    balls = _ball_loads(geom, np.atleast_1d(offset)[:, None], zero[:, None], zero)
+    krr = float(_ring_stiffness(geom, balls)[0, 1, 1])
+    if krr > 0:
+        return 0.5 * radial_load / krr
+    return np.sign(radial_load) * 0.5 * max(float(geom.clearance), 0.0)
+
+
+def _best_root(fun, x0):
+    """(x, largest scaled residual) of scipy.optimize.root on ``fun`` (residuals and their
+    Jacobian) from ``x0``: Powell's hybrid method, then Levenberg–Marquardt when it misses."""
     best = None
     for method in ("hybr", "lm"):
         sol = root(fun, x0, jac=True, method=method, options={"xtol": 1e-14})
@@ -540,6 +597,158 @@ def pair_equilibrium(
             best = (sol.x, resid)
         if resid < 1e-9:
             break
-    p, z, da, db = unpack(best[0])
-    la, lb = loads(p, z, da, db)
-    return PairState(p + z, p - z, da, db, la, lb, best[1] < 1e-9)
+    return best
+
+
+def tandem_offsets(
+    geom: RaceGeometry, mismatch, spring_stiffness: float, thrust, external_load=0.0
+) -> PairOffsets:
+    """Offsets and forces of a tandem pair (:data:`TANDEM`: both bearings face the same way)
+    under its preload and an axial load F_ext [N] along its thrust (elementwise over arrays).
+
+    The set is pushed by a preload spring of stiffness k_s [N/m] (0: a constant force) whose
+    force is P = T − k_s·a_A, with ``thrust`` T = k_s·(c + a_A0) [N] fixed at assembly (c the
+    spring's compression, a_A0 the assembly offset; T = P for a constant force). Bearing B is
+    displaced along the thrust by the ``mismatch`` d [m] relative to A (s − Σ σ·L·α·ΔT of the
+    members between them, :func:`loop_interference`); the spacers between the bearings are
+    taken as rigid against the bearings. Unknown a = a_A, with a_B = a + d:
+
+        F(a) + F(a + d) + k_s·a = T + F_ext
+
+    rises with a (F non-decreasing), so a bracketing root cannot fail (scipy.optimize
+    .elementwise.find_root). Jones (1960) / Harris & Kotzalas (2007) for F; the load sharing
+    of a tandem set is the textbook one (Harris & Kotzalas, *Essential Concepts*, ch. on
+    bearing arrangements: equal shares for equal bearings and d = 0).
+
+    Returns
+    -------
+    PairOffsets
+        offset_a, offset_b [m]; force_a, force_b [N]; loop_force (F_A + F_B)/2 [N].
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> o = tandem_offsets(g, 0.0, 0.0, 40.0)
+    >>> round(float(o.force_a), 6), round(float(o.force_b), 6)  # equal shares, N
+    (20.0, 20.0)
+    """
+    d = np.asarray(check_finite("mismatch", mismatch, "m"), dtype=float)
+    f_ext = np.asarray(check_finite("external_load", external_load, "N"), dtype=float)
+    t = np.asarray(check_finite("thrust", thrust, "N"), dtype=float)
+    ks = float(check_nonnegative("spring_stiffness", spring_stiffness, "N/m"))
+    shape = np.broadcast_shapes(d.shape, f_ext.shape, t.shape, np.shape(geom.clearance))
+    d = np.broadcast_to(d, shape)
+    target = np.broadcast_to(t + f_ext, shape)
+    args = _geometry_args(geom, shape)
+
+    def residual(a, dd, ff, *g):
+        gg = _geometry_from_args(g, geom.n_balls, geom.compliance)
+        return axial_force(a, gg) + axial_force(a + dd, gg) + ks * a - ff
+
+    step = 0.01 * np.broadcast_to(geom.curvature_distance, shape)
+    lo = np.minimum(0.0, -d) - step
+    hi = np.maximum(0.0, -d) + step
+    if shape == ():  # one state: scalar Brent (the per-step path), bracket widened as needed
+        dd, ff = float(d), float(target)
+        lo, hi = float(lo), float(hi)
+        while residual(lo, dd, ff, *args) > 0:
+            lo -= hi - lo
+        while residual(hi, dd, ff, *args) < 0:
+            hi += hi - lo
+        a = np.asarray(brentq(lambda x: float(residual(x, dd, ff, *args)), lo, hi, xtol=1e-16))
+        return PairOffsets(a, a + d, axial_force(a, geom), axial_force(a + d, geom))
+    br = bracket_root(residual, lo, hi, args=(d, target, *args))
+    a = find_root(residual, br.bracket, args=(d, target, *args), tolerances={"xatol": 1e-16}).x
+    return PairOffsets(a, a + d, axial_force(a, geom), axial_force(a + d, geom))
+
+
+def tandem_axial_stiffness(stiffness_a, stiffness_b, spring_stiffness: float):
+    """Axial stiffness of the shaft in a tandem pair [N/m]: K = k_A + k_B + k_s (the bearings
+    side by side, the preload spring relaxing as the shaft moves along the thrust; from
+    :func:`tandem_offsets`' condition).
+
+    Returns
+    -------
+    float or ndarray
+        K [N/m].
+
+    Examples
+    --------
+    >>> float(tandem_axial_stiffness(1.0e7, 1.2e7, 1.0e5))
+    22100000.0
+    """
+    ka = np.asarray(check_nonnegative("stiffness_a", stiffness_a, "N/m"))
+    kb = np.asarray(check_nonnegative("stiffness_b", stiffness_b, "N/m"))
+    return ka + kb + check_nonnegative("spring_stiffness", spring_stiffness, "N/m")
+
+
+def tandem_equilibrium(
+    geom: RaceGeometry,
+    mismatch: float,
+    spring_stiffness: float,
+    thrust: float,
+    axial_load: float,
+    radial_load: float,
+) -> PairState:
+    """Equilibrium of a tandem pair (:func:`tandem_offsets`) under an axial load F_ext [N] along
+    its thrust and a radial load F_r [N] shared equally by A and B (as
+    :func:`pair_equilibrium`). Scalar geometry.
+
+    Unknowns: a_A (a_B = a_A + d) and the radial displacements δr_A, δr_B [m]; equations
+    F_A + F_B + k_s·a_A = T + F_ext and Fr_A = Fr_B = F_r/2, solved by Newton–Powell
+    (scipy.optimize.root) with the analytic stiffness from the axial solution.
+
+    Returns
+    -------
+    PairState
+        Offsets and radial displacements [m], the per-ball loads, and whether the force balance
+        was met to a relative 1e-9.
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> st = tandem_equilibrium(g, 0.0, 0.0, 40.0, 0.0, 20.0)
+    >>> st.converged, round(float(st.balls_a.radial_force[0]), 9)  # each carries half, N
+    (True, 10.0)
+    """
+    from .equilibrium import _ball_loads, _ring_stiffness
+
+    f_ext = check_finite("axial_load", axial_load, "N")
+    f_r = check_finite("radial_load", radial_load, "N")
+    d = float(check_finite("mismatch", mismatch, "m"))
+    ks = float(check_nonnegative("spring_stiffness", spring_stiffness, "N/m"))
+    thrust = float(check_finite("thrust", thrust, "N"))
+    start = tandem_offsets(geom, d, ks, thrust, f_ext)
+    a_len = float(geom.curvature_distance)
+    a0 = float(start.offset_a[()])
+    scale = max(abs(thrust + f_ext), abs(f_r), 1e-3)
+    zero = np.zeros(1)
+
+    def loads(x):
+        a, da, db = x * a_len
+        la = _ball_loads(geom, np.atleast_1d(a)[:, None], np.atleast_1d(da)[:, None], zero)
+        lb = _ball_loads(geom, np.atleast_1d(a + d)[:, None], np.atleast_1d(db)[:, None], zero)
+        return la, lb
+
+    def fun(x):
+        la, lb = loads(x)
+        ja, jb = _ring_stiffness(geom, la)[0], _ring_stiffness(geom, lb)[0]
+        res = [
+            la.axial_force[0] + lb.axial_force[0] + ks * x[0] * a_len - thrust - f_ext,
+            la.radial_force[0] - 0.5 * f_r,
+            lb.radial_force[0] - 0.5 * f_r,
+        ]
+        jac = [
+            [ja[0, 0] + jb[0, 0] + ks, ja[0, 1], jb[0, 1]],
+            [ja[1, 0], ja[1, 1], 0.0],
+            [jb[1, 0], 0.0, jb[1, 1]],
+        ]
+        return np.array(res) / scale, np.array(jac) * a_len / scale
+
+    x0 = np.array([a0, _radial_start(geom, a0, f_r), _radial_start(geom, a0 + d, f_r)]) / a_len
+    x, resid = _best_root(fun, x0)
+    la, lb = loads(x)
+    a, da, db = x * a_len
+    return PairState(a, a + d, da, db, la, lb, resid < 1e-9)
