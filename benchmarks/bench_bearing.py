@@ -11,6 +11,10 @@
    the same temperatures (thermal_state + load_state + bearing_outputs per point, the exact
    path), measured in one run; the ratio is what matters.
 
+3. The same pair as a tandem set (``arrangement = tandem``, 40 N constant-force preload) on
+   the two ramps: it has no continuation, so every step is the exact path; ``--tandem-steps``
+   steps of each (fewer: a step costs milliseconds).
+
 ``--models`` also times the per-step loops under the other friction models (parameter
 ``friction_model``: skf2004, ehl_per_contact; Yu's gimbal, no grease term).
 
@@ -57,6 +61,7 @@ def main() -> None:
     parser.add_argument("--points", type=int, default=1000)
     parser.add_argument("--steps", type=int, default=4000)
     parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--tandem-steps", type=int, default=200)
     parser.add_argument(
         "--models", action="store_true", help="also the per-step loops of skf2004, ehl_per_contact"
     )
@@ -74,6 +79,13 @@ def main() -> None:
             secs, fallbacks = per_step(p, values, args.steps, args.repeat)
             figures[f"step: {prefix}{label} [us]"] = secs * 1e6
             figures[f"step: {prefix}{label}, exact fallbacks"] = fallbacks
+    tandem = pair_from_parameters(
+        params | {"arrangement": "tandem", "preload_method": "force", "assembly_preload": 40.0}
+    )
+    for label, values in LOOPS.items():
+        if label.startswith("ramp"):
+            secs, _ = per_step(tandem, values, args.tandem_steps, 1)
+            figures[f"step: tandem: {label} [us]"] = secs * 1e6
     firsts = []
     for _ in range(3):
         t0 = time.perf_counter()
