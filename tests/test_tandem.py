@@ -10,6 +10,7 @@ the spring's force k_s·(c − Δa_A), the stiffness k_A + k_B + k_s, the radial
 from __future__ import annotations
 
 import dataclasses
+import re
 
 import numpy as np
 import pytest
@@ -175,3 +176,62 @@ def test_the_tandem_examples_run():
                 found.add(t.name.rsplit(".", 1)[-1])
                 runner.run(t)
     assert found == names and runner.summarize(verbose=False).failed == 0
+
+
+_Q = '{ value = %s, unit = "%s", kind = "assumed", ref = "test" }'
+# a user's tandem set on Yu's rigid tube: its own loop (no rings member), a 40 N force
+_USER_TANDEM = f"""
+[mountings.my_tandem]
+base = "yu2017_gimbal_rigid"
+name = "a tandem set on Yu's tube"
+arrangement = "tandem"
+assembly_preload = {_Q % (40, "N")}
+
+[[mountings.my_tandem.loop]]
+name = "frame"
+role = "opening"
+material = "cast_aluminium"
+length = {_Q % (12, "mm")}
+
+[[mountings.my_tandem.loop]]
+name = "shaft"
+role = "closing"
+material = "steel_45"
+length = {_Q % (12, "mm")}
+"""
+
+
+def test_a_user_catalogue_tandem_set_is_the_same_model_as_its_numbers(tmp_path, capsys):
+    from servofmu.build import catalogs
+    from servofmu.cli import main
+    from servofmu.physics.bearing import BearingPair
+
+    path = tmp_path / "tandem.toml"
+    path.write_text(_USER_TANDEM)
+    assert main(["catalog", "--catalog", str(path), "--preset", "my_tandem"]) == 0
+    out = capsys.readouterr().out
+    assert re.search(r"arrangement +tandem", out) and re.search(r"preload_method +force", out)
+    catalogs.load([path])
+    try:
+        library = BearingModel(BearingPair.from_catalog("my_tandem", "krytox_143aa"))
+        numbers = BearingModel(pair_from_parameters(default_parameters("my_tandem")))
+    finally:
+        catalogs.unload()
+    for temps in ((T0,) * 4, (T0, T0 + 3.0, T0, T0), (T0 - 40.0,) * 4):
+        a, b = library.evaluate(temps, 0.2, 2.0), numbers.evaluate(temps, 0.2, 2.0)
+        assert (a.force_a, a.force_b, a.running_torque) == (b.force_a, b.force_b, b.running_torque)
+    # the aluminium frame shrinks more than the steel shaft between the bearings: B loads up
+    cold = numbers.evaluate((T0 - 40.0,) * 4, 0.2, 0.0)
+    assert cold.force_b > cold.force_a and cold.force_a + cold.force_b == pytest.approx(P0)
+
+
+def test_a_user_tandem_set_with_a_rings_member_is_refused_naming_it(tmp_path, capsys):
+    from servofmu.cli import main
+
+    path = tmp_path / "tandem.toml"
+    text = _USER_TANDEM.split("[[mountings.my_tandem.loop]]")[0]  # the base's loop, rings in it
+    path.write_text(text)
+    assert main(["build", "--catalog", str(path), "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert str(path) in err and "mountings.my_tandem" in err, err
+    assert "loop member 'bearings' cannot be in a tandem pair" in err, err

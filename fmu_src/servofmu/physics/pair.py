@@ -175,10 +175,13 @@ def is_tandem(pair: BearingPair) -> bool:
 
 @functools.lru_cache(maxsize=64)
 def effective_shim(pair: BearingPair) -> float:
-    """The shim [m]: the loop's, or the one that gives ``assembly_preload`` at T0 (a tandem
-    pair: the loop's, its bearings' stand-out mismatch; its preload is a force)."""
+    """The shim [m]: the loop's, or the one that gives ``assembly_preload`` at T0; 0 for a
+    tandem pair (a matched set: equal stand-outs and spacers, so A and B share the thrust
+    equally at T0; its preload is a force, the loop's shim is not used)."""
     m = pair.mounting
-    if m.assembly_preload is None or is_tandem(pair):
+    if is_tandem(pair):
+        return 0.0
+    if m.assembly_preload is None:
         return m.loop.shim
     return shim_for_preload(assembly_geometry(pair), m.assembly_preload, loop_stiffness(pair))
 
@@ -191,8 +194,8 @@ def loop_stiffness(pair: BearingPair) -> float:
 def loop_closure(pair: BearingPair, temperature):
     """C(T) = 2·h(T0) + s − Σ σ·L·α·(T_j − T0) [m] at a uniform temperature [K] or the parts'
     temperatures (each member j at its part's T_j; see :mod:`preload`). For a tandem pair the
-    mismatch d(T) = s − Σ σ·L·α·(T_j − T0) [m] of bearing B along the thrust relative to A
-    (:func:`~.preload.tandem_offsets`)."""
+    mismatch d(T) = −Σ σ·L·α·(T_j − T0) [m] of bearing B along the thrust relative to A (a
+    matched set: 0 at T0; :func:`~.preload.tandem_offsets`)."""
     m = pair.mounting
     loop = m.loop
     if effective_shim(pair) != loop.shim:
@@ -230,5 +233,5 @@ def tandem_preload(pair: BearingPair) -> tuple[float, float]:
     if not ks:
         return 0.0, float(m.assembly_preload)
     p0 = ks * m.loop.spring_compression
-    a0 = float(tandem_offsets(assembly_geometry(pair), m.loop.shim, 0.0, p0).offset_a[()])
+    a0 = float(tandem_offsets(assembly_geometry(pair), effective_shim(pair), 0.0, p0).offset_a[()])
     return ks, ks * (m.loop.spring_compression + a0)

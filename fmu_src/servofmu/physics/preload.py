@@ -23,7 +23,7 @@ spring or a constant force pushes the set, the two bearings share that thrust an
 external load, and the members between them only set how far B sits along the thrust
 relative to A (:func:`tandem_offsets`, :func:`tandem_equilibrium`):
 
-    F_A(a_A) + F_B(a_A + d) + k_s·a_A = T + F_ext,   d(T) = s − Σ_j σ_j·L_j·α_j·(T_j − T0)
+    F_A(a_A) + F_B(a_A + d) + k_s·a_A = T + F_ext,   d(T) = −Σ_j σ_j·L_j·α_j·(T_j − T0)
 
 Notes on the printed equations:
 - Yu eq 14 assigns steel's expansion and modulus to the frame and aluminium's to the shaft,
@@ -241,7 +241,8 @@ class PreloadLoop:
 #:   each other. The preload is a force on the set (a spring, or a constant force: the
 #:   ``assembly_preload``), so the loop between the two bearings does not close on them: its
 #:   members set how far bearing B is displaced along the thrust relative to A,
-#:   a_B − a_A = s − Σ σ_j·L_j·α_j·(T_j − T0) (:func:`tandem_offsets`). The inner path (shaft,
+#:   a_B − a_A = −Σ σ_j·L_j·α_j·(T_j − T0) (:func:`tandem_offsets`; a matched set, so 0 at
+#:   assembly). The inner path (shaft,
 #:   an inner spacer) is "closing": its growth moves B's inner ring further along the thrust
 #:   than A's, so B (the bearing further along the thrust) takes more of it; the housing (and
 #:   an outer spacer, entered as housing length) is "opening". The rings' widths lie in both
@@ -609,7 +610,7 @@ def tandem_offsets(
     The set is pushed by a preload spring of stiffness k_s [N/m] (0: a constant force) whose
     force is P = T − k_s·a_A, with ``thrust`` T = k_s·(c + a_A0) [N] fixed at assembly (c the
     spring's compression, a_A0 the assembly offset; T = P for a constant force). Bearing B is
-    displaced along the thrust by the ``mismatch`` d [m] relative to A (s − Σ σ·L·α·ΔT of the
+    displaced along the thrust by the ``mismatch`` d [m] relative to A (−Σ σ·L·α·ΔT of the
     members between them, :func:`loop_interference`); the spacers between the bearings are
     taken as rigid against the bearings. Unknown a = a_A, with a_B = a + d:
 

@@ -24,7 +24,7 @@ from .materials import Material
 from .mounting import Mounting
 from .pair import PRESSURE_LIMIT
 from .parameter_table import LUBRICANT_FIELDS, PARAMETER_NAMES, SKF_SERIES_FIELDS
-from .preload import LoopMember, member_kind
+from .preload import TANDEM, LoopMember, member_kind
 from .units import CST, RPM
 
 #: Catalogue mounting whose values are the defaults (Yu 2017's seeker gimbal).
@@ -175,7 +175,7 @@ def _members(m: Mounting, bearing: BallBearing) -> tuple[dict, str]:
                 f"{where}: loop member 'bearings' length = {ring_stack.length!r} m must be "
                 f"2·width = {2.0 * bearing.width!r} m of bearing {bearing.key!r}, without area"
             )
-    elif not printed:
+    elif not printed and m.arrangement != TANDEM:  # a tandem pair's rings cancel
         raise ValueError(f"{where}: the loop lacks the member 'bearings' (the rings' widths)")
     return kinds, "printed" if printed else "stated"
 
