@@ -241,6 +241,19 @@ def contact_rolling_torque(scale, ivr, ehl, m0, u_per_speed, speed):
     [rad/s] (sign ignored) from :func:`contact_rolling_terms`: F_R·dm·(1 − γ²)/2, with
     U = 2·η0·u_m/(E'·Rx) and u_m = (dm/4)·(1 − γ²)·|ω|. Elementwise on floats or arrays.
 
+    Parameters
+    ----------
+    scale, ivr, ehl, m0, u_per_speed : the contact's terms from :func:`contact_rolling_terms`
+        (``scale`` [N·m], ``u_per_speed`` [s/rad], the others dimensionless)
+    speed : ω [rad/s] (sign ignored)
+
+    Returns
+    -------
+    float or ndarray
+        The contact's rolling torque [N·m].
+
+    Examples
+    --------
     >>> contact_rolling_torque(1.0, 1.0, 1.0, 1.0, 0.0, 5.0)  # dry: U = 0
     0.0
     """

@@ -626,6 +626,13 @@ def spec(name: str) -> ParameterSpec:
     """The :class:`ParameterSpec` ``name`` of :data:`TABLE` (no default); ValueError
     naming the known ones.
 
+    Returns
+    -------
+    ParameterSpec
+        Its name, type, unit (SI), range, group and description.
+
+    Examples
+    --------
     >>> spec("n_balls").type
     'Integer'
     """
@@ -638,6 +645,13 @@ def spec(name: str) -> ParameterSpec:
 def parameters_in(*groups: str) -> tuple[str, ...]:
     """Names of the parameters in ``groups`` (keys of :data:`GROUPS`), in table order.
 
+    Returns
+    -------
+    tuple of str
+        The parameter names.
+
+    Examples
+    --------
     >>> parameters_in("lubricant")
     ('lubricant_viscosity_40', 'lubricant_viscosity_100', 'lubricant_walther_c')
     """

@@ -56,6 +56,13 @@ def bearing_values(b: BallBearing) -> tuple[dict, dict]:
     (:data:`SKF_SERIES_FIELDS`; :func:`.rolling_friction.series_constants`, a labelled
     fallback when the series is not in the table).
 
+    Returns
+    -------
+    tuple of dict
+        (values in SI: m, rad, counts, dimensionless constants; sources: str per name).
+
+    Examples
+    --------
     >>> values, sources = bearing_values(catalog.bearing("71803"))
     >>> values["n_balls"], sources["bore"], sources["skf_r1"][:18]
     (15, 'paper: Yu 2017 §2', 'fallback (assumed)')
@@ -82,6 +89,13 @@ def lubricant_values(key: str) -> tuple[dict, dict]:
     gives its ν40, ν100 and Walther c with lubrication "grease"; a dry film gives lubrication
     "solid" and leaves the viscosity numbers out (they are not used).
 
+    Returns
+    -------
+    tuple of dict
+        (values: ν40, ν100, c [m²/s], density [kg/m³], lubrication; sources: str per name).
+
+    Examples
+    --------
     >>> values, _ = lubricant_values("iso_vg32")
     >>> round(values["lubricant_viscosity_40"] * 1e6, 6)  # cSt
     32.0
@@ -114,6 +128,13 @@ def walther_c_si(c_cst: float) -> float:
     1 cSt gives ``c_cst`` back exactly (the FMU parameter reproduces the catalogue's model bit
     for bit).
 
+    Returns
+    -------
+    float
+        c [m²/s].
+
+    Examples
+    --------
     >>> walther_c_si(0.932) / CST == 0.932
     True
     """
@@ -393,6 +414,13 @@ def default_sources(
     """Provenance of each value of :func:`default_parameters` (same arguments), read from the
     catalogue records ("kind: reference (record)").
 
+    Returns
+    -------
+    dict
+        Parameter name → provenance string.
+
+    Examples
+    --------
     >>> default_sources("yu2017_gimbal")["shim"].startswith("paper: Yu 2017")
     True
     """
@@ -407,6 +435,13 @@ def resolve(base: Mapping[str, object], changes: Mapping[str, object]) -> dict[s
     presets. The library's way of saying "this catalogue entry, but with …" (sweeps,
     calibration); an FMU has numbers only.
 
+    Returns
+    -------
+    dict
+        The full parameter set (SI numbers, choices as item names).
+
+    Examples
+    --------
     >>> base = default_parameters()
     >>> p = resolve(base, {"bearing": "7002C", "width": 0.01})
     >>> p["bore"], p["width"], p["shim"] == base["shim"]
