@@ -238,10 +238,30 @@ def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -
     ring) [K]: the equations of :func:`fits.mounted_geometry` (Yu 2017 eq 10–13),
     :func:`preload.loop_interference` (eq 14–15) and Walther's viscosity (eq 18) on floats.
 
+    Parameters
+    ----------
+    c : PairConstants
+        The pair's data.
+    temps : tuple of 4 floats
+        (housing, shaft, outer ring, inner ring) temperatures [K].
+
     Returns
     -------
     Thermal
         Lengths [m], pressures [Pa], viscosity [m²/s].
+
+    Examples
+    --------
+    At the assembly temperature the grooves keep their curvature, 1/f_i = 1/0.56 (by hand),
+    and the clearance is that of :func:`fits.mounted_geometry` (9.6583 µm, 4.4114 MPa):
+
+    >>> from servofmu.physics.pair import BearingPair
+    >>> c = PairConstants(BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"))
+    >>> th = thermal_floats(c, (c.t0, c.t0, c.t0, c.t0))
+    >>> round(th.inv_f_inner, 12) == round(1 / 0.56, 12)
+    True
+    >>> round(th.clearance * 1e6, 4), round(th.outer_fit_pressure / 1e6, 4)  # µm, MPa
+    (9.6583, 4.4114)
     """
     t_h, t_s, t_o, t_i = temps
     t0 = c.t0
@@ -376,6 +396,19 @@ def contact_terms(c: PairConstants, gamma: float, inv_f: float, inner: bool, anc
     The constants depend on the ball diameter only through Dw^(∓1/3): c_δ·Dw^(1/3) and
     a_coef/Dw^(1/3) are returned.
 
+    Parameters
+    ----------
+    c : PairConstants
+        The pair's data (its compliance [1/Pa]).
+    gamma : float
+        γ = Dw·cos α/dm [-].
+    inv_f : float
+        1/f = Dw/r [-] of the groove.
+    inner : bool
+        True for the inner contact, False for the outer.
+    anc : Anchor
+        The contact's anchor (exact Hertz data at an ellipticity k0 near the contact's).
+
     Returns
     -------
     tuple
@@ -383,6 +416,24 @@ def contact_terms(c: PairConstants, gamma: float, inv_f: float, inner: bool, anc
         [m^(4/3)/N^(2/3)] (c_δ = K_c^(−2/3), K_c the contact's load–deflection constant),
         a_coef/Dw^(1/3) [m^(2/3)/N^(1/3)], the ellipticity k [-] and E(m) [-]
         (b_coef = a_coef/k).
+
+    Examples
+    --------
+    Anchored at the exact ellipticity, the values are those of
+    :func:`equilibrium.contact_constants_at` (71803, inner contact at 15°):
+
+    >>> from servofmu.physics import equilibrium
+    >>> from servofmu.physics.pair import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> c, g = PairConstants(pair), pair.bearing.race_geometry()
+    >>> inner = equilibrium.contact_constants_at(g, math.radians(15))[0]
+    >>> gamma = g.ball_diameter * math.cos(math.radians(15)) / g.pitch_diameter
+    >>> t = contact_terms(c, gamma, 1 / 0.56, True, Anchor(inner.ellipticity))
+    >>> len(t), round(t[8], 6), round(float(inner.ellipticity), 6)  # k
+    (16, 4.626368, 4.626368)
+    >>> stiffness = (t[0] / math.cbrt(g.ball_diameter)) ** -1.5  # K_c = c_δ^(−3/2) [N/m^1.5]
+    >>> round(stiffness / float(inner.stiffness), 9)
+    1.0
     """
     if inner:
         u = 1.0 / (1.0 - gamma)
@@ -442,7 +493,38 @@ def contact_terms(c: PairConstants, gamma: float, inv_f: float, inner: bool, anc
 
 def exact_contact_k(th: Thermal, cos_a: float, inner: bool) -> float:
     """The exact ellipticity [-] of the inner or outer contact at the angle with cosine
-    ``cos_a`` (:func:`hertz.ellipticity` on the curvature difference): an anchor's start."""
+    ``cos_a`` (:func:`hertz.ellipticity` on the curvature difference): an anchor's start.
+
+    Parameters
+    ----------
+    th : Thermal
+        Thermal state of the step (:func:`thermal_floats`).
+    cos_a : float
+        cos α [-] of the contact angle α.
+    inner : bool
+        True for the inner contact, False for the outer.
+
+    Returns
+    -------
+    float
+        k = a/b [-].
+
+    Examples
+    --------
+    The same as :func:`equilibrium.contact_constants_at` on the mounted geometry:
+
+    >>> from servofmu.physics import equilibrium, fits
+    >>> from servofmu.physics.pair import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> c = PairConstants(pair)
+    >>> th = thermal_floats(c, (c.t0,) * 4)
+    >>> race = fits.mounted_geometry(pair.bearing, pair.mounting.fit, c.t0, c.t0).race
+    >>> outer = equilibrium.contact_constants_at(race, math.radians(15))[1]
+    >>> round(exact_contact_k(th, math.cos(math.radians(15)), False), 9)
+    5.097093463
+    >>> round(float(outer.ellipticity), 9)
+    5.097093463
+    """
     g = th.gamma_scale * cos_a
     inv_f = th.inv_f_inner if inner else th.inv_f_outer
     rt = 2.0 * g / (1.0 - g) if inner else -2.0 * g / (1.0 + g)
@@ -468,7 +550,38 @@ def ball_base(c: PairConstants, gamma: float, inv_f_i: float, inv_f_o: float, b:
     the c_δ terms of the inner and outer contact (8 floats), their a_coef, k and E terms (24
     floats)) from :func:`contact_terms`. Within :data:`GAMMA_SPAN` in γ and :data:`INV_F_SPAN`
     in 1/f the Hertz constants are taken to second order in γ and first order in 1/f, at any
-    thermal state."""
+    thermal state.
+
+    Parameters
+    ----------
+    c : PairConstants
+        The pair's data.
+    gamma : float
+        γ = Dw·cos α/dm [-].
+    inv_f_i, inv_f_o : float
+        1/f = Dw/r [-] of the inner and outer groove.
+    b : Ball
+        The ball (its anchors).
+
+    Returns
+    -------
+    tuple
+        (γ0 [-], 1/f_i0 [-], 1/f_o0 [-], 8 floats, 24 floats): the terms of
+        :func:`contact_terms` (units there).
+
+    Examples
+    --------
+    >>> from servofmu.physics.pair import BearingPair
+    >>> c = PairConstants(BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"))
+    >>> th = thermal_floats(c, (c.t0,) * 4)
+    >>> cos_a = math.cos(math.radians(15))
+    >>> k_i, k_o = exact_contact_k(th, cos_a, True), exact_contact_k(th, cos_a, False)
+    >>> anchors = Anchor(k_i), Anchor(k_o)
+    >>> ball = Ball(0.0, 15.0, *anchors)  # cos ψ, weight Z
+    >>> base = ball_base(c, th.gamma_scale * cos_a, th.inv_f_inner, th.inv_f_outer, ball)
+    >>> len(base[3]), len(base[4]), round(base[1], 6)  # 1/f_i0 = 1/0.56
+    (8, 24, 1.785714)
+    """
     ti = contact_terms(c, gamma, inv_f_i, True, b.anc_i)
     to = contact_terms(c, gamma, inv_f_o, False, b.anc_o)
     return gamma, inv_f_i, inv_f_o, (*ti[:4], *to[:4]), (*ti[4:], *to[4:])
@@ -479,11 +592,47 @@ def ring_point(th: Thermal, c: PairConstants, a: float, dr: float, balls) -> tup
     :func:`equilibrium.ball_loads` without tilt): each ball's load Q_j = K_n(α_j)·δ_j^1.5,
     stored on the :class:`Ball`, and the ring's loads and Jacobian.
 
+    Parameters
+    ----------
+    th : Thermal
+        Thermal state of the step (:func:`thermal_floats`).
+    c : PairConstants
+        The pair's data.
+    a : float
+        Axial offset [m] of the groove curvature centres from the centred position.
+    dr : float
+        Radial displacement δr [m] of the inner ring along ψ = 0.
+    balls : sequence of Ball
+        The bearing's ball positions (cos ψ, weight, anchors, base); their load, cos α and
+        sin α are set.
+
     Returns
     -------
     tuple
         (Fa = Σ w·Q·sin α [N], Fr = Σ w·Q·cos α·cos ψ [N], dFa/da, dFa/dδr, dFr/da, dFr/dδr
-        [N/m] with K_n(α) varied, dFa/da with K_n held [N/m], the output stiffness).
+        [N/m] with K_n(α) varied, dFa/da with K_n held [N/m] (the output stiffness), the
+        smallest deflection of a loaded ball [m] (A when no ball is loaded)).
+
+    Examples
+    --------
+    Pure axial load, one ball of weight Z = 15: the same as :func:`equilibrium.axial_state`
+    on the mounted geometry:
+
+    >>> from servofmu.physics import equilibrium, fits
+    >>> from servofmu.physics.pair import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> c = PairConstants(pair)
+    >>> th = thermal_floats(c, (c.t0,) * 4)
+    >>> cos_a = th.radial_centre_distance / math.hypot(70e-6, th.radial_centre_distance)
+    >>> k_i, k_o = exact_contact_k(th, cos_a, True), exact_contact_k(th, cos_a, False)
+    >>> anchors = Anchor(k_i), Anchor(k_o)
+    >>> r = ring_point(th, c, 70e-6, 0.0, [Ball(0.0, 15.0, *anchors)])
+    >>> round(r[0], 4), round(r[1], 4), round(r[6] / 1e6, 4)  # N, N, N/µm
+    (210.6691, 0.0, 19.4344)
+    >>> race = fits.mounted_geometry(pair.bearing, pair.mounting.fit, c.t0, c.t0).race
+    >>> s = equilibrium.axial_state(race, 70e-6)
+    >>> round(float(s.axial_force), 4), round(float(s.axial_stiffness) / 1e6, 4)  # N, N/µm
+    (210.6691, 19.4344)
     """
     a2_0, dist = th.radial_centre_distance, th.curvature_distance
     gs, f_i, f_o, dw_m13 = th.gamma_scale, th.inv_f_inner, th.inv_f_outer, 1.0 / th.dw_third
@@ -552,7 +701,39 @@ def newton_step(ra: tuple, rb: tuple, r1, r2, r3, r4, k_loop: float, radial: boo
         e_A·u − e_B·v = g1,   (1 + e_A/2k)·u + (1 + e_B/2k)·v = g2,
 
     e = dFa/da − (dFa/dδr)(dFr/da)/(dFr/dδr) each bearing's axial stiffness at balanced radial
-    load. A rigid loop (k = inf) fixes p. None when singular."""
+    load. A rigid loop (k = inf) fixes p. None when singular.
+
+    Parameters
+    ----------
+    ra, rb : tuple
+        :func:`ring_point` results of bearings A and B (only the Jacobian entries are read).
+    r1, r2, r3 : float
+        Force residuals [N].
+    r4 : float
+        Loop residual [m].
+    k_loop : float
+        Loop stiffness k [N/m] (inf: rigid).
+    radial : bool
+        Whether the radial rows are solved (a radial load); else dδr_A = dδr_B = 0.
+
+    Returns
+    -------
+    tuple or None
+        (dp, dz, dδr_A, dδr_B) [m], or None when the system is singular.
+
+    Examples
+    --------
+    A rigid loop under axial load only: dz = −r1/(e_A + e_B), by hand 3 N / (3 N/µm) = 1 µm:
+
+    >>> ra = (0.0, 0.0, 2e6, 0.0, 0.0, 0.0, 2e6, 1e-6)  # dFa/da = 2 N/µm
+    >>> rb = (0.0, 0.0, 1e6, 0.0, 0.0, 0.0, 1e6, 1e-6)  # 1 N/µm
+    >>> dp, dz, da, db = newton_step(ra, rb, -3.0, 0.0, 0.0, 0.0, math.inf, False)
+    >>> dp, round(dz * 1e6, 9), da, db  # µm for dz
+    (0.0, 1.0, 0.0, 0.0)
+    >>> zero = (0.0,) * 8  # no ball in contact: no stiffness
+    >>> newton_step(zero, zero, -3.0, 0.0, 0.0, 0.0, math.inf, False) is None
+    True
+    """
     _, _, a11, a12, a21, a22, _, _ = ra
     _, _, b11, b12, b21, b22, _, _ = rb
     if radial:
@@ -925,7 +1106,44 @@ def ring_sums(th: Thermal, c: PairConstants, balls, eta: float | None = None) ->
 
     Every anchor whose contact's ellipticity moved more than :data:`ANCHOR_DRIFT` from it is
     renewed at the current k (for the next step; the ball's base is dropped); ``redo`` is True
-    when one moved more than :data:`ANCHOR_REDO` (the step is then solved again)."""
+    when one moved more than :data:`ANCHOR_REDO` (the step is then solved again).
+
+    Parameters
+    ----------
+    th : Thermal
+        Thermal state of the step (:func:`thermal_floats`).
+    c : PairConstants
+        The pair's data.
+    balls : sequence of Ball
+        The bearing's balls, after :func:`ring_point` (their loads and bases).
+    eta : float or None
+        Dynamic viscosity [Pa·s] for the EHL terms, or None.
+
+    Returns
+    -------
+    tuple
+        The 11 entries listed above: five torques [N·m], pressure [Pa], Σ w·Q [N],
+        Σ w·Q·α [N·rad], Fa [N], redo (bool), EHL terms (five lists) or None.
+
+    Examples
+    --------
+    After the :func:`ring_point` example: Fa is the same, and the inner and outer ring
+    torques add up to hysteresis + spin + sliding (by construction):
+
+    >>> from servofmu.physics.pair import BearingPair
+    >>> c = PairConstants(BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"))
+    >>> th = thermal_floats(c, (c.t0,) * 4)
+    >>> cos_a = th.radial_centre_distance / math.hypot(70e-6, th.radial_centre_distance)
+    >>> k_i, k_o = exact_contact_k(th, cos_a, True), exact_contact_k(th, cos_a, False)
+    >>> anchors = Anchor(k_i), Anchor(k_o)
+    >>> balls = [Ball(0.0, 15.0, *anchors)]
+    >>> fa = ring_point(th, c, 70e-6, 0.0, balls)[0]
+    >>> s = ring_sums(th, c, balls)
+    >>> s[8] == fa, round(s[0] * 1e3, 4), round(s[1] * 1e3, 4), s[2]  # N·mm
+    (True, 0.795, 1.609, 0.0)
+    >>> round((s[3] + s[4]) * 1e3, 4), round((s[0] + s[1] + s[2]) * 1e3, 4)  # N·mm
+    (2.404, 2.404)
+    """
     dw, dm = th.ball_diameter, th.pitch_diameter
     gs, f_i, f_o, dw_third = th.gamma_scale, th.inv_f_inner, th.inv_f_outer, th.dw_third
     if th.torque_coefficients is None:
@@ -1001,7 +1219,31 @@ def torque_coefficients(th: Thermal, c: PairConstants) -> tuple:
     """Coefficients of one ball's torque terms at the thermal state ``th``: (hysteresis
     3·α_r/(8·Dw) [1/m] per Q·b·r, Heathcote sliding of the inner and outer race [1/m²] per
     Q·a²·r (0 without differential sliding), spin 3μ/8 [-] per Q·a·E(e)): the functions of
-    :mod:`.friction` at unit load, semi-axes and E(e)."""
+    :mod:`.friction` at unit load, semi-axes and E(e).
+
+    Parameters
+    ----------
+    th : Thermal
+        Thermal state of the step (Dw [m], groove radii [m]).
+    c : PairConstants
+        The pair's data (friction coefficients, sliding switch).
+
+    Returns
+    -------
+    tuple
+        (hysteresis [1/m], inner sliding [1/m²], outer sliding [1/m²], spin [-]).
+
+    Examples
+    --------
+    Yu's pair (α_r = 0.007, μ = 0.0817, no differential sliding): by hand
+    3 · 0.007 / (8 · 2.381 mm) = 1.1025 /m and 3 · 0.0817 / 8 = 0.0307:
+
+    >>> from servofmu.physics.pair import BearingPair
+    >>> c = PairConstants(BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"))
+    >>> h, sl_i, sl_o, sp = torque_coefficients(thermal_floats(c, (c.t0,) * 4), c)
+    >>> round(h, 4), sl_i, sl_o, round(sp, 4)  # 1/m, 1/m², 1/m², -
+    (1.1025, 0.0, 0.0, 0.0307)
+    """
     dw, mu = th.ball_diameter, c.coefficients.sliding_friction
     c_h = _hysteresis(1.0, 1.0, dw, c.coefficients.hysteresis_loss)
     if c.sliding:

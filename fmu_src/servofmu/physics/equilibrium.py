@@ -77,7 +77,34 @@ def _groove_constants(geom: RaceGeometry, alpha, race: str, expand: bool) -> Con
 def contact_constants_at(geom: RaceGeometry, alpha, expand: bool = False):
     """(inner, outer) :class:`~hertz.ContactConstants` and the series constant K_n [N/m^1.5]
     at contact angle(s) ``alpha`` [rad]. With ``expand`` the geometry fields get a trailing
-    axis so that ``alpha`` may carry a ball axis."""
+    axis so that ``alpha`` may carry a ball axis.
+
+    Parameters
+    ----------
+    geom : RaceGeometry
+        Operating geometry (lengths [m], compliance [1/Pa]).
+    alpha : float or array_like
+        Contact angle(s) α [rad].
+    expand : bool
+        Add a trailing axis to the geometry fields (``alpha`` of shape S + (Z,)).
+
+    Returns
+    -------
+    tuple
+        (inner, outer, K_n): the :class:`~hertz.ContactConstants` of the two contacts and the
+        series constant K_n = (K_i^(−2/3) + K_o^(−2/3))^(−3/2) [N/m^1.5] of Q = K_n·δ^1.5.
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> inner, outer, k_n = contact_constants_at(g, np.radians(15.0))
+    >>> f"{float(k_n):.4g}"  # N/m^1.5
+    '3.843e+09'
+    >>> series = (inner.stiffness ** (-2 / 3) + outer.stiffness ** (-2 / 3)) ** -1.5
+    >>> round(float(k_n / series), 12)  # the two contacts' deflections add
+    1.0
+    """
     alpha = check_finite("alpha", alpha, "rad")
     inner = _groove_constants(geom, alpha, "inner", expand)
     outer = _groove_constants(geom, alpha, "outer", expand)
@@ -278,7 +305,32 @@ class AxialState:
 def axial_state(geom: RaceGeometry, offset) -> AxialState:
     """Closed-form state of one bearing under a pure axial offset ``offset`` [m] (broadcast
     with the geometry fields). Harris & Kotzalas 2007, Advanced Concepts ch. 1 (thrust load);
-    Yu 2017 eq 4 (Q = Fa/(Z sin α)) follows from it."""
+    Yu 2017 eq 4 (Q = Fa/(Z sin α)) follows from it.
+
+    Parameters
+    ----------
+    geom : RaceGeometry
+        Operating geometry (fields scalar or arrays).
+    offset : float or array_like
+        a [m], axial offset of the groove curvature centres from the centred position.
+
+    Returns
+    -------
+    AxialState
+        a [m], α [rad], δ [m], Q [N], Fa [N], dFa/da [N/m] and the Hertz constants.
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> s = axial_state(g, 70e-6)
+    >>> round(float(s.axial_force), 4), round(float(np.degrees(s.contact_angle)), 4)  # N, °
+    (58.7038, 16.9285)
+    >>> round(float(s.axial_force / (g.n_balls * s.ball_load * np.sin(s.contact_angle))), 12)
+    1.0
+
+    (the last line is Yu 2017 eq 4, Fa = Z·Q·sin α).
+    """
     a = np.asarray(check_finite("offset", offset, "m"), dtype=float)
     return _axial_state(geom, a)
 
@@ -300,7 +352,29 @@ def _axial_state(geom: RaceGeometry, a) -> AxialState:
 
 def axial_force(offset, geom: RaceGeometry):
     """Axial force Fa(a) [N] of one bearing at axial offset a [m]: odd, non-decreasing in a,
-    zero inside the axial play (|a| < h) when the clearance is positive."""
+    zero inside the axial play (|a| < h) when the clearance is positive.
+
+    Parameters
+    ----------
+    offset : float or array_like
+        a [m], axial offset of the groove curvature centres from the centred position.
+    geom : RaceGeometry
+        Operating geometry (fields scalar or arrays).
+
+    Returns
+    -------
+    numpy.ndarray
+        Fa [N], the broadcast shape of ``offset`` and the geometry fields.
+
+    Examples
+    --------
+    The 71803 first touches at h = A·sin 15° = 61.6 µm:
+
+    >>> from servofmu.physics import catalog
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> [round(float(f), 4) for f in axial_force(np.array([50e-6, 70e-6, -70e-6]), g)]  # N
+    [0.0, 58.7038, -58.7038]
+    """
     a = np.asarray(check_finite("offset", offset, "m"), dtype=float)
     return _axial_state(geom, a).axial_force
 
@@ -324,7 +398,34 @@ def _geometry_from_args(args, n_balls, compliance) -> RaceGeometry:
 def offset_for_axial_force(geom: RaceGeometry, force):
     """Axial offset a [m] at which one bearing carries axial force ``force`` [N] (inverse of
     :func:`axial_force`, by bracketing root finding; elementwise over arrays). For Fa = 0 the
-    first-contact offset (the edge of the axial play) is returned."""
+    first-contact offset (the edge of the axial play) is returned.
+
+    Parameters
+    ----------
+    geom : RaceGeometry
+        Operating geometry (fields scalar or arrays).
+    force : float or array_like
+        Fa [N] (negative: towards negative offsets).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        a [m].
+
+    Examples
+    --------
+    At Fa = 0 the edge of the play, h = A·sin α0 (:func:`geometry.first_contact_offset`):
+
+    >>> from servofmu.physics import catalog
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> a0 = offset_for_axial_force(g, 0.0)
+    >>> h = float(g.curvature_distance * np.sin(np.radians(15.0)))
+    >>> round(a0 * 1e6, 4), round(h * 1e6, 4)  # µm
+    (61.6245, 61.6245)
+    >>> a = offset_for_axial_force(g, 50.0)
+    >>> round(a * 1e6, 4), round(float(axial_force(a, g)), 6)  # µm, N: the inverse
+    (69.2409, 50.0)
+    """
     f = np.asarray(check_finite("force", force, "N"), dtype=float)
     shape = np.broadcast_shapes(f.shape, np.shape(geom.clearance))
     f = np.broadcast_to(f, shape)

@@ -81,6 +81,23 @@ def fit_pressure(
     p = δ / (k_in + k_out),  k_in = d/E_in·((d² + d_b²)/(d² − d_b²) − ν_in),
     k_out = d/E_out·((D² + d²)/(D² − d²) + ν_out); clamped at p ≥ 0 (Yu's k1, k2 with the
     ring diameters named as the equation's structure requires).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        p [Pa] (0 where δ ≤ 0).
+
+    Examples
+    --------
+    A solid steel shaft in a steel ring with D = 2d: k_in + k_out = (d/E)·(1 − ν + 5/3 + ν),
+    so p = 3·δ·E/(8·d), by hand 3 · 10 µm · 206 GPa / (8 · 10 mm) = 77.25 MPa:
+
+    >>> from servofmu.physics import catalog
+    >>> steel = catalog.material("bearing_steel_yu")  # E = 206 GPa
+    >>> round(float(fit_pressure(10e-6, 0.010, 0.0, 0.020, steel, steel)) / 1e6, 6)  # MPa
+    77.25
+    >>> float(fit_pressure(-1e-6, 0.010, 0.0, 0.020, steel, steel))  # a clearance fit
+    0.0
     """
     delta = check_finite("interference", interference, "m")
     d = check_positive("interface_diameter", interface_diameter, "m")
@@ -109,7 +126,31 @@ def _check_annulus(bore, outer_diameter):
 def bore_change_under_external_pressure(pressure, outer_diameter, bore, material: Material):
     """Change of the bore diameter [m] of an annulus (bore d_b, outside D) under external
     pressure p [Pa]: Δd_b = −2·p·D²·d_b / (E·(D² − d_b²)) (Lamé; Yu 2017 eq 13, third line,
-    the outer raceway of a ring pressed into a housing)."""
+    the outer raceway of a ring pressed into a housing).
+
+    Parameters
+    ----------
+    pressure : external pressure p [Pa], ≥ 0
+    outer_diameter : outside diameter D [m]
+    bore : bore diameter d_b [m], < D
+    material : :class:`~.materials.Material` of the annulus (E [Pa])
+
+    Returns
+    -------
+    float or numpy.ndarray
+        Δd_b [m] (negative: the bore shrinks).
+
+    Examples
+    --------
+    With D = 2·d_b, Δd_b = −8·p·d_b/(3·E), by hand −8 · 77.25 MPa · 10 mm / (3 · 206 GPa)
+    = −10 µm:
+
+    >>> from servofmu.physics import catalog
+    >>> steel = catalog.material("bearing_steel_yu")  # E = 206 GPa
+    >>> dd = bore_change_under_external_pressure(77.25e6, 0.020, 0.010, steel)
+    >>> round(float(dd) * 1e6, 6)  # µm
+    -10.0
+    """
     p = check_nonnegative("pressure", pressure, "Pa")
     _check_annulus(bore, outer_diameter)
     return (
@@ -124,7 +165,30 @@ def bore_change_under_external_pressure(pressure, outer_diameter, bore, material
 def outside_change_under_internal_pressure(pressure, bore, outer_diameter, material: Material):
     """Change of the outside diameter [m] of an annulus (bore d, outside D) under internal
     pressure p [Pa]: ΔD = 2·p·d²·D / (E·(D² − d²)) (Lamé; the inner raceway of a ring pressed
-    onto a shaft, Ning §2.1)."""
+    onto a shaft, Ning §2.1).
+
+    Parameters
+    ----------
+    pressure : internal pressure p [Pa], ≥ 0
+    bore : bore diameter d [m], < D
+    outer_diameter : outside diameter D [m]
+    material : :class:`~.materials.Material` of the annulus (E [Pa])
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ΔD [m] (positive: the outside grows).
+
+    Examples
+    --------
+    With D = 2·d, ΔD = 4·p·d/(3·E), by hand 4 · 77.25 MPa · 10 mm / (3 · 206 GPa) = 5 µm:
+
+    >>> from servofmu.physics import catalog
+    >>> steel = catalog.material("bearing_steel_yu")  # E = 206 GPa
+    >>> dd = outside_change_under_internal_pressure(77.25e6, 0.010, 0.020, steel)
+    >>> round(float(dd) * 1e6, 6)  # µm
+    5.0
+    """
     p = check_nonnegative("pressure", pressure, "Pa")
     _check_annulus(bore, outer_diameter)
     return (
@@ -182,6 +246,29 @@ def mounted_geometry(
     δ_o = D·(1 + α_ring·ΔT_o) − (D − δ_o0)·(1 + α_housing·ΔT_h) and likewise for the inner
     ring on the shaft; the Lamé pressures (eq 12) then shrink the outer raceway (eq 13) and
     expand the inner raceway. The clearance follows as Pd = d_o − d_i − 2·Dw (Yu §2.1).
+
+    Examples
+    --------
+    Yu's 71803 in its aluminium frame: at the assembly temperature without coupling nothing
+    grows and the clearance is the catalogue's; the 12 µm outer fit closes part of it:
+
+    >>> from servofmu.physics.pair import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> b, fit, t0 = pair.bearing, pair.mounting.fit, pair.mounting.assembly_temperature
+    >>> free = mounted_geometry(b, fit, t0, t0, coupled=False)
+    >>> round(float(free.race.clearance) * 1e6, 4), round(b.clearance * 1e6, 4)  # µm
+    (16.226, 16.226)
+    >>> m = mounted_geometry(b, fit, t0, t0)
+    >>> round(float(m.race.clearance) * 1e6, 4), round(float(m.outer_fit_pressure) / 1e6, 4)
+    (9.6583, 4.4114)
+
+    60 K colder the aluminium housing shrinks onto the steel ring: the interference grows by
+    about 60 K · 26 mm · (21.7 − 11.7)·1e-6/K = 15.6 µm (by hand; 15.58 µm with the housing
+    bore 12 µm below 26 mm):
+
+    >>> cold = mounted_geometry(b, fit, t0 - 60.0, t0)
+    >>> round(float(cold.outer_interference) * 1e6, 4)  # µm, was 12
+    27.5844
     """
     from .temperatures import part_temperatures
 

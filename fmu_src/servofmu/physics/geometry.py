@@ -35,6 +35,28 @@ def ball_diameter_from_grooves(
     From Pd = d_o − d_i − 2·Dw and cos α0 = 1 − Pd/(2·(f_i + f_o − 1)·Dw)
     (Harris & Kotzalas 2007, ch. 2):  Dw = (d_o − d_i) / (2 + 2·(f_i + f_o − 1)·(1 − cos α0)).
     For Yu's 71803 (19.1109 / 23.8891 mm, 0.56 / 0.54, 15°) this gives 2.381 mm (a 3/32" ball).
+
+    Parameters
+    ----------
+    inner_groove_diameter, outer_groove_diameter : d_i, d_o [m] (groove bottoms), d_i < d_o
+    inner_curvature, outer_curvature : f_i, f_o = r/Dw [-], in (0.5, 1]
+    contact_angle : free contact angle α0 [rad], in [0, π/2)
+
+    Returns
+    -------
+    float or numpy.ndarray
+        Dw [m].
+
+    Examples
+    --------
+    >>> dw = ball_diameter_from_grooves(19.1109e-3, 23.8891e-3, 0.56, 0.54, math.radians(15))
+    >>> round(float(dw) * 1e3, 4)  # mm: Yu's 71803, a 3/32" ball (2.381 mm)
+    2.381
+
+    At α0 = 0 there is no clearance, Dw = (d_o − d_i)/2 (by hand: (24 − 19)/2 = 2.5 mm):
+
+    >>> round(float(ball_diameter_from_grooves(0.019, 0.024, 0.56, 0.54, 0.0)) * 1e3, 6)  # mm
+    2.5
     """
     d_i = check_positive("inner_groove_diameter", inner_groove_diameter, "m")
     d_o = check_positive("outer_groove_diameter", outer_groove_diameter, "m")
@@ -52,6 +74,23 @@ def diametral_clearance(inner_groove_diameter, outer_groove_diameter, ball_diame
     """Diametral (radial internal) clearance Pd = d_o − d_i − 2·Dw [m] (Yu 2017 §2.1, P_r2).
 
     Negative values mean a radial interference of the balls between the grooves.
+
+    Parameters
+    ----------
+    inner_groove_diameter, outer_groove_diameter : d_i, d_o [m] (groove bottoms)
+    ball_diameter : Dw [m]
+
+    Returns
+    -------
+    float or numpy.ndarray
+        Pd [m] (negative: interference).
+
+    Examples
+    --------
+    Yu's 71803 with a 3/32" ball, by hand 23.8891 − 19.1109 − 2·2.381 = 0.0162 mm:
+
+    >>> round(float(diametral_clearance(19.1109e-3, 23.8891e-3, 2.381e-3)) * 1e6, 4)  # µm
+    16.2
     """
     d_i = check_positive("inner_groove_diameter", inner_groove_diameter, "m")
     d_o = check_positive("outer_groove_diameter", outer_groove_diameter, "m")
@@ -65,6 +104,32 @@ def free_contact_angle(clearance, curvature_distance):
     cos α0 = 1 − Pd/(2A) with A = (f_i + f_o − 1)·Dw [m] (Harris & Kotzalas 2007, ch. 2).
     With Pd ≤ 0 there is no free contact angle: the balls touch (or are compressed) at α = 0,
     and 0 is returned. Pd > 2A (beyond 90°) is rejected.
+
+    Parameters
+    ----------
+    clearance : diametral clearance Pd [m], ≤ 2A
+    curvature_distance : A = (f_i + f_o − 1)·Dw [m]
+
+    Returns
+    -------
+    float or numpy.ndarray
+        α0 [rad] (0 for Pd ≤ 0).
+
+    Examples
+    --------
+    Pd = A gives cos α0 = 1/2, α0 = 60° (by hand):
+
+    >>> round(math.degrees(free_contact_angle(0.1e-3, 0.1e-3)), 6)  # degrees
+    60.0
+
+    The catalogue's 71803 gets back its nominal 15°; a negative clearance gives 0:
+
+    >>> from servofmu.physics import catalog
+    >>> b = catalog.bearing("71803")
+    >>> round(math.degrees(free_contact_angle(b.clearance, b.curvature_distance)), 6)  # degrees
+    15.0
+    >>> free_contact_angle(-2e-6, b.curvature_distance)
+    0.0
     """
     a = check_positive("curvature_distance", curvature_distance, "m")
     pd = np.asarray(clearance, dtype=float)
@@ -82,6 +147,25 @@ def first_contact_offset(clearance, curvature_distance):
     """Axial offset h [m] of the groove curvature centres, from the centred position, at which
     the ball first touches both grooves: h = √(A² − (A − Pd/2)²) = A·sin α0 for Pd ≥ 0, and 0
     for Pd ≤ 0 (balls already in contact). Harris & Kotzalas 2007, ch. 2 (axial play Pe = 2h).
+
+    Parameters
+    ----------
+    clearance : diametral clearance Pd [m] (clipped to [0, 2A])
+    curvature_distance : A = (f_i + f_o − 1)·Dw [m]
+
+    Returns
+    -------
+    float or numpy.ndarray
+        h [m] (0 for Pd ≤ 0).
+
+    Examples
+    --------
+    A = 100 µm, Pd = 40 µm: A − Pd/2 = 80 µm, so h = √(100² − 80²) = 60 µm (by hand):
+
+    >>> round(first_contact_offset(40e-6, 100e-6) * 1e6, 6)  # µm
+    60.0
+    >>> first_contact_offset(-1e-6, 100e-6)  # negative clearance: in contact at once
+    0.0
     """
     a = np.asarray(check_positive("curvature_distance", curvature_distance, "m"))
     pd = np.clip(np.asarray(check_finite("clearance", clearance, "m"), dtype=float), 0.0, 2.0 * a)
