@@ -82,3 +82,20 @@ def test_race_geometry_properties(b71803):
     assert g.curvature_distance == pytest.approx(0.1 * b71803.ball_diameter)
     assert g.radial_centre_distance == pytest.approx(g.curvature_distance - g.clearance / 2)
     assert np.isclose(g.free_contact_angle, math.radians(15))
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        ((0.0, 0.56, 0.54, 0.26), "ball_diameter = 0.0 m"),
+        ((2.381e-3, 0.45, 0.54, 0.26), "inner_curvature = 0.45 is outside the valid range"),
+        ((2.381e-3, 0.56, 0.5, 0.26), "outer_curvature = 0.5 is outside the valid range"),
+        ((2.381e-3, 0.56, 0.54, -0.1), "contact_angle = -0.1 rad is outside the valid range"),
+    ],
+)
+def test_clearance_from_contact_angle_refuses_what_cannot_be_a_groove(args, message):
+    """f_i + f_o < 1 would give a negative clearance silently (found while documenting it)."""
+    from servofmu.physics.geometry import clearance_from_contact_angle
+
+    with pytest.raises(ValueError, match=re.escape(message)):
+        clearance_from_contact_angle(*args)

@@ -303,8 +303,12 @@ def clearance_from_contact_angle(ball_diameter, inner_curvature, outer_curvature
     >>> round(float(pd) * 1e6, 2)  # µm: the 71803 of Yu 2017
     16.23
     """
-    a = (inner_curvature + outer_curvature - 1.0) * ball_diameter
-    return 2.0 * a * (1.0 - np.cos(contact_angle))
+    dw = check_positive("ball_diameter", ball_diameter, "m")
+    f_i = check_range("inner_curvature", inner_curvature, 0.5, lo_open=True)
+    f_o = check_range("outer_curvature", outer_curvature, 0.5, lo_open=True)
+    alpha = check_range("contact_angle", contact_angle, 0.0, 0.5 * math.pi, unit="rad")
+    a = (f_i + f_o - 1.0) * dw
+    return 2.0 * a * (1.0 - np.cos(alpha))
 
 
 def bearing_geometry_problems(
