@@ -106,23 +106,6 @@ STILL_LACKING = {
     "servofmu.papers.report": 11,
     "servofmu.papers.yu2017": 13,
     "servofmu.parameter_sets": 1,
-    "servofmu.physics": 1,
-    "servofmu.physics._checks": 6,
-    "servofmu.physics.actuator": 10,
-    "servofmu.physics.bearing_parameters": 7,
-    "servofmu.physics.catalog": 19,
-    "servofmu.physics.control": 1,
-    "servofmu.physics.friction": 8,
-    "servofmu.physics.friction_models": 8,
-    "servofmu.physics.hertz": 8,
-    "servofmu.physics.materials": 1,
-    "servofmu.physics.motor": 5,
-    "servofmu.physics.pair": 6,
-    "servofmu.physics.pair_state": 11,
-    "servofmu.physics.preload": 10,
-    "servofmu.physics.thermal_network": 18,
-    "servofmu.physics.units": 5,
-    "servofmu.physics.viscosity": 2,
 }
 
 

@@ -37,6 +37,34 @@ def check_range(
 
     ``lo_open``/``hi_open`` exclude the bound itself. Raises ``ValueError`` naming ``name``,
     the first offending value and the valid range.
+
+    Parameters
+    ----------
+    name : str
+        The variable's name, for the message.
+    value : float or array_like
+        The value(s).
+    lo, hi : float or None
+        Bounds (None: unbounded).
+    lo_open, hi_open : bool
+        Exclude the bound itself.
+    unit : str
+        The unit, for the message.
+
+    Returns
+    -------
+    float or ndarray
+        ``value`` as float (array); ValueError otherwise.
+
+    Examples
+    --------
+    >>> check_range("speed", 2.0, 0.0, 10.0, unit="rad/s")
+    2.0
+    >>> try:
+    ...     check_range("speed", 12.0, 0.0, 10.0, unit="rad/s")
+    ... except ValueError as e:
+    ...     print(e)
+    speed = 12.0 rad/s is outside the valid range [0, 10] rad/s
     """
     unit_s = f" {unit}" if unit else ""
     if isinstance(value, (int, float)) and not isinstance(value, bool):
@@ -65,27 +93,125 @@ def check_range(
 
 
 def check_positive(name: str, value, unit: str = ""):
-    """Finite and strictly positive."""
+    """Finite and strictly positive.
+
+    Parameters
+    ----------
+    name : str
+        The variable's name.
+    value : float or array_like
+        The value(s).
+    unit : str
+        Its unit, for the message.
+
+    Returns
+    -------
+    float or ndarray
+        ``value`` as float (array); ValueError unless finite and > 0.
+
+    Examples
+    --------
+    >>> check_positive("pitch_diameter", 0.0215, "m")
+    0.0215
+    """
     return check_range(name, value, 0.0, None, lo_open=True, unit=unit)
 
 
 def check_nonnegative(name: str, value, unit: str = ""):
-    """Finite and >= 0."""
+    """Finite and >= 0.
+
+    Parameters
+    ----------
+    name : str
+        The variable's name.
+    value : float or array_like
+        The value(s).
+    unit : str
+        Its unit, for the message.
+
+    Returns
+    -------
+    float or ndarray
+        ``value`` as float (array); ValueError unless finite and ≥ 0.
+
+    Examples
+    --------
+    >>> check_nonnegative("viscous_damping", 0.0, "N·m·s/rad")
+    0.0
+    """
     return check_range(name, value, 0.0, None, unit=unit)
 
 
 def check_finite(name: str, value, unit: str = ""):
-    """Finite (any sign)."""
+    """Finite (any sign).
+
+    Parameters
+    ----------
+    name : str
+        The variable's name.
+    value : float or array_like
+        The value(s).
+    unit : str
+        Its unit, for the message.
+
+    Returns
+    -------
+    float or ndarray
+        ``value`` as float (array); ValueError for nan or ±inf.
+
+    Examples
+    --------
+    >>> check_finite("axial_load", -5.0, "N")
+    -5.0
+    """
     return check_range(name, value, unit=unit)
 
 
 def check_temperature(name: str, value):
-    """Absolute temperature in kelvin: finite and > 0 K."""
+    """Absolute temperature in kelvin: finite and > 0 K.
+
+    Parameters
+    ----------
+    name : str
+        The variable's name.
+    value : float or array_like
+        Temperature(s) [K].
+
+    Returns
+    -------
+    float or ndarray
+        ``value`` [K] as float (array); ValueError unless finite and > 0 K.
+
+    Examples
+    --------
+    >>> check_temperature("temperature", 233.15)
+    233.15
+    """
     return check_range(name, value, 0.0, None, lo_open=True, unit="K")
 
 
 def check_choice(name: str, value: str, choices) -> str:
-    """One of a fixed set of strings."""
+    """One of a fixed set of strings.
+
+    Parameters
+    ----------
+    name : str
+        The variable's name.
+    value : str
+        The choice.
+    choices : iterable of str
+        The valid ones.
+
+    Returns
+    -------
+    str
+        ``value``; ValueError naming the valid choices otherwise.
+
+    Examples
+    --------
+    >>> check_choice("lubrication", "grease", ("grease", "solid"))
+    'grease'
+    """
     if value not in choices:
         raise ValueError(f"{name} = {value!r} is not one of {sorted(choices)}")
     return value

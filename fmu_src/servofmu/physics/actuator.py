@@ -280,7 +280,27 @@ def _dead_centre_error(delta: float) -> ValueError:
 def kinematics(act: Actuator, output_angle) -> Kinematics:
     """Exact crank-slider kinematics at output angle δ [rad] (Liu 2014 eq 2–3, 9): rod angle,
     transmission angle, nut position and its derivative. Raises ValueError where the linkage
-    cannot close (|sin γ| ≥ 1)."""
+    cannot close (|sin γ| ≥ 1).
+
+    Parameters
+    ----------
+    act : Actuator
+        The actuator.
+    output_angle : float or array_like
+        δ [rad].
+
+    Returns
+    -------
+    Kinematics
+        Crank, rod and transmission angles [rad], nut position [m], lever dx/dθ [m/rad].
+
+    Examples
+    --------
+    >>> act = Actuator.from_catalog("liu2014_ema")
+    >>> k = kinematics(act, 0.0)
+    >>> round(float(k.nut_position) * 1e3, 3), round(float(k.lever) * 1e3, 3)  # mm, mm/rad
+    (125.0, -51.806)
+    """
     delta = np.asarray(check_finite("output_angle", output_angle, "rad"), dtype=float)
     theta = act.neutral_crank_angle + delta
     s = _sin_rod_angle(act, theta)
@@ -305,7 +325,29 @@ class ReductionRatios:
 
 
 def reduction_ratio(act: Actuator, output_angle) -> ReductionRatios:
-    """Reduction ratios at output angle δ [rad] (Liu 2014 eq 1, 4–5)."""
+    """Reduction ratios at output angle δ [rad] (Liu 2014 eq 1, 4–5).
+
+    Parameters
+    ----------
+    act : Actuator
+        The actuator.
+    output_angle : float or array_like
+        δ [rad].
+
+    Returns
+    -------
+    ReductionRatios
+        screw, linkage and total ratios [-] (motor angle per output angle).
+
+    Examples
+    --------
+    >>> act = Actuator.from_catalog("liu2014_ema")
+    >>> r = reduction_ratio(act, 0.0)
+    >>> round(float(r.total), 6) == round(act.gear_ratio * r.screw * float(r.linkage), 6)
+    True
+
+    (eq 1: i = i_g·i_s·i_r)
+    """
     lever = np.abs(kinematics(act, output_angle).lever)
     i_s = 2.0 * np.pi * act.crank_length / act.screw_lead
     i_r = lever / act.crank_length
@@ -409,14 +451,57 @@ def _motor_reach_text(act: Actuator) -> str:
 
 def screw_force(act: Actuator, output_angle, load_torque):
     """Axial force in the screw F3 = M·cos γ/(L1·sin β) = M/|dx/dθ| [N] (Liu 2014 eq 10–11;
-    the second form is virtual work) for hinge moment M [N·m] at output angle δ [rad]."""
+    the second form is virtual work) for hinge moment M [N·m] at output angle δ [rad].
+
+    Parameters
+    ----------
+    act : Actuator
+        The actuator.
+    output_angle : float or array_like
+        δ [rad].
+    load_torque : float or array_like
+        M [N·m].
+
+    Returns
+    -------
+    float or ndarray
+        F3 [N].
+
+    Examples
+    --------
+    >>> act = Actuator.from_catalog("liu2014_ema")
+    >>> f = screw_force(act, 0.0, 100.0)
+    >>> round(float(f), 3), round(float(f * abs(kinematics(act, 0.0).lever)), 9)  # N; F·|dx/dθ| = M
+    (1930.296, 100.0)
+    """
     m = np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float)
     return m / np.abs(kinematics(act, output_angle).lever)
 
 
 def linkage_rotation(act: Actuator, output_angle, load_torque) -> np.ndarray:
     """Elastic rotation Δθ [rad] of the output shaft under hinge moment M [N·m] with the nut
-    held (Liu 2014 eq 10–19, eq 18–19 with the second moment of area I)."""
+    held (Liu 2014 eq 10–19, eq 18–19 with the second moment of area I).
+
+    Parameters
+    ----------
+    act : Actuator
+        The actuator.
+    output_angle : float or array_like
+        δ [rad].
+    load_torque : float or array_like
+        M [N·m].
+
+    Returns
+    -------
+    ndarray
+        Δθ [rad].
+
+    Examples
+    --------
+    >>> act = Actuator.from_catalog("liu2014_ema")
+    >>> round(float(linkage_rotation(act, 0.0, 100.0)) * 1e6, 4)  # µrad at 100 N·m
+    1701.4761
+    """
     m = np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float)
     kin = kinematics(act, output_angle)
     return _rotation(
@@ -462,7 +547,29 @@ SMALLEST_MOMENT = 1.0e-3
 
 def linkage_stiffness(act: Actuator, output_angle, load_torque):
     """K_rod = M/Δθ [N·m/rad] (Liu 2014 eq 20); for |M| below :data:`SMALLEST_MOMENT`
-    (M = 0 included) the secant at that moment, with the sign of M."""
+    (M = 0 included) the secant at that moment, with the sign of M.
+
+    Parameters
+    ----------
+    act : Actuator
+        The actuator.
+    output_angle : float or array_like
+        δ [rad].
+    load_torque : float or array_like
+        M [N·m].
+
+    Returns
+    -------
+    float or ndarray
+        K_rod [N·m/rad].
+
+    Examples
+    --------
+    >>> act = Actuator.from_catalog("liu2014_ema")
+    >>> k = linkage_stiffness(act, 0.0, 100.0)
+    >>> round(float(k * linkage_rotation(act, 0.0, 100.0)), 9)  # N·m: K·Δθ = M
+    100.0
+    """
     m = np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float)
     probe = np.where(np.abs(m) < SMALLEST_MOMENT, np.copysign(SMALLEST_MOMENT, m), m)
     return probe / linkage_rotation(act, output_angle, probe)
@@ -497,7 +604,23 @@ class StiffnessBreakdown:
 
 def series_stiffness(*stiffnesses):
     """1/K = Σ 1/K_i (Liu 2014 eq 6), elementwise [unit of the inputs]; an infinite (rigid)
-    element drops out."""
+    element drops out.
+
+    Parameters
+    ----------
+    *stiffnesses : float or array_like
+        K_i (any one unit; inf: rigid).
+
+    Returns
+    -------
+    float or ndarray
+        K.
+
+    Examples
+    --------
+    >>> float(series_stiffness(2.0, 2.0)), float(series_stiffness(3.0, float("inf")))
+    (1.0, 3.0)
+    """
     ks = np.broadcast_arrays(*(np.asarray(k, dtype=float) for k in stiffnesses))
     for i, k in enumerate(ks):
         if np.any(~(k > 0)):
@@ -512,7 +635,21 @@ def stiffness_breakdown(
     extension) for output angle δ [rad], hinge moment M [N·m] and temperature T [K], all
     broadcast together. Elastic moduli are temperature-independent; the support-bearing
     preload follows the thermal coupling of :mod:`bearing`. ``support(F3, T)`` may replace
-    :func:`support_axial_stiffness` (:class:`ActuatorModel` has its own per-step path)."""
+    :func:`support_axial_stiffness` (:class:`ActuatorModel` has its own per-step path).
+
+    Returns
+    -------
+    StiffnessBreakdown
+        gear, screw, linkage, housing, support bearing and total stiffness [N·m/rad], the
+        deflection [rad], the reduction ratio [-] and the screw force [N].
+
+    Examples
+    --------
+    >>> act = Actuator.from_catalog("liu2014_ema")
+    >>> b = stiffness_breakdown(act, 0.0, 100.0)
+    >>> round(float(per_degree(b.total)), 1)  # N·m/°, Liu's unit, at 100 N·m
+    441.8
+    """
     delta, m, t = np.broadcast_arrays(
         np.asarray(check_finite("output_angle", output_angle, "rad"), dtype=float),
         np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float),
@@ -553,6 +690,11 @@ def check_support_pair(pair) -> None:
     """ValueError unless :class:`~.pair.BearingPair` ``pair`` can support the screw: the screw
     pushes both ways, so its pair must be opposed (a tandem pair carries thrust one way).
 
+    Returns
+    -------
+    None
+        (ValueError for a tandem pair).
+
     >>> from servofmu.physics.bearing import BearingPair
     >>> check_support_pair(BearingPair.from_catalog("liu2014_screw_support", "mos2_film"))
     """
@@ -577,7 +719,29 @@ def support_axial_stiffness(act: Actuator, screw_force, temperature):
     of Liu 2014: the Hertzian element that makes the stiffness rise with load). Δz is the
     shaft displacement of the preloaded pair from its unloaded state (general geometry,
     :func:`preload.pair_offsets`); below :data:`SMALLEST_SCREW_FORCE` the tangent stiffness
-    (its limit). inf when the actuator has no support mounting."""
+    (its limit). inf when the actuator has no support mounting.
+
+    Parameters
+    ----------
+    act : Actuator
+        The actuator (its support mounting).
+    screw_force : float or array_like
+        F3 [N].
+    temperature : float or array_like
+        T [K].
+
+    Returns
+    -------
+    ndarray
+        [N/m] (inf without a support mounting).
+
+    Examples
+    --------
+    >>> act = Actuator.from_catalog("liu2014_ema")
+    >>> k = support_axial_stiffness(act, [500.0, 2000.0], 293.15)
+    >>> bool(k[1] > k[0])  # Hertzian: stiffer under more load
+    True
+    """
     f3, t = np.broadcast_arrays(
         np.asarray(check_finite("screw_force", screw_force, "N"), dtype=float),
         np.asarray(check_temperature("temperature", temperature), dtype=float),
@@ -598,7 +762,23 @@ def support_axial_stiffness(act: Actuator, screw_force, temperature):
 
 
 def per_degree(stiffness):
-    """N·m/rad → N·m/° (Liu's unit), for display."""
+    """N·m/rad → N·m/° (Liu's unit), for display.
+
+    Parameters
+    ----------
+    stiffness : float or array_like
+        [N·m/rad].
+
+    Returns
+    -------
+    float or ndarray
+        [N·m/°].
+
+    Examples
+    --------
+    >>> round(float(per_degree(180.0 / math.pi)), 12)  # N·m/°: 1 N·m/° back
+    1.0
+    """
     return np.asarray(stiffness) * DEG
 
 

@@ -102,6 +102,11 @@ def parameter_specs(values: Mapping | None = None, sources: Mapping | None = Non
     """Every parameter of the pair with the defaults ``values`` and their provenance
     ``sources`` (default: :data:`DEFAULT_MOUNTING` with grease).
 
+    Returns
+    -------
+    list of ParameterSpec
+        Name, type, unit (SI), range, default and provenance of each parameter.
+
     >>> [p.name for p in parameter_specs()][:3]
     ['bore', 'outer_diameter', 'width']
     """
@@ -120,6 +125,10 @@ PARAMETERS = parameter_specs()
 def parameter(name: str) -> ParameterSpec:
     """The :class:`ParameterSpec` ``name`` of :data:`PARAMETERS`.
 
+    Returns
+    -------
+    ParameterSpec
+
     >>> parameter("lubrication").item("solid")
     2
     """
@@ -133,6 +142,11 @@ def prefixed_specs(prefix: str, what: str, names, values: Mapping, sources: Mapp
     """The specs of ``names`` renamed ``prefix + name``, described as parts of ``what``, with
     the defaults ``values`` and provenance ``sources`` (keyed by the unprefixed names): one
     table for a second pair in another FMU.
+
+    Returns
+    -------
+    list of ParameterSpec
+        The renamed specs.
 
     >>> specs = prefixed_specs("support_", "support pair", ("bore",), {"bore": 0.035},
     ...                        {"bore": "catalogue"})
@@ -184,6 +198,11 @@ def parameter_problems(p: Mapping[str, object]) -> list[str]:
     seats that do not surround the rings, ν100 ≥ ν40, a spring preload without a stiffness or
     compression, a force preload without a force, a tandem pair preloaded by a shim, a yoke
     without arms, a loop with nothing in it.
+
+    Returns
+    -------
+    list of str
+        One message per problem, each naming the parameters and values (empty: none).
 
     >>> p = default_parameters() | {"preload_method": "spring", "spring_stiffness": 0.0}
     >>> parameter_problems(p)[0]
@@ -238,7 +257,23 @@ def parameter_problems(p: Mapping[str, object]) -> list[str]:
 
 def friction_from_parameters(p: Mapping[str, object]) -> FrictionModel:
     """The :class:`~.friction_models.FrictionModel` of the numbers ``friction_model``,
-    ``skf_*``, ``lubricant_density`` and ``grease_*`` of parameter set ``p`` (checked)."""
+    ``skf_*``, ``lubricant_density`` and ``grease_*`` of parameter set ``p`` (checked).
+
+    Parameters
+    ----------
+    p : Mapping
+        A full, checked parameter set (SI; choices as keys).
+
+    Returns
+    -------
+    FrictionModel
+
+    Examples
+    --------
+    >>> fm = friction_from_parameters(default_parameters())
+    >>> fm.model, fm.grease is None
+    ('yu2017', True)
+    """
     skf = SkfConstants(
         key="parameters",
         bearing_type="angular_contact",
@@ -275,7 +310,24 @@ def _material(name: str, p: Mapping, prefix: str, poisson: float | None = None) 
 
 def bearing_from_parameters(p: Mapping[str, object]) -> BallBearing:
     """The :class:`BallBearing` of the numbers :data:`BEARING_FIELDS` of parameter set ``p``
-    (checked by :func:`pair_from_parameters`)."""
+    (checked by :func:`pair_from_parameters`).
+
+    Parameters
+    ----------
+    p : Mapping
+        A full, checked parameter set (SI).
+
+    Returns
+    -------
+    BallBearing
+        Dimensions [m], ball count, contact angle [rad], curvatures [-] and materials.
+
+    Examples
+    --------
+    >>> b = bearing_from_parameters(default_parameters())
+    >>> b.n_balls, round(b.pitch_diameter * 1e3, 3)  # -, mm: the 71803
+    (15, 21.5)
+    """
     return BallBearing(
         key="parameters",
         name="bearing given by parameters",
@@ -334,6 +386,10 @@ def pair_from_parameters(p: Mapping[str, object]) -> BearingPair:
     :data:`PARAMETER_NAMES`; SI; choices as keys): the one place from numbers to physics, for
     the FMU, the calibration and the sweeps. A bad value or an inconsistent set raises
     ValueError naming the parameters and values (:func:`parameter_problems`).
+
+    Returns
+    -------
+    BearingPair
 
     >>> pair = pair_from_parameters(default_parameters())
     >>> pair.bearing.n_balls, pair.mounting.arrangement, round(pair.lubricant.c, 3)

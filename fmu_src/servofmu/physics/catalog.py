@@ -58,7 +58,25 @@ def _table(name: str) -> dict:
 
 
 def origin(table: str, key: str) -> str:
-    """Where entry ``key`` of ``table`` comes from: ``data/<table>.toml`` or a user file."""
+    """Where entry ``key`` of ``table`` comes from: ``data/<table>.toml`` or a user file.
+
+    Parameters
+    ----------
+    table : str
+        "materials", "lubricants", "bearings" or "mountings".
+    key : str
+        The entry.
+
+    Returns
+    -------
+    str
+        The file's path.
+
+    Examples
+    --------
+    >>> origin("bearings", "71803").endswith("data/bearings.toml")
+    True
+    """
     if key in _USER.get(table, {}):
         return _USER[table][key][1]
     _lookup(table, key)
@@ -67,7 +85,17 @@ def origin(table: str, key: str) -> str:
 
 def generation() -> int:
     """A number that changes whenever user catalogues are added or removed (caches of derived
-    records key on it)."""
+    records key on it).
+
+    Returns
+    -------
+    int
+
+    Examples
+    --------
+    >>> isinstance(generation(), int)
+    True
+    """
     return _generation[0]
 
 
@@ -82,7 +110,27 @@ def add_entries(tables: dict[str, dict], file: str) -> None:
     """Add user entries ``{table: {key: entry}}`` (tables of :data:`USER_TABLES`, entries in
     the format of the package's data files) read from ``file``. A key that exists already
     raises ValueError naming the file, the table and the key; nothing is added then. Each
-    entry is checked when it is loaded (:func:`check_entries`)."""
+    entry is checked when it is loaded (:func:`check_entries`).
+
+    Parameters
+    ----------
+    tables : dict
+        ``{table: {key: entry}}``.
+    file : str
+        Where they were read (for messages).
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> try:
+    ...     add_entries({"bearings": {"71803": {"name": "again"}}}, "mine.toml")
+    ... except ValueError as e:
+    ...     print(e)
+    mine.toml: bearings.71803 exists already (in data/bearings.toml): choose another key
+    """
     unknown = sorted(set(tables) - set(USER_TABLES))
     if unknown:
         raise ValueError(f"{file}: tables {unknown} are not among {list(USER_TABLES)}")
@@ -104,7 +152,18 @@ def add_entries(tables: dict[str, dict], file: str) -> None:
 
 
 def remove_user_entries() -> None:
-    """Forget every user catalogue entry (the package's data stay)."""
+    """Forget every user catalogue entry (the package's data stay).
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> remove_user_entries()
+    >>> "71803" in keys("bearings")  # the package's stay
+    True
+    """
     for table in _USER.values():
         table.clear()
     _changed()
@@ -112,7 +171,23 @@ def remove_user_entries() -> None:
 
 def check_entries(table: str, keys_: list[str]) -> None:
     """Load each entry ``keys_`` of ``table``; a bad one raises ValueError naming the file,
-    the entry and the field."""
+    the entry and the field.
+
+    Parameters
+    ----------
+    table : str
+        The table.
+    keys_ : list of str
+        The entries.
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> check_entries("bearings", ["71803", "7002C"])
+    """
     loader = {"materials": material, "lubricants": lubricant_record, "bearings": bearing,
               "mountings": mounting}[table]  # fmt: skip
     for key in keys_:
@@ -124,7 +199,26 @@ def check_entries(table: str, keys_: list[str]) -> None:
 
 
 def quantity(entry: dict, field: str) -> tuple[float, str]:
-    """(SI value, provenance) of one ``{value, unit, kind, ref}`` data entry."""
+    """(SI value, provenance) of one ``{value, unit, kind, ref}`` data entry.
+
+    Parameters
+    ----------
+    entry : dict
+        ``{value, unit, kind, ref}``.
+    field : str
+        Its field's name (for messages).
+
+    Returns
+    -------
+    tuple
+        (value in SI, "kind: ref").
+
+    Examples
+    --------
+    >>> e = {"value": 17, "unit": "mm", "kind": "catalogue", "ref": "ISO 15"}
+    >>> quantity(e, "bore")  # m
+    (0.017, 'catalogue: ISO 15')
+    """
     try:
         value, unit, kind, ref = (entry[k] for k in ("value", "unit", "kind", "ref"))
     except (KeyError, TypeError):
@@ -142,13 +236,33 @@ def _lookup(table: str, key: str) -> dict:
 
 
 def keys(table: str) -> list[str]:
-    """Keys of one data table: ``materials``, ``lubricants``, ``bearings`` or ``mountings``."""
+    """Keys of one data table: ``materials``, ``lubricants``, ``bearings`` or ``mountings``.
+
+    Parameters
+    ----------
+    table : str
+        "materials", "lubricants", "bearings" or "mountings".
+
+    Returns
+    -------
+    list of str
+
+    Examples
+    --------
+    >>> keys("materials")[:3]
+    ['9cr18', 'bearing_steel_yu', 'cast_aluminium']
+    """
     return sorted(_table(table))
 
 
 def titles(table: str) -> dict[str, str]:
     """``{key: name}`` of one data table in the order of its file (entries added at the end
     keep the positions of the others: FMU enumeration values are numbered in this order).
+
+    Returns
+    -------
+    dict
+        key → name.
 
     >>> list(titles("lubricants"))[:2]
     ['krytox_143aa', 'iso_vg32']
@@ -163,7 +277,24 @@ OPTIONAL_MATERIAL_FIELDS = ("density", "specific_heat", "thermal_conductivity", 
 @functools.cache
 def material(key: str) -> Material:
     """The :class:`Material` ``key`` from ``data/materials.toml``; the thermal properties
-    (:data:`OPTIONAL_MATERIAL_FIELDS`) are optional."""
+    (:data:`OPTIONAL_MATERIAL_FIELDS`) are optional.
+
+    Parameters
+    ----------
+    key : str
+        A key of ``data/materials.toml``.
+
+    Returns
+    -------
+    Material
+        E [Pa], ν [-], α [1/K] (and thermal properties where given).
+
+    Examples
+    --------
+    >>> m = material("cast_aluminium")
+    >>> round(m.youngs_modulus / 1e9, 1), m.expansion  # GPa, 1/K
+    (72.0, 2.17e-05)
+    """
     entry = _lookup("materials", key)
     values, prov = {}, []
     for field in ("youngs_modulus", "poisson_ratio", "expansion", *OPTIONAL_MATERIAL_FIELDS):
@@ -347,7 +478,24 @@ def lubricant_record(key: str) -> LubricantRecord:
 
 @functools.cache
 def lubricant(key: str) -> WaltherViscosity | None:
-    """The viscosity model of lubricant ``key``; ``None`` for a solid (dry-film) lubricant."""
+    """The viscosity model of lubricant ``key``; ``None`` for a solid (dry-film) lubricant.
+
+    Parameters
+    ----------
+    key : str
+        A key of ``data/lubricants.toml``.
+
+    Returns
+    -------
+    WaltherViscosity or None
+
+    Examples
+    --------
+    >>> round(float(lubricant("iso_vg32").kinematic_viscosity(313.15)) * 1e6, 6)  # cSt at 40 °C
+    32.0
+    >>> lubricant("mos2_film") is None  # a dry film
+    True
+    """
     return lubricant_record(key).viscosity
 
 
@@ -530,13 +678,46 @@ def bearing_from_entry(key: str, entry: dict) -> BallBearing:
 def bearing(key: str) -> BallBearing:
     """The :class:`BallBearing` ``key`` (e.g. "71803", "7002C", "61804") from
     ``data/bearings.toml``; see :func:`bearing_from_entry` for the ways an entry gives its
-    geometry."""
+    geometry.
+
+    Parameters
+    ----------
+    key : str
+        A key of ``data/bearings.toml``.
+
+    Returns
+    -------
+    BallBearing
+        Dimensions [m], ball count, contact angle [rad], curvatures [-], materials.
+
+    Examples
+    --------
+    >>> b = bearing("7002C")
+    >>> round(b.bore * 1e3, 3), round(b.outer_diameter * 1e3, 3), b.n_balls  # mm, mm, -
+    (15.0, 32.0, 9)
+    """
     return bearing_from_entry(key, _lookup("bearings", key))
 
 
 def mounting_entry(key: str) -> dict:
     """The raw data of mounting ``key`` (``data/mountings.toml``), with ``base`` resolved:
-    an entry may name a ``base`` entry and override some of its fields."""
+    an entry may name a ``base`` entry and override some of its fields.
+
+    Parameters
+    ----------
+    key : str
+        A key of ``data/mountings.toml``.
+
+    Returns
+    -------
+    dict
+        The entry's fields as written (units and provenance kept).
+
+    Examples
+    --------
+    >>> mounting_entry("yu2017_gimbal_spring")["bearing"]  # from its base
+    '71803'
+    """
     entry = dict(_lookup("mountings", key))
     if "base" in entry:
         base = mounting_entry(entry.pop("base"))
@@ -547,7 +728,23 @@ def mounting_entry(key: str) -> dict:
 
 @functools.cache
 def mounting(key: str):
-    """The :class:`mounting.Mounting` ``key`` from ``data/mountings.toml``."""
+    """The :class:`mounting.Mounting` ``key`` from ``data/mountings.toml``.
+
+    Parameters
+    ----------
+    key : str
+        A key of ``data/mountings.toml``.
+
+    Returns
+    -------
+    Mounting
+
+    Examples
+    --------
+    >>> m = mounting("ning_space_shaft")
+    >>> m.arrangement, m.preload_method
+    ('back_to_back', 'force')
+    """
     entry = mounting_entry(key)
     prov = {}
 
@@ -613,6 +810,11 @@ def actuator_entry(key: str) -> tuple[dict, dict, dict]:
     ``support_mounting``), its SI values and their provenance. The model record is built by
     :meth:`actuator.Actuator.from_catalog` (the catalogue imports no model).
 
+    Returns
+    -------
+    tuple of dict
+        (text fields, SI values, provenance).
+
     >>> text, values, prov = actuator_entry("liu2014_ema")
     >>> text["support_mounting"], values["gear_ratio"], prov["crank_length"].split(":")[0]
     ('liu2014_screw_support', 3.0, 'calibrated')
@@ -629,6 +831,10 @@ def mounting_coefficients(key: str):
     (``coefficients = ...``; the variants of one gimbal share one calibration), else the set of
     its own key, else None.
 
+    Returns
+    -------
+    FrictionCoefficients or None
+
     >>> mounting_coefficients("yu2017_gimbal_rigid") == coefficients("yu2017_gimbal")
     True
     """
@@ -638,7 +844,23 @@ def mounting_coefficients(key: str):
 
 def coefficients(key: str):
     """The :class:`friction.FrictionCoefficients` of mounting ``key`` from
-    ``data/coefficients.toml``."""
+    ``data/coefficients.toml``.
+
+    Parameters
+    ----------
+    key : str
+        A key of ``data/coefficients.toml``.
+
+    Returns
+    -------
+    FrictionCoefficients
+        α_r [-], μ [-], μ_s/μ [-], s0 [-] with provenance.
+
+    Examples
+    --------
+    >>> round(coefficients("yu2017_gimbal").sliding_friction, 4)  # calibrated on Yu
+    0.0817
+    """
     from .friction import FrictionCoefficients
 
     entry = _lookup("coefficients", key)
@@ -651,7 +873,23 @@ def coefficients(key: str):
 
 def tolerances(key: str) -> dict[str, tuple[float, float, str]]:
     """Tolerance bands of mounting ``key`` from ``data/tolerances.toml``: {dimension: (low,
-    high, provenance)}, deviations from nominal in SI."""
+    high, provenance)}, deviations from nominal in SI.
+
+    Parameters
+    ----------
+    key : str
+        A mounting with tolerance bands.
+
+    Returns
+    -------
+    dict
+        dimension → (low, high [SI], provenance).
+
+    Examples
+    --------
+    >>> sorted(tolerances("yu2017_gimbal"))[:2]
+    ['housing_bore', 'ring_outer_diameter']
+    """
     out = {}
     for field, spec in _lookup("tolerances", key).items():
         try:
@@ -668,7 +906,23 @@ def tolerances(key: str) -> dict[str, tuple[float, float, str]]:
 
 def thermal(key: str) -> dict:
     """Entry ``key`` of ``data/thermal.toml`` (``handbook`` or a preset of
-    :mod:`.thermal_network`): numeric values as (SI value, provenance), other values as given."""
+    :mod:`.thermal_network`): numeric values as (SI value, provenance), other values as given.
+
+    Parameters
+    ----------
+    key : str
+        A key of ``data/thermal.toml``.
+
+    Returns
+    -------
+    dict
+        field → (SI value, provenance) or the value as given.
+
+    Examples
+    --------
+    >>> sorted(thermal("handbook"))[:2]
+    ['air_conductivity', 'air_filled_contact_resistance']
+    """
     data = _table("thermal")
     if key not in data:
         raise ValueError(f"thermal key = {key!r} is not one of {sorted(data)}")
@@ -692,6 +946,15 @@ TABLES = (
 
 
 def preload() -> None:
-    """Read every data table now (they are cached): see :func:`servofmu.physics.load_all`."""
+    """Read every data table now (they are cached): see :func:`servofmu.physics.load_all`.
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> preload()
+    """
     for name in TABLES:
         _package_table(name)

@@ -59,7 +59,28 @@ class PIDState:
 
 
 def pid_sample(p: PIDParameters, s: PIDState, reference: float, measurement: float):
-    """One sample of the controller: returns (command u_k [V], new state)."""
+    """One sample of the controller: returns (command u_k [V], new state).
+
+    Parameters
+    ----------
+    p : PIDParameters
+        Gains, limits [V] and sample period [s].
+    s : PIDState
+        The state after the last sample.
+    reference, measurement : float
+        Setpoint and measured value [rad or rad/s by ``p.mode``].
+
+    Returns
+    -------
+    tuple
+        (command u_k [V], the new :class:`PIDState`).
+
+    Examples
+    --------
+    >>> u, s = pid_sample(PIDParameters(kp=2.0, ki=0.0), PIDState(), 1.0, 0.25)
+    >>> u  # V: kp·e = 2·0.75
+    1.5
+    """
     e = reference - measurement
     y_prev = measurement if s.last_measurement is None else s.last_measurement
     ts, tf = p.sample_period, p.derivative_filter

@@ -38,7 +38,20 @@ from .units import CST, MM, NMM, RPM
 def race_contact_radius(pitch_diameter, ball_diameter, contact_angle, race: str):
     """Radius of the race contact about the bearing axis, (dm ∓ Dw·cos α)/2 [m] (Yu 2017
     eq 2: − for the inner, + for the outer race). pitch_diameter dm [m], ball_diameter Dw [m],
-    contact_angle α [rad]."""
+    contact_angle α [rad].
+
+    Returns
+    -------
+    float or ndarray
+        r [m].
+
+    Examples
+    --------
+    >>> round(race_contact_radius(21.5e-3, 2.381e-3, 0.0, "inner") * 1e3, 4)  # mm: (dm − Dw)/2
+    np.float64(9.5595)
+    >>> round(race_contact_radius(21.5e-3, 2.381e-3, 0.0, "outer") * 1e3, 4)  # mm: (dm + Dw)/2
+    np.float64(11.9405)
+    """
     check_choice("race", race, ("inner", "outer"))
     check_positive("pitch_diameter", pitch_diameter, "m")
     check_positive("ball_diameter", ball_diameter, "m")
@@ -56,7 +69,29 @@ def hysteresis_rolling_force(load, semi_minor_axis, ball_diameter, loss_factor):
     (Yu 2017 eq 1) with R = Dw/2 the ball radius (Johnson 1985, ch. 9).
 
     load Q [N], semi_minor_axis b [m] (rolling direction), ball_diameter Dw [m],
-    loss_factor α_r [-] (energy lost per cycle, < 1 % for metals per Yu)."""
+    loss_factor α_r [-] (energy lost per cycle, < 1 % for metals per Yu).
+
+    Parameters
+    ----------
+    load : float or array_like
+        Q [N].
+    semi_minor_axis : float or array_like
+        b [m].
+    ball_diameter : float or array_like
+        Dw [m].
+    loss_factor : float
+        α_r [-].
+
+    Returns
+    -------
+    float or ndarray
+        F_SE [N].
+
+    Examples
+    --------
+    >>> round(hysteresis_rolling_force(10.0, 50e-6, 2.5e-3, 0.01) * 1e6, 3)  # µN: 3·b·α·Q/(16·Dw/2)
+    750.0
+    """
     check_nonnegative("load", load, "N")
     check_nonnegative("semi_minor_axis", semi_minor_axis, "m")
     check_positive("ball_diameter", ball_diameter, "m")
@@ -71,7 +106,18 @@ def _hysteresis(load, semi_minor_axis, ball_diameter, loss_factor):
 def spin_moment(load, semi_major_axis, e_integral, friction_coefficient):
     """Spin friction moment of one contact about its normal, M'_K = (3/8)·μ·Q·a·E(e) [N·m]
     (Yu 2017 eq 6; Harris & Kotzalas 2007). load Q [N], semi_major_axis a [m], e_integral E(e)
-    [-] the complete elliptic integral of the second kind, friction_coefficient μ [-]."""
+    [-] the complete elliptic integral of the second kind, friction_coefficient μ [-].
+
+    Returns
+    -------
+    float or ndarray
+        M' [N·m].
+
+    Examples
+    --------
+    >>> round(spin_moment(10.0, 2e-4, 1.0, 0.1) * 1e6, 6)  # µN·m: (3/8)·0.1·10 N·0.2 mm
+    75.0
+    """
     check_nonnegative("load", load, "N")
     check_nonnegative("semi_major_axis", semi_major_axis, "m")
     check_range("e_integral", e_integral, 1.0, np.pi / 2)
@@ -105,7 +151,32 @@ def heathcote_sliding_force(load, semi_major_axis, ball_diameter, groove_radius,
     the received text).
 
     load Q [N], semi_major_axis a [m], ball_diameter Dw [m], groove_radius r [m],
-    friction μ [-]."""
+    friction μ [-].
+
+    Parameters
+    ----------
+    load : float or array_like
+        Q [N].
+    semi_major_axis : float or array_like
+        a [m].
+    ball_diameter : float or array_like
+        Dw [m].
+    groove_radius : float or array_like
+        r [m].
+    friction : float
+        μ [-].
+
+    Returns
+    -------
+    float or ndarray
+        F_d [N].
+
+    Examples
+    --------
+    >>> f = heathcote_sliding_force(10.0, 2e-4, 2.5e-3, 1.3e-3, 0.1)
+    >>> round(f * 1e3, 4)  # mN
+    2.023
+    """
     check_nonnegative("load", load, "N")
     check_nonnegative("semi_major_axis", semi_major_axis, "m")
     check_positive("ball_diameter", ball_diameter, "m")
@@ -149,6 +220,17 @@ def palmgren_viscous_torque(kinematic_viscosity, speed, pitch_diameter, s0):
 
     kinematic_viscosity ν0 [m²/s], speed ω [rad/s] (sign ignored), pitch_diameter dm [m],
     s0 [-] the bearing/lubrication factor (f0 in Palmgren's notation).
+
+    Returns
+    -------
+    float or ndarray
+        M_L [N·m].
+
+    Examples
+    --------
+    >>> m = palmgren_viscous_torque(100e-6, 2 * math.pi, 21.5e-3, 1.0)  # 100 cSt, 60 rpm
+    >>> round(m * 1e3, 6)  # N·mm: 1e-7·s0·(ν·n)^(2/3)·dm³ with ν·n = 100 cSt × 60 rpm
+    0.328158
     """
     check_nonnegative("kinematic_viscosity", kinematic_viscosity, "m²/s")
     check_finite("speed", speed, "rad/s")
@@ -175,6 +257,18 @@ def regularised_friction_torque(
     of the smooth sign), stribeck_speed ω_s [rad/s] (decay of the static excess). The sign
     regularisation and Stribeck decay follow Andersson, Söderberg & Björklund (2007),
     Tribology International 40:580. Signed like ``speed``.
+
+    Returns
+    -------
+    float or ndarray
+        M [N·m], signed like ``speed``.
+
+    Examples
+    --------
+    >>> regularised_friction_torque(0.0, 1e-3, 5e-4, 1e-3, 1e-2)  # N·m: nothing at rest
+    0.0
+    >>> round(regularised_friction_torque(-1.0, 1e-3, 5e-4, 1e-3, 1e-2) * 1e3, 6)  # N·mm
+    -1.0
     """
     check_finite("speed", speed, "rad/s")
     check_nonnegative("running_torque", running_torque, "N·m")
@@ -273,6 +367,24 @@ def ball_torque_terms(
     tuple
         (hysteresis inner, hysteresis outer, sliding inner, sliding outer, spin inner,
         spin outer) [N·m].
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> from servofmu.physics.equilibrium import axial_state
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> s = axial_state(g, 70e-6)  # one ball of the 71803 under 59 N
+    >>> q, alpha = float(s.ball_load), float(s.contact_angle)
+    >>> c3 = q ** (1 / 3)  # the semi-axes grow as Q^(1/3)
+    >>> inner = (float(s.inner.a_coef) * c3, float(s.inner.b_coef) * c3, float(s.inner.e_integral))
+    >>> outer = (float(s.outer.a_coef) * c3, float(s.outer.b_coef) * c3, float(s.outer.e_integral))
+    >>> r_in = race_contact_radius(g.pitch_diameter, g.ball_diameter, alpha, "inner")
+    >>> r_out = race_contact_radius(g.pitch_diameter, g.ball_diameter, alpha, "outer")
+    >>> terms = ball_torque_terms(q, inner, outer, r_in, r_out, math.sin(alpha), g.ball_diameter,
+    ...                          (g.inner_groove_radius, g.outer_groove_radius),
+    ...                          FrictionCoefficients(), False, False)
+    >>> [round(float(t) * 1e6, 4) for t in terms]  # µN·m: one ball; Yu eq 7 spins one race
+    [4.1457, 5.3362, 0.0, 0.0, 0.0, 11.8902]
     """
     (a_i, b_i, e_i), (a_o, b_o, e_o) = inner, outer
     dw = ball_diameter
@@ -323,6 +435,25 @@ def ball_set_torques(
     differential_sliding : include Heathcote sliding (Ning); Yu eq 9 has no such term
 
     Yu 2017 eq 1–3, 5–7; Ning (reconstructed, see module docstring).
+
+    Returns
+    -------
+    BallSetTorques
+        hysteresis, spin, sliding, inner_ring, outer_ring [N·m] (summed over the balls).
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> from servofmu.physics.equilibrium import axial_state
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> s = axial_state(g, 70e-6)  # one ball of the 71803 under 59 N
+    >>> z = g.n_balls
+    >>> t = ball_set_torques(np.full(z, float(s.ball_load)), np.full(z, float(s.contact_angle)),
+    ...                      s.inner, s.outer, g.pitch_diameter, g.ball_diameter,
+    ...                      g.inner_groove_radius, g.outer_groove_radius,
+    ...                      FrictionCoefficients(), "grease", False)
+    >>> round(float(t.hysteresis) * 1e3, 5), round(float(t.spin) * 1e3, 5)  # N·mm
+    (0.14223, 0.17835)
     """
 
     def g(x):

@@ -113,7 +113,24 @@ DEFAULT_FRICTION = FrictionModel()
 
 def mean_diameter(bearing) -> float:
     """(d + D)/2 [m] of a :class:`~.geometry.BallBearing`: the dm of the SKF model and of the
-    grease term (nominal, as the catalogue and the datasheet test use it)."""
+    grease term (nominal, as the catalogue and the datasheet test use it).
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing (d, D [m]).
+
+    Returns
+    -------
+    float
+        dm [m].
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> round(mean_diameter(catalog.bearing("71803")) * 1e3, 3)  # mm: (17 + 26)/2
+    21.5
+    """
     return 0.5 * (float(bearing.bore) + float(bearing.outer_diameter))
 
 
@@ -121,7 +138,25 @@ def skf_loads(force_a, force_b, radial_load):
     """(Fa,A, Fa,B, Fr) [N]: each bearing's axial load from the equilibrium and its share of
     the external radial load [N] (the pair solve makes Fr,A = Fr,B = F_r/2). A bearing that has
     lost its preload under a radial load can have Σ Q·sin α slightly below 0 (balls past the
-    groove bottom on the far side): the SKF model's Fa is a thrust, so it counts as 0."""
+    groove bottom on the far side): the SKF model's Fa is a thrust, so it counts as 0.
+
+    Parameters
+    ----------
+    force_a, force_b : float or ndarray
+        The bearings' axial forces [N].
+    radial_load : float or ndarray
+        F_r [N].
+
+    Returns
+    -------
+    tuple
+        (Fa,A, Fa,B, Fr) [N], negative thrusts counted as 0.
+
+    Examples
+    --------
+    >>> skf_loads(40.0, -1e-9, 10.0)  # N: a tiny negative thrust counts as 0; F_r/2 each
+    (40.0, 0.0, 5.0)
+    """
     if type(force_a) is float and type(force_b) is float:
         return max(force_a, 0.0), max(force_b, 0.0), 0.5 * abs(radial_load)
     return np.maximum(force_a, 0.0), np.maximum(force_b, 0.0), 0.5 * abs(radial_load)
@@ -130,7 +165,32 @@ def skf_loads(force_a, force_b, radial_load):
 def skf_torques(pair, loads, kinematic_viscosity, speed):
     """(φish·φrs·ΣMrr, ΣMsl) [N·m] of the pair (:func:`.rolling_friction.pair_moments`
     without its checks) at the loads of :func:`skf_loads`, viscosity ν [m²/s] and speed ω
-    [rad/s]."""
+    [rad/s].
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair (its SKF constants).
+    loads : tuple
+        :func:`skf_loads` [N].
+    kinematic_viscosity : float or ndarray
+        ν [m²/s].
+    speed : float or ndarray
+        ω [rad/s].
+
+    Returns
+    -------
+    tuple
+        (rolling, sliding) [N·m].
+
+    Examples
+    --------
+    >>> from servofmu.physics.bearing import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
+    >>> rr, sl = skf_torques(pair, skf_loads(40.0, 40.0, 0.0), 100e-6, 10.0)
+    >>> round(float(rr) * 1e3, 4), round(float(sl) * 1e3, 4)  # N·mm
+    (1.0816, 0.6943)
+    """
     fm, b = pair.friction, pair.bearing
     fa_a, fa_b, fr = loads
     rolling, sliding = _pair_moments(
@@ -151,7 +211,27 @@ def skf_torques(pair, loads, kinematic_viscosity, speed):
 
 def skf_starting(pair, loads):
     """SKF's starting torque of the pair ΣMsl(n → 0) [N·m] at the loads of :func:`skf_loads`
-    (open bearings: no seal moment)."""
+    (open bearings: no seal moment).
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+    loads : tuple
+        :func:`skf_loads` [N].
+
+    Returns
+    -------
+    float or ndarray
+        [N·m].
+
+    Examples
+    --------
+    >>> from servofmu.physics.bearing import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
+    >>> round(float(skf_starting(pair, skf_loads(40.0, 40.0, 0.0))) * 1e3, 4)  # N·mm
+    0.8055
+    """
     fm, b = pair.friction, pair.bearing
     fa_a, fa_b, fr = loads
     start = _pair_starting(
@@ -163,7 +243,25 @@ def skf_starting(pair, loads):
 def ehl_torque(terms, speed):
     """Σ over the contacts of :func:`.ehl_rolling.contact_rolling_torque` [N·m] at ω [rad/s].
     ``terms`` = (scale, ivr, ehl, m0, U per rad/s): tuples of floats (one per loaded contact,
-    the per-step path) or arrays with a trailing contact axis (the exact path)."""
+    the per-step path) or arrays with a trailing contact axis (the exact path).
+
+    Parameters
+    ----------
+    terms : tuple
+        The contacts' terms.
+    speed : float or ndarray
+        ω [rad/s].
+
+    Returns
+    -------
+    float or ndarray
+        [N·m].
+
+    Examples
+    --------
+    >>> ehl_torque(((1.0,), (1.0,), (1.0,), (1.0,), (0.0,)), 5.0)  # dry contact: U = 0
+    0.0
+    """
     scale, ivr, ehl, m0, u = terms
     if isinstance(scale, np.ndarray):
         return np.sum(contact_rolling_torque(scale, ivr, ehl, m0, u, speed), axis=-1)
@@ -175,7 +273,29 @@ def ehl_torque(terms, speed):
 
 def grease_running(pair, kinematic_viscosity, speed):
     """Running torque of the grease term of both bearings [N·m]: 2·M0(f0, ν, |ω|, (d + D)/2)
-    (Palmgren, :mod:`.grease_torque`); 0 without a grease term."""
+    (Palmgren, :mod:`.grease_torque`); 0 without a grease term.
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair (its grease term).
+    kinematic_viscosity : float or ndarray
+        The base oil's ν [m²/s].
+    speed : float or ndarray
+        ω [rad/s].
+
+    Returns
+    -------
+    float or ndarray
+        [N·m].
+
+    Examples
+    --------
+    >>> from servofmu.physics.bearing import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
+    >>> grease_running(pair, 100e-6, 1.0)  # N·m: no grease term in this pair
+    0.0
+    """
     g = pair.friction.grease
     if g is None:
         return 0.0
@@ -185,7 +305,27 @@ def grease_running(pair, kinematic_viscosity, speed):
 def grease_rest_and_start(pair, kinematic_viscosity):
     """(running torque at rest, starting torque) of the grease term of both bearings [N·m]:
     2·M0(ω = 0) and 2·max(ks·M0(ω_test), M0(ω = 0)) (a starting torque is never below the
-    running torque at rest); (0, 0) without a grease term."""
+    running torque at rest); (0, 0) without a grease term.
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+    kinematic_viscosity : float or ndarray
+        The base oil's ν [m²/s].
+
+    Returns
+    -------
+    tuple
+        (running torque at rest, starting torque) [N·m].
+
+    Examples
+    --------
+    >>> from servofmu.physics.bearing import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
+    >>> grease_rest_and_start(pair, 100e-6)  # N·m: no grease term
+    (0.0, 0.0)
+    """
     g = pair.friction.grease
     if g is None:
         return 0.0, 0.0
@@ -242,6 +382,11 @@ def lubricant_numbers(lubricant) -> tuple[tuple[float, str], tuple[float, str]]:
     """((μEHL, source), (density [kg/m³], source)) of a lubricant record (or None): SKF's μEHL
     of its base oil's ``oil_class`` (mineral when unknown, labelled assumed) and its recorded
     density (else :data:`ASSUMED_DENSITY`, labelled assumed).
+
+    Returns
+    -------
+    tuple
+        ((μEHL [-], source), (density [kg/m³], source)).
 
     >>> from servofmu.physics import catalog
     >>> (mu, _), (rho, src) = lubricant_numbers(catalog.lubricant_record("xc_5606j"))

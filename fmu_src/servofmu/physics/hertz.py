@@ -37,6 +37,17 @@ def curvature_sum_difference(ball_diameter, pitch_diameter, groove_curvature, co
     With γ = Dw·cos α/dm (Harris & Kotzalas 2007, ch. 2):
     inner  Σρ = (4 − 1/f + 2γ/(1−γ))/Dw,  F = (1/f + 2γ/(1−γ)) / (4 − 1/f + 2γ/(1−γ));
     outer  Σρ = (4 − 1/f − 2γ/(1+γ))/Dw,  F = (1/f − 2γ/(1+γ)) / (4 − 1/f − 2γ/(1+γ)).
+
+    Returns
+    -------
+    tuple
+        (Σρ [1/m], F(ρ) [-]).
+
+    Examples
+    --------
+    >>> s, f = curvature_sum_difference(2.381e-3, 21.5e-3, 0.52, 0.26, "inner")
+    >>> round(float(s)), round(float(f), 4)  # 1/m, -
+    (973, 0.9336)
     """
     check_choice("race", race, RACES)
     dw = check_positive("ball_diameter", ball_diameter, "m")
@@ -57,6 +68,13 @@ def curvature_difference_of_ellipticity(k):
     """F(ρ) as an explicit function of the ellipticity k = a/b ≥ 1 (the Hertz relation):
     F = ((k² + 1)·E(m) − 2·K(m)) / ((k² − 1)·E(m)),  m = 1 − 1/k².
     Harris & Kotzalas 2007, ch. 6. Returns 0 at k = 1 (circular contact).
+
+    Examples
+    --------
+    >>> float(curvature_difference_of_ellipticity(1.0))  # circular contact
+    0.0
+    >>> round(float(curvature_difference_of_ellipticity(ellipticity(0.9))), 12)  # the inverse
+    0.9
     """
     k = np.asarray(check_range("k", k, 1.0, None), dtype=float)
     m = 1.0 - 1.0 / k**2
@@ -72,7 +90,28 @@ def hertz_relation(k, k_integral, e_integral):
     ellipticity k > 1 [-], given K = K(m) and E = E(m) at m = 1 − 1/k² [-] (Harris & Kotzalas
     2007, ch. 6). dF/dk uses dK/dm = (E − (1 − m)·K)/(2m(1 − m)), dE/dm = (E − K)/(2m)
     (Byrd & Friedman 1971, 710.00, 710.02) and dm/dk = 2/k³. Floats or arrays; the Newton
-    step of :func:`ellipticity` and of the per-step continuation (:mod:`.continuation`)."""
+    step of :func:`ellipticity` and of the per-step continuation (:mod:`.continuation`).
+
+    Parameters
+    ----------
+    k : float or array_like
+        Ellipticity k > 1 [-].
+    k_integral, e_integral : float or array_like
+        K(m), E(m) [-] at m = 1 − 1/k².
+
+    Returns
+    -------
+    tuple
+        (F(k) [-], dF/dk [-]).
+
+    Examples
+    --------
+    >>> from scipy.special import ellipe, ellipk
+    >>> k = 8.0
+    >>> f, df = hertz_relation(k, ellipk(1 - 1 / k**2), ellipe(1 - 1 / k**2))
+    >>> round(float(f), 6), float(df) > 0  # F rises with k
+    (0.923924, True)
+    """
     k2 = k * k
     m = 1.0 - 1.0 / k2
     dk_dm = (e_integral - (1.0 - m) * k_integral) / (2.0 * m * (1.0 - m))
@@ -104,6 +143,23 @@ def ellipticity(curvature_difference):
 
     Solves F(ρ) = ((k² + 1)E(m) − 2K(m)) / ((k² − 1)E(m)), m = 1 − 1/k² (Harris & Kotzalas
     2007, ch. 6) for k in [1, 1e4]; F(ρ) must lie in [0, F(k=1e4)) ≈ [0, 0.99999).
+
+    Parameters
+    ----------
+    curvature_difference : float or array_like
+        F(ρ) in [0, 1) [-].
+
+    Returns
+    -------
+    float or ndarray
+        k ≥ 1 [-] (1 at F = 0).
+
+    Examples
+    --------
+    >>> float(ellipticity(0.0))  # a circle
+    1.0
+    >>> round(float(ellipticity(0.9)), 4)
+    6.7133
     """
     f = check_range("curvature_difference", curvature_difference, 0.0, _F_MAX, hi_open=True)
     k = np.exp(_LOG_K_OF_F(f))
@@ -175,6 +231,18 @@ def contact_constants(curvature_sum, curvature_difference, compliance) -> Contac
     δ = (K/π)·(π/(2k²E))^(1/3)·(3ηQ/(2Σρ))^(2/3)·Σρ,
     with K, E the complete elliptic integrals of parameter m = 1 − 1/k².
     For k = 1 (E = K = π/2) these reduce to Hertz's sphere: a = (3QR/(4E*))^(1/3), δ = a²/R.
+
+    Returns
+    -------
+    ContactConstants
+        Σρ [1/m], k [-], K(m), E(m) [-], the semi-axis coefficients [m/N^(1/3)] and the
+        load–deflection constant [N/m^1.5].
+
+    Examples
+    --------
+    >>> c = contact_constants(9000.0, 0.9, 9.7e-12)
+    >>> round(float(c.ellipticity), 4), round(float(c.stiffness) / 1e9, 4)  # -, GN/m^1.5
+    (6.7133, 3.6549)
     """
     rho = check_positive("curvature_sum", curvature_sum, "1/m")
     eta = check_positive("compliance", compliance, "1/Pa")
@@ -209,6 +277,28 @@ def groove_contact(
 
     Combines :func:`curvature_sum_difference` and :func:`contact_constants`; all arguments
     broadcast (ball_diameter [m], pitch_diameter [m], groove_curvature [-], compliance [1/Pa]).
+
+    Parameters
+    ----------
+    ball_diameter, pitch_diameter : float or array_like
+        Dw, dm [m].
+    groove_curvature : float or array_like
+        f = r/Dw [-].
+    contact_angle : float or array_like
+        α [rad].
+    compliance : float
+        η [1/Pa] (:func:`~.materials.reduced_compliance`).
+    race : {"inner", "outer"}
+
+    Returns
+    -------
+    ContactConstants
+
+    Examples
+    --------
+    >>> c = groove_contact(2.381e-3, 21.5e-3, 0.52, 0.26, 9.7e-12, "inner")
+    >>> round(float(c.max_pressure(10.0)) / 1e6)  # MPa under a 10 N ball load
+    1098
     """
     rho, f_rho = curvature_sum_difference(
         ball_diameter, pitch_diameter, groove_curvature, contact_angle, race
@@ -218,14 +308,48 @@ def groove_contact(
 
 def combined_stiffness(k_inner, k_outer):
     """Load–deflection constant of the two contacts of one ball in series [N/m^1.5]:
-    K_n = (K_i^(−2/3) + K_o^(−2/3))^(−3/2) (Harris & Kotzalas 2007, ch. 7)."""
+    K_n = (K_i^(−2/3) + K_o^(−2/3))^(−3/2) (Harris & Kotzalas 2007, ch. 7).
+
+    Parameters
+    ----------
+    k_inner, k_outer : float or array_like
+        K_i, K_o [N/m^1.5].
+
+    Returns
+    -------
+    float or ndarray
+        K_n [N/m^1.5].
+
+    Examples
+    --------
+    >>> round(float(combined_stiffness(1e10, 1e10)) / 1e9, 6)  # GN/m^1.5: 2^(−3/2) of one
+    3.535534
+    """
     check_positive("k_inner", k_inner, "N/m^1.5")
     check_positive("k_outer", k_outer, "N/m^1.5")
     return (k_inner ** (-2.0 / 3.0) + k_outer ** (-2.0 / 3.0)) ** -1.5
 
 
 def hertz_load(stiffness, deflection):
-    """Normal load Q = K·max(δ, 0)^1.5 [N] (Harris & Kotzalas 2007, ch. 7)."""
+    """Normal load Q = K·max(δ, 0)^1.5 [N] (Harris & Kotzalas 2007, ch. 7).
+
+    Parameters
+    ----------
+    stiffness : float or array_like
+        K [N/m^1.5].
+    deflection : float or array_like
+        δ [m].
+
+    Returns
+    -------
+    float or ndarray
+        Q [N] (0 where δ ≤ 0).
+
+    Examples
+    --------
+    >>> round(float(hertz_load(1e10, 1e-6)), 9), float(hertz_load(1e10, -1e-6))  # N: K·δ^1.5
+    (10.0, 0.0)
+    """
     check_nonnegative("stiffness", stiffness, "N/m^1.5")
     check_range("deflection", deflection, unit="m")
     return stiffness * np.maximum(deflection, 0.0) ** 1.5

@@ -78,6 +78,23 @@ def reduced_compliance(m1: Material, m2: Material) -> float:
 
     Harris & Kotzalas (2007), *Essential Concepts of Bearing Technology*, ch. 6 (Hertz
     point contact); η appears as the bracket in the semi-axis formulas.
+
+    Parameters
+    ----------
+    m1, m2 : Material
+        The two bodies' materials (E [Pa], ν [-]).
+
+    Returns
+    -------
+    float
+        η [1/Pa].
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> s = catalog.material("bearing_steel_yu")
+    >>> round(reduced_compliance(s, s) * 1e12, 4)  # 1/TPa: 2·(1 − ν²)/E
+    8.6515
     """
     return (1.0 - m1.poisson_ratio**2) / m1.youngs_modulus + (
         1.0 - m2.poisson_ratio**2

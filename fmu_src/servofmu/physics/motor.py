@@ -55,7 +55,25 @@ class DCMotorParameters:
 
 
 def state_matrices(p: DCMotorParameters):
-    """(A, B) of x' = A·x + B·u with x = (i [A], ω [rad/s], φ [rad]), u = (V [V], T_load [N·m])."""
+    """(A, B) of x' = A·x + B·u with x = (i [A], ω [rad/s], φ [rad]), u = (V [V], T_load [N·m]).
+
+    Parameters
+    ----------
+    p : DCMotorParameters
+        Resistance [Ω], inductance [H], k_t [N·m/A], k_e [V·s/rad], inertia [kg·m²],
+        damping [N·m·s/rad].
+
+    Returns
+    -------
+    tuple of ndarray
+        (A [3×3], B [3×2]) in SI.
+
+    Examples
+    --------
+    >>> a, b = state_matrices(DCMotorParameters())
+    >>> float(a[0, 0]), float(b[1, 1])  # −R/L [1/s], −1/J [1/(kg·m²)]
+    (-2000.0, -5000.0)
+    """
     a = np.array(
         [
             [-p.resistance / p.inductance, -p.back_emf_constant / p.inductance, 0.0],
@@ -70,7 +88,26 @@ def state_matrices(p: DCMotorParameters):
 @functools.lru_cache(maxsize=32)
 def discretise(p: DCMotorParameters, step: float):
     """(Φ, Γ) of the exact zero-order-hold step of length ``step`` [s]: the top blocks of
-    expm([[A, B], [0, 0]]·h) (Van Loan). Returned as nested tuples of floats."""
+    expm([[A, B], [0, 0]]·h) (Van Loan). Returned as nested tuples of floats.
+
+    Parameters
+    ----------
+    p : DCMotorParameters
+        The motor.
+    step : float
+        h [s], > 0.
+
+    Returns
+    -------
+    tuple
+        (Φ [3×3], Γ [3×2]) as nested tuples of floats.
+
+    Examples
+    --------
+    >>> phi, gamma = discretise(DCMotorParameters(), 1e-3)
+    >>> round(phi[2][2], 12), len(gamma), len(gamma[0])  # φ keeps itself
+    (1.0, 3, 2)
+    """
     h = check_positive("step", step, "s")
     a, b = state_matrices(p)
     m = np.zeros((5, 5))
@@ -83,7 +120,33 @@ def discretise(p: DCMotorParameters, step: float):
 
 def step(p: DCMotorParameters, state, voltage: float, load_torque: float, h: float):
     """Advance x = (i, ω, φ) by ``h`` [s] with voltage [V] and load torque [N·m] held; returns
-    the new (i, ω, φ) as floats (exact, see module docstring)."""
+    the new (i, ω, φ) as floats (exact, see module docstring).
+
+    Parameters
+    ----------
+    p : DCMotorParameters
+        The motor.
+    state : tuple of float
+        (i [A], ω [rad/s], φ [rad]).
+    voltage : float
+        V [V].
+    load_torque : float
+        T_load [N·m].
+    h : float
+        Step [s].
+
+    Returns
+    -------
+    tuple of float
+        The new (i [A], ω [rad/s], φ [rad]).
+
+    Examples
+    --------
+    >>> p = DCMotorParameters()
+    >>> i, w, phi = step(p, (0.0, 0.0, 0.0), 12.0, 0.0, 10.0)  # long enough to settle
+    >>> round(w, 3)  # rad/s: V·k_t/(R·b + k_t·k_e) in steady state
+    238.095
+    """
     check_finite("voltage", voltage, "V")
     check_finite("load_torque", load_torque, "N·m")
     return _step(p, state, voltage, load_torque, h)
@@ -103,7 +166,25 @@ def _step(p: DCMotorParameters, state, voltage: float, load_torque: float, h: fl
 
 
 def motor_torque(p: DCMotorParameters, current):
-    """Electromagnetic torque k_t·i [N·m] for current i [A]."""
+    """Electromagnetic torque k_t·i [N·m] for current i [A].
+
+    Parameters
+    ----------
+    p : DCMotorParameters
+        The motor (k_t [N·m/A]).
+    current : float or array_like
+        i [A].
+
+    Returns
+    -------
+    float or ndarray
+        Torque [N·m].
+
+    Examples
+    --------
+    >>> motor_torque(DCMotorParameters(), 2.0)  # N·m: 0.05 N·m/A × 2 A
+    0.1
+    """
     return p.torque_constant * current
 
 
@@ -120,7 +201,17 @@ def step_with_friction(
     """Advance x = (i, ω, φ) by ``h`` [s] with Coulomb friction of magnitude
     ``running_friction`` [N·m] while sliding and ``breakaway_friction`` [N·m] while stuck,
     applied implicitly on sub-steps of at most ``substep`` [s] (see module docstring).
-    Returns (new state, mean friction torque over the step [N·m, signed like the speed])."""
+    Returns (new state, mean friction torque over the step [N·m, signed like the speed]).
+
+    Examples
+    --------
+    >>> p = DCMotorParameters()
+    >>> state, friction = step_with_friction(p, (0.0, 0.0, 0.0), 0.1, 0.0, 1e-3, 0.01, 0.02)
+    >>> state[1], round(friction * 1e3, 4)  # rad/s, mN·m: stuck, friction holds the motor
+    (0.0, 1.4192)
+
+    (the motor torque rises towards k_t·V/R = 2.5 mN·m, below the 20 mN·m breakaway)
+    """
     check_finite("voltage", voltage, "V")
     check_finite("load_torque", load_torque, "N·m")
     check_nonnegative("running_friction", running_friction, "N·m")

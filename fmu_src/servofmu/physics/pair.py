@@ -126,7 +126,20 @@ def with_mounting(pair: BearingPair, **changes) -> BearingPair:
     """A copy of ``pair`` with mounting values changed: ``outer_interference``,
     ``inner_interference`` (diametral, m), ``shim`` (m; clears ``assembly_preload``),
     ``loop_stiffness`` (N/m, None = from the members), ``assembly_preload`` (N),
-    ``assembly_temperature`` (K)."""
+    ``assembly_temperature`` (K).
+
+    Returns
+    -------
+    BearingPair
+        The copy (``pair`` is unchanged).
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> tight = with_mounting(pair, assembly_preload=80.0)
+    >>> tight.mounting.assembly_preload, pair.mounting.assembly_preload == 80.0  # N
+    (80.0, False)
+    """
     unknown = set(changes) - set(MOUNTING_CHANGES)
     if unknown:
         raise ValueError(f"mounting change {sorted(unknown)} is not one of {MOUNTING_CHANGES}")
@@ -156,7 +169,24 @@ def with_mounting(pair: BearingPair, **changes) -> BearingPair:
 
 @functools.lru_cache(maxsize=64)
 def assembly_geometry(pair: BearingPair) -> RaceGeometry:
-    """Mounted geometry at the assembly temperature."""
+    """Mounted geometry at the assembly temperature.
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+
+    Returns
+    -------
+    RaceGeometry
+        The mounted operating geometry at T0 (fields in m).
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> round(float(assembly_geometry(pair).clearance) * 1e6, 3)  # µm: mounted at 20 °C
+    9.658
+    """
     m = pair.mounting
     return mounted_geometry(
         pair.bearing, m.fit, m.assembly_temperature, m.assembly_temperature, pair.thermal_coupling
@@ -166,6 +196,10 @@ def assembly_geometry(pair: BearingPair) -> RaceGeometry:
 def is_tandem(pair: BearingPair) -> bool:
     """Whether the pair's bearings face the same way (:data:`~.preload.TANDEM`): they share a
     thrust set by a spring or a force instead of preloading each other.
+
+    Returns
+    -------
+    bool
 
     >>> is_tandem(BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"))
     False
@@ -177,7 +211,24 @@ def is_tandem(pair: BearingPair) -> bool:
 def effective_shim(pair: BearingPair) -> float:
     """The shim [m]: the loop's, or the one that gives ``assembly_preload`` at T0; 0 for a
     tandem pair (a matched set: equal stand-outs and spacers, so A and B share the thrust
-    equally at T0; its preload is a force, the loop's shim is not used)."""
+    equally at T0; its preload is a force, the loop's shim is not used).
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+
+    Returns
+    -------
+    float
+        s [m].
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> round(effective_shim(pair) * 1e6, 3)  # µm
+    30.0
+    """
     m = pair.mounting
     if is_tandem(pair):
         return 0.0
@@ -187,7 +238,24 @@ def effective_shim(pair: BearingPair) -> float:
 
 
 def loop_stiffness(pair: BearingPair) -> float:
-    """Structural axial stiffness of the preload loop [N/m] (inf: rigid)."""
+    """Structural axial stiffness of the preload loop [N/m] (inf: rigid).
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+
+    Returns
+    -------
+    float
+        k_loop [N/m].
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> round(loop_stiffness(pair) / 1e6, 3)  # N/µm: the yoke arms and the shaft
+    0.37
+    """
     return pair.mounting.loop.structural_stiffness
 
 
@@ -195,7 +263,27 @@ def loop_closure(pair: BearingPair, temperature):
     """C(T) = 2·h(T0) + s − Σ σ·L·α·(T_j − T0) [m] at a uniform temperature [K] or the parts'
     temperatures (each member j at its part's T_j; see :mod:`preload`). For a tandem pair the
     mismatch d(T) = −Σ σ·L·α·(T_j − T0) [m] of bearing B along the thrust relative to A (a
-    matched set: 0 at T0; :func:`~.preload.tandem_offsets`)."""
+    matched set: 0 at T0; :func:`~.preload.tandem_offsets`).
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+    temperature : float, array_like or PartTemperatures
+        T [K].
+
+    Returns
+    -------
+    float or ndarray
+        C [m] (a tandem pair: d [m]).
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> c = loop_closure(pair, [293.15, 253.15])
+    >>> round(float(c[1] - c[0]) * 1e6, 3)  # µm: the loop closes on cooling
+    47.2
+    """
     m = pair.mounting
     loop = m.loop
     if effective_shim(pair) != loop.shim:

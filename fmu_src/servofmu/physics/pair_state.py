@@ -114,6 +114,13 @@ def thermal_state(pair: BearingPair, temperature) -> ThermalState:
     ThermalState
         Mounted geometry [m], fit pressures [Pa] and interferences [m], loop closure [m],
         loop stiffness [N/m], viscosity [m²/s] and the unloaded pair's offset [m].
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> th = thermal_state(pair, np.array([233.15, 293.15]))
+    >>> [round(float(v) * 1e6, 1) for v in th.kinematic_viscosity]  # cSt at −40 and 20 °C
+    [40947.4, 86.9]
     """
     temps = part_temperatures(temperature)
     temps = PartTemperatures(
@@ -215,6 +222,12 @@ def state_flags(
     -------
     dict
         ``{"overloaded", "locked", "unloaded"}``: bools for floats, boolean arrays for arrays.
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> state_flags(pair, 2e-6, 1.5e9, 40.0, 0.0)  # m, Pa, N, N: B lost its load
+    {'overloaded': False, 'locked': False, 'unloaded': True}
     """
     return {
         "overloaded": max_contact_pressure >= pair.pressure_limit,
@@ -283,7 +296,21 @@ def rolling_data(pair: BearingPair, thermal: ThermalState, force_a, force_b, rad
     """What the speed terms of the pair's friction model need besides viscosity and pitch
     diameter: None for ``yu2017``; (Fa,A, Fa,B, Fr) [N] for ``skf2004``
     (:func:`.friction_models.skf_loads`); the contacts' terms for ``ehl_per_contact``
-    (:func:`_ehl_terms` of ``balls``)."""
+    (:func:`_ehl_terms` of ``balls``).
+
+    Returns
+    -------
+    None or tuple
+        None (``yu2017``), (Fa,A, Fa,B, Fr) [N] (``skf2004``) or the contacts' terms
+        (``ehl_per_contact``).
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> th = thermal_state(pair, 293.15)
+    >>> rolling_data(pair, th, 40.0, 40.0, 0.0, []) is None  # Yu's model needs nothing
+    True
+    """
     model = pair.friction.model
     if model == "skf2004":
         return skf_loads(force_a, force_b, radial_load)
@@ -300,7 +327,22 @@ def load_state(pair: BearingPair, thermal: ThermalState, axial_load=0.0, radial_
     """State of the pair at ``thermal`` under ``axial_load`` [N] (pressing bearing A) and
     ``radial_load`` [N]. Vectorised over temperature when the radial load is zero (every ball
     of a bearing alike, Yu eq 4); a radial load is solved per ball (Jones) with the pair
-    equilibrium of :func:`preload.pair_equilibrium` (scalar temperature)."""
+    equilibrium of :func:`preload.pair_equilibrium` (scalar temperature).
+
+    Returns
+    -------
+    LoadState
+        Forces [N], contact angle [rad], stiffness [N/m], pressure [Pa], flags and the
+        speed-independent torques [N·m].
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> th = thermal_state(pair, 233.15)
+    >>> ls = load_state(pair, th, axial_load=5.0)
+    >>> round(float(ls.force_a - ls.force_b), 9), round(float(ls.preload), 2)  # N
+    (5.0, 43.2)
+    """
     f_ext = check_finite("axial_load", axial_load, "N")
     f_r = check_finite("radial_load", radial_load, "N")
     if np.any(np.asarray(f_r) != 0):
@@ -323,7 +365,20 @@ def load_state(pair: BearingPair, thermal: ThermalState, axial_load=0.0, radial_
 def axial_load_state(pair: BearingPair, thermal: ThermalState, offset_a, offset_b) -> LoadState:
     """:class:`LoadState` of the pair with bearings A and B at axial offsets ``offset_a``,
     ``offset_b`` [m] and no radial load: every ball of a bearing alike (Yu eq 4), so the
-    torques are Z times one ball's (elementwise over arrays)."""
+    torques are Z times one ball's (elementwise over arrays).
+
+    Returns
+    -------
+    LoadState
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> th = thermal_state(pair, 233.15)
+    >>> ls = axial_load_state(pair, th, th.preload_offset, th.preload_offset)
+    >>> round(float(ls.force_a), 3) == round(float(ls.force_b), 3), bool(ls.unloaded)
+    (True, False)
+    """
     geom, k = thermal.geometry, thermal.loop_stiffness
     sa, sb = _axial_state(geom, offset_a), _axial_state(geom, offset_b)
     z = geom.n_balls
@@ -522,7 +577,26 @@ def _coulomb_excess(pair: BearingPair, hysteresis, spin, sliding):
 def contact_terms(pair: BearingPair, hysteresis, spin, sliding, inner, outer):
     """The per-contact torques (hysteresis, spin, sliding, inner ring, outer ring) [N·m] as the
     friction model counts them: Yu's and Ning's terms, or zeros under ``skf2004`` (the SKF
-    model's moments replace them)."""
+    model's moments replace them).
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair (its friction model).
+    hysteresis, spin, sliding, inner, outer : float or ndarray
+        The contacts' torques [N·m].
+
+    Returns
+    -------
+    tuple
+        (hysteresis, spin, sliding, inner ring, outer ring) [N·m].
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> contact_terms(pair, 1e-4, 2e-4, 0.0, 1e-4, 2e-4)  # yu2017: as they are
+    (0.0001, 0.0002, 0.0, 0.0001, 0.0002)
+    """
     if pair.friction.model == "skf2004":
         zero = 0.0 * hysteresis
         return zero, zero, zero, zero, zero
@@ -536,7 +610,35 @@ def state_torques(pair: BearingPair, hysteresis, spin, sliding, viscosity, pitch
     spin + sliding, (μ_s/μ − 1)·(spin + sliding), Palmgren at rest (``rest``, :func:`rest_torque`
     when not given); ``ehl_per_contact``: the same without Palmgren (no hydrodynamic force at
     rest); ``skf2004``: Msl(n → 0) of both bearings (SKF's starting torque, no excess); plus
-    the grease term's starting torque (:func:`.friction_models.grease_rest_and_start`)."""
+    the grease term's starting torque (:func:`.friction_models.grease_rest_and_start`).
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+    hysteresis, spin, sliding : float or ndarray
+        Torques [N·m].
+    viscosity : float or ndarray
+        ν [m²/s].
+    pitch_diameter : float or ndarray
+        dm [m].
+    rolling : None or tuple
+        :func:`rolling_data`.
+    rest : float or None
+        Viscous torque at rest [N·m] (None: :func:`rest_torque`).
+
+    Returns
+    -------
+    tuple
+        (Coulomb torque, breakaway excess, breakaway torque) [N·m].
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> c, excess, brk = state_torques(pair, 1e-4, 2e-4, 0.0, 0.0, 21.5e-3, None)
+    >>> round(c * 1e3, 6), round(brk * 1e3, 6)  # N·mm: + excess + Palmgren's floor at rest
+    (0.3, 0.559316)
+    """
     if pair.friction.model == "skf2004":
         coulomb = excess = 0.0
         rest = skf_starting(pair, rolling)
@@ -553,7 +655,28 @@ def state_torques(pair: BearingPair, hysteresis, spin, sliding, viscosity, pitch
 
 def rest_torque(pair: BearingPair, viscosity, pitch_diameter):
     """Viscous torque of the pair at rest (Palmgren's eq 8 below its threshold; ``yu2017``
-    only, 0 for the other friction models) [N·m]."""
+    only, 0 for the other friction models) [N·m].
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+    viscosity : float or ndarray
+        ν [m²/s].
+    pitch_diameter : float or ndarray
+        dm [m].
+
+    Returns
+    -------
+    float or ndarray
+        [N·m].
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> round(float(rest_torque(pair, 100e-6, 21.5e-3)) * 1e3, 6)  # N·mm, two bearings
+    0.219316
+    """
     yu = pair.lubricant is not None and pair.friction.model == "yu2017"
     s0 = pair.coefficients.palmgren_s0 if yu else 0.0
     return 2.0 * _palmgren(viscosity, 0.0, pitch_diameter, s0)
@@ -563,7 +686,33 @@ def bearing_outputs(
     pair: BearingPair, thermal: ThermalState, load: LoadState, speed
 ) -> BearingOutputs:
     """Speed-dependent outputs at ``speed`` [rad/s] (Yu 2017 eq 8–9, or the pair's friction
-    model; regularised sign)."""
+    model; regularised sign).
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+    thermal : ThermalState
+        :func:`thermal_state`.
+    load : LoadState
+        :func:`load_state`.
+    speed : float or array_like
+        ω [rad/s], signed.
+
+    Returns
+    -------
+    BearingOutputs
+        Torques [N·m], forces [N], angles [rad], lengths [m], viscosity [m²/s],
+        stiffness [N/m], power [W], pressures [Pa], flags.
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> th = thermal_state(pair, 233.15)
+    >>> out = bearing_outputs(pair, th, load_state(pair, th), 0.17)
+    >>> round(float(out.running_torque) * 1e3, 3)  # N·mm at −40 °C
+    3.13
+    """
     w = speed if type(speed) is float else check_finite("speed", speed, "rad/s")
     t = load.torques
     nu, dm = thermal.kinematic_viscosity, thermal.pitch_diameter
@@ -790,14 +939,43 @@ def operating_outputs(
 ) -> BearingOutputs:
     """Exact outputs at temperature [K], speed [rad/s], axial load [N] (arrays broadcast
     together; vectorised when the radial load is zero) and radial load [N] (then scalars):
-    :func:`thermal_state`, :func:`load_state` and :func:`bearing_outputs` in one call."""
+    :func:`thermal_state`, :func:`load_state` and :func:`bearing_outputs` in one call.
+
+    Returns
+    -------
+    BearingOutputs
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> out = operating_outputs(pair, np.array([233.15, 293.15]), 0.17)
+    >>> [round(float(m) * 1e3, 3) for m in out.running_torque]  # N·mm at −40 and 20 °C
+    [3.13, 0.299]
+    """
     th = thermal_state(pair, temperature)
     return bearing_outputs(pair, th, load_state(pair, th, axial_load, radial_load), speed)
 
 
 def to_floats(obj):
     """The dataclass ``obj`` with every 0-d array field (recursively) made a Python float or
-    bool, for the per-step scalar path."""
+    bool, for the per-step scalar path.
+
+    Parameters
+    ----------
+    obj : dataclass instance
+
+    Returns
+    -------
+    dataclass instance
+        A copy with floats and bools.
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> th = to_floats(thermal_state(pair, 293.15))
+    >>> type(th.closure).__name__
+    'float'
+    """
     changes = {}
     for f in fields(obj):
         v = getattr(obj, f.name)

@@ -273,6 +273,11 @@ def member_kind(name: str) -> str:
     """The kind of a loop member ("housing", "shaft", "spacer", "bearings") from its name
     (frame and housing are the housing); ValueError for another name.
 
+    Returns
+    -------
+    str
+        "housing", "shaft", "spacer" or "bearings".
+
     >>> member_kind("frame")
     'housing'
     """
@@ -284,6 +289,11 @@ def member_kind(name: str) -> str:
 def member_role(name: str, arrangement: str) -> str:
     """The role ("opening" or "closing") of loop member ``name`` in a pair of
     ``arrangement`` (:data:`ARRANGEMENTS`).
+
+    Returns
+    -------
+    str
+        "opening" or "closing".
 
     >>> member_role("shaft", "face_to_face"), member_role("shaft", "back_to_back")
     ('closing', 'opening')
@@ -300,7 +310,29 @@ def member_role(name: str, arrangement: str) -> str:
 
 def arrangement_problems(loop: PreloadLoop, arrangement: str) -> list[str]:
     """Every member of ``loop`` whose role contradicts ``arrangement``, or that a tandem pair
-    cannot have (empty: none)."""
+    cannot have (empty: none).
+
+    Parameters
+    ----------
+    loop : PreloadLoop
+        The loop and its members.
+    arrangement : str
+        A key of :data:`ARRANGEMENTS`.
+
+    Returns
+    -------
+    list of str
+        One message per member in the wrong role or not allowed.
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> loop = catalog.mounting("yu2017_gimbal_rigid").loop
+    >>> arrangement_problems(loop, "face_to_face")
+    []
+    >>> arrangement_problems(loop, "back_to_back")[0]
+    "loop member 'frame' has role 'opening', but in a back_to_back pair it is 'closing'"
+    """
     check_choice("arrangement", arrangement, ARRANGEMENTS)
     found = []
     for m in loop.members:
@@ -325,7 +357,25 @@ SMALLEST_LOOP_STIFFNESS = 1.0
 
 
 def check_loop_stiffness(value) -> float:
-    """Loop stiffness [N/m]: ≥ 1 N/m, with +inf meaning a rigid loop."""
+    """Loop stiffness [N/m]: ≥ 1 N/m, with +inf meaning a rigid loop.
+
+    Parameters
+    ----------
+    value : float
+        k_loop [N/m].
+
+    Returns
+    -------
+    float
+        ``value``; ValueError below 1 N/m or for nan.
+
+    Examples
+    --------
+    >>> check_loop_stiffness(2.5e7)
+    25000000.0
+    >>> check_loop_stiffness(float("inf"))  # rigid
+    inf
+    """
     k = float(value)
     if not k >= SMALLEST_LOOP_STIFFNESS:
         raise ValueError(
@@ -350,6 +400,14 @@ def loop_interference(loop: PreloadLoop, temperature, assembly_temperature: floa
     -------
     float or ndarray
         The interference [m] (positive: the loop squeezes the pair).
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> loop = catalog.mounting("yu2017_gimbal_rigid").loop
+    >>> cold = loop_interference(loop, 253.15, 293.15)
+    >>> round(float(cold - loop.shim) * 1e6, 3)  # µm: 40 K colder, the frame shrinks most
+    47.2
     """
     temps = part_temperatures(temperature)
     t0 = check_temperature("assembly_temperature", assembly_temperature)
@@ -368,7 +426,22 @@ def _pair_residual(p, z, closure, k_loop, geom):
 def mean_offset(z, closure, k_loop, geom: RaceGeometry):
     """Mean offset p [m] of the pair (a_A = p + z, a_B = p − z) that satisfies the loop
     compatibility for shaft displacement z [m] (elementwise bracketing root), for loop closure
-    ``closure`` [m] and loop stiffness ``k_loop`` [N/m] (inf: rigid)."""
+    ``closure`` [m] and loop stiffness ``k_loop`` [N/m] (inf: rigid).
+
+    Returns
+    -------
+    float or ndarray
+        p [m].
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> c = 2 * float(g.first_contact_offset) + 30e-6  # m: 30 µm of interference
+    >>> p = float(mean_offset(0.0, c, float("inf"), g))
+    >>> round(p * 1e6, 6) == round(c / 2 * 1e6, 6)  # a rigid loop: p = C/2
+    True
+    """
     z = check_finite("z", z, "m")
     closure = check_finite("closure", closure, "m")
     k_loop = check_loop_stiffness(k_loop)
@@ -431,6 +504,20 @@ def pair_offsets(geom: RaceGeometry, closure, loop_stiffness: float, external_lo
     a_B = p − z: an outer bracketing root in z around an inner one in p (both monotonic,
     scipy.optimize.elementwise.find_root), so it cannot fail to converge. Yu 2017 eq 14–17
     with the general geometry; returns :class:`PairOffsets`.
+
+    Returns
+    -------
+    PairOffsets
+        offset_a, offset_b [m]; force_a, force_b [N]; loop_force [N].
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> c = 2 * float(g.first_contact_offset) + 30e-6
+    >>> o = pair_offsets(g, c, 2e7, external_load=10.0)
+    >>> round(float(o.force_a - o.force_b), 9), round(float(o.loop_force), 3)  # N
+    (10.0, 112.522)
     """
     c = np.asarray(check_finite("closure", closure, "m"), dtype=float)
     f_ext = np.asarray(check_finite("external_load", external_load, "N"), dtype=float)
@@ -461,7 +548,20 @@ def pair_offsets(geom: RaceGeometry, closure, loop_stiffness: float, external_lo
 def pair_axial_stiffness(stiffness_a, stiffness_b, loop_stiffness: float):
     """Axial stiffness of the shaft in the pair [N/m] from the bearings' dFa/da [N/m] and the
     loop stiffness k [N/m]: K = k_A + k_B − (k_A − k_B)²/(4k + k_A + k_B) (differentiating the
-    two conditions of :func:`pair_offsets`); 2·k_b for a symmetric pair."""
+    two conditions of :func:`pair_offsets`); 2·k_b for a symmetric pair.
+
+    Returns
+    -------
+    float or ndarray
+        K [N/m].
+
+    Examples
+    --------
+    >>> float(pair_axial_stiffness(1e7, 1e7, 2e7))  # N/m: 2·k_b when symmetric
+    20000000.0
+    >>> round(float(pair_axial_stiffness(1.5e7, 0.5e7, float("inf"))))  # N/m: k_A + k_B
+    20000000
+    """
     ka = np.asarray(check_nonnegative("stiffness_a", stiffness_a, "N/m"))
     kb = np.asarray(check_nonnegative("stiffness_b", stiffness_b, "N/m"))
     loop_stiffness = check_loop_stiffness(loop_stiffness)
@@ -472,7 +572,22 @@ def pair_axial_stiffness(stiffness_a, stiffness_b, loop_stiffness: float):
 
 def shim_for_preload(geom_assembly: RaceGeometry, preload: float, loop_stiffness: float) -> float:
     """Shim s [m] that gives the preload ``preload`` [N] at assembly (inverse of the loop
-    compatibility at T0): s = 2·a(P) + P/k − 2·h(T0), a(P) the offset carrying P."""
+    compatibility at T0): s = 2·a(P) + P/k − 2·h(T0), a(P) the offset carrying P.
+
+    Returns
+    -------
+    float
+        s [m].
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> s = shim_for_preload(g, 50.0, float("inf"))
+    >>> o = pair_offsets(g, 2 * float(g.first_contact_offset) + s, float("inf"))
+    >>> round(float(o.loop_force), 9)  # N: the shim gives the preload back
+    50.0
+    """
     p_force = check_positive("preload", preload, "N")
     loop_stiffness = check_loop_stiffness(loop_stiffness)
     a = float(offset_for_axial_force(geom_assembly, p_force))
@@ -513,6 +628,22 @@ def pair_equilibrium(
     displacements δr_A, δr_B; equations F_A − F_B = F_ext, Fr_A = Fr_B = F_r/2 and the loop
     compatibility of :func:`pair_offsets`. Newton–Powell (scipy.optimize.root, hybr) with the
     analytic stiffness, started from the axial solution. Jones (1960) ball loads per bearing.
+
+    Returns
+    -------
+    PairState
+        Offsets and radial displacements [m], the per-ball loads, and whether the force
+        balance was met to a relative 1e-9.
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> c = 2 * float(g.first_contact_offset) + 30e-6
+    >>> st = pair_equilibrium(g, c, 2e7, 5.0, 20.0)
+    >>> fa, fb = float(st.balls_a.axial_force[0]), float(st.balls_b.axial_force[0])
+    >>> st.converged, round(fa - fb, 9), round(float(st.balls_a.radial_force[0]), 9)  # N
+    (True, 5.0, 10.0)
     """
     from .equilibrium import _ball_loads, _ring_stiffness
 

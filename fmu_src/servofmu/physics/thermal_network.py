@@ -145,7 +145,24 @@ class ThermalNetwork:
 
 def conductance_matrix(network: ThermalNetwork) -> np.ndarray:
     """K [W/K]: the weighted Laplacian of the conduction links plus diag(G_k,a), so that the
-    linear part of the balance is C·dT/dt = −K·T + G_a·T_a (module docstring)."""
+    linear part of the balance is C·dT/dt = −K·T + G_a·T_a (module docstring).
+
+    Parameters
+    ----------
+    network : ThermalNetwork
+        The network (links [W/K], ambient conductances [W/K]).
+
+    Returns
+    -------
+    ndarray
+        K [W/K], n × n, symmetric.
+
+    Examples
+    --------
+    >>> k = conductance_matrix(network(preset("yu2017_gimbal_chamber")))
+    >>> k.shape, bool(np.allclose(k, k.T))
+    ((4, 4), True)
+    """
     k = np.diag(np.asarray(network.ambient, dtype=float))
     for i, j, g in network.links:
         k[i, i] += g
@@ -195,6 +212,11 @@ def temperature_rates(network: ThermalNetwork, temperatures, ambient, sink, powe
     [K], ambient temperature ``ambient`` [K], sink temperature ``sink`` [K] and heat input
     ``power`` [W].
 
+    Returns
+    -------
+    ndarray
+        dT/dt [K/s] per node.
+
     >>> net = ThermalNetwork((10.0,), ambient=(2.0,), sink_radiation=(0.0,), heat_split=(1.0,),
     ...                      nodes=("part",))
     >>> temperature_rates(net, [300.0], 290.0, 290.0, 5.0)  # (2·(290 − 300) + 5)/10
@@ -208,6 +230,11 @@ def temperature_rates(network: ThermalNetwork, temperatures, ambient, sink, powe
 def jacobian(network: ThermalNetwork, temperatures) -> np.ndarray:
     """∂(dT/dt)/∂T [1/s] at node temperatures ``temperatures`` [K]: the linear part plus the
     tangent of the radiation terms (independent of the sink temperature).
+
+    Returns
+    -------
+    ndarray
+        ∂(dT/dt)/∂T [1/s], n × n.
 
     >>> net = ThermalNetwork((10.0,), ambient=(2.0,), sink_radiation=(0.0,), heat_split=(1.0,),
     ...                      nodes=("part",))
@@ -236,6 +263,11 @@ def propagator(network: ThermalNetwork, step: float, reference: tuple[float, ...
     """h·φ1(h·J) [s] for the step ``step`` [s] with J linearised about the node temperatures
     ``reference`` [K] (ignored, and best None, for a network without radiation): the top-right
     block of expm([[J, I], [0, 0]]·h). Nested tuples of floats; cached.
+
+    Returns
+    -------
+    tuple
+        h·φ1(h·J) [s] as nested tuples of floats (n × n).
 
     >>> net = ThermalNetwork((10.0,), ambient=(2.0,), sink_radiation=(0.0,), heat_split=(1.0,),
     ...                      nodes=("part",))
@@ -274,6 +306,11 @@ def step(
     radiation; with radiation the error is second order in h (module docstring: 5.4e-5 K at
     10 s steps for Ning's bearing after a 140 K jump).
 
+    Returns
+    -------
+    ndarray
+        Node temperatures [K] after ``h``.
+
     >>> net = ThermalNetwork((10.0,), ambient=(2.0,), sink_radiation=(0.0,), heat_split=(1.0,),
     ...                      nodes=("part",))
     >>> [round(t, 9) for t in step(net, [300.0], 290.0, 0.0, 0.0, 5.0)]  # 290 + 10·e^(−1)
@@ -300,6 +337,11 @@ def steady_state(network: ThermalNetwork, ambient: float, sink: float, power: fl
     [K] and the heat input [W] (scipy.optimize.root with the analytic Jacobian, started from
     the linear solution with radiation linearised at the ambient temperature). ValueError when
     there is none (no path to the ambient or the sink).
+
+    Returns
+    -------
+    ndarray
+        Node temperatures [K].
 
     >>> net = ThermalNetwork((10.0,), ambient=(2.0,), sink_radiation=(0.0,), heat_split=(1.0,),
     ...                      nodes=("part",))
@@ -349,6 +391,11 @@ def ode_solution(
     power [W]) at rtol = atol = ``tolerance``: a dense ``OdeSolution`` (call it with a time
     [s]), the reference against which :func:`step` is measured.
 
+    Returns
+    -------
+    scipy.integrate.OdeSolution
+        T(t) [K] for t [s] in [0, duration].
+
     >>> net = ThermalNetwork((10.0,), ambient=(2.0,), sink_radiation=(0.0,), heat_split=(1.0,),
     ...                      nodes=("part",))
     >>> round(float(ode_solution(net, [300.0], 290.0, 0.0, 0.0, 5.0)(5.0)[0]), 6)
@@ -379,6 +426,11 @@ def time_constants(network: ThermalNetwork, temperature: float = 293.15):
     """Time constants τ = −1/λ [s] of the network linearised at the uniform temperature
     ``temperature`` [K] (λ the eigenvalues of the Jacobian), longest first; inf for a mode
     without decay (no path to the ambient or sink).
+
+    Returns
+    -------
+    ndarray
+        τ [s], longest first.
 
     >>> net = ThermalNetwork((10.0,), ambient=(2.0,), sink_radiation=(0.0,), heat_split=(1.0,),
     ...                      nodes=("part",))
@@ -412,6 +464,11 @@ def constriction_resistance(semi_major, semi_minor, conductivity):
     [W/(m·K)]: R = K(m)/(2·π·λ·a), m = 1 − b²/a² (Yovanovich 1976; module docstring). It is
     (1/4πλ)·∫₀^∞ dt/√((a²+t)(b²+t)t), the electrostatic capacitance of the elliptic disc.
 
+    Returns
+    -------
+    float or ndarray
+        R [K/W].
+
     >>> round(constriction_resistance(1e-3, 1e-3, 50.0), 9)  # circle: 1/(4·λ·a)
     5.0
     """
@@ -430,6 +487,11 @@ def ball_conductance(bearing, preload: float) -> float:
     ball's inner and outer contact in series, each contact the constriction of the ball side
     and of the race side (:func:`constriction_resistance`), Hertz semi-axes of
     :func:`hertz.groove_contact` at the free contact angle α0 and Q = F/(Z·sin α0).
+
+    Returns
+    -------
+    float
+        [W/K] through the bearing's balls.
 
     >>> from servofmu.physics import catalog
     >>> round(ball_conductance(catalog.bearing("71803"), 92.8), 4)
@@ -465,6 +527,11 @@ def contact_conductance(material_a: Material, material_b: Material, pressure, va
     result is scaled by the harmonic-mean conductivity k_s = 2·λa·λb/(λa + λb) of the two
     metals over the stainless steel's. In air, the air-filled interface of Table 3.1(b) is the
     lower bound.
+
+    Returns
+    -------
+    tuple
+        (h_c [W/(m²·K)], provenance).
 
     >>> from servofmu.physics import catalog
     >>> tc4, ring = catalog.material("tc4"), catalog.material("9cr18")
@@ -503,6 +570,11 @@ def forced_convection_coefficient(diameter: float, air_speed: float) -> float:
     Nu = 0.3 + 0.62·Re^½·Pr^⅓/[1 + (0.4/Pr)^⅔]^¼·[1 + (Re/282000)^⅝]^⅘ (Incropera et al. 2007,
     eq 7.54), air properties at 300 K (Table A.4, data/thermal.toml). 0 at zero speed.
 
+    Returns
+    -------
+    float
+        h [W/(m²·K)].
+
     >>> round(forced_convection_coefficient(0.036, 1.0), 2)
     17.74
     """
@@ -525,6 +597,11 @@ def annulus_conductance(inner_diameter, outer_diameter, length, conductivity):
     """Conduction [W/K] through a cylindrical annulus (gas between shaft and housing bore):
     2·π·λ·L/ln(r_o/r_i) (Incropera et al. 2007, eq 3.27).
 
+    Returns
+    -------
+    float or ndarray
+        [W/K].
+
     >>> round(annulus_conductance(0.017, 0.026, 0.098, 0.0263), 5)
     0.03811
     """
@@ -543,6 +620,11 @@ def cylinder_exchange_area(
     """Gray-body exchange area 𝓔 [m²] of two long concentric cylinders (the shaft inside the
     housing bore): q = σ·𝓔·(T_i⁴ − T_o⁴), 𝓔 = A_i/(1/ε_i + (1 − ε_o)/ε_o·r_i/r_o)
     (Incropera et al. 2007, Table 13.3); diameters and length [m], emissivities [-].
+
+    Returns
+    -------
+    float or ndarray
+        𝓔 [m²].
 
     >>> round(cylinder_exchange_area(0.02, 0.04, 1.0, 1.0, 1.0), 6)  # black: A_i = π·d·L
     0.062832
@@ -656,6 +738,11 @@ def network(p: ThermalParameters) -> ThermalNetwork:
     """The :class:`ThermalNetwork` of the parameters: nodes housing, shaft, outer ring, inner
     ring; in vacuum without convection and without the gas gap.
 
+    Returns
+    -------
+    ThermalNetwork
+        Nodes, capacities [J/K], links [W/K], ambient and sink couplings.
+
     >>> net = network(preset("yu2017_gimbal_chamber"))
     >>> net.nodes, net.radiating
     (('housing', 'shaft', 'outer_ring', 'inner_ring'), True)
@@ -731,6 +818,12 @@ def mechanism_parameters(
     annuli to the groove bottoms (shoulders left out: about a fifth of their mass). The end
     faces of the shaft and of the housing (one of them when mounted) see the air and the sink.
 
+    Returns
+    -------
+    ThermalParameters
+        Capacities [J/K], conductances [W/K], areas [m²], emissivities [-], each with its
+        provenance.
+
     >>> from servofmu.physics import catalog
     >>> p = mechanism_parameters(catalog.bearing("71803"), catalog.mounting("yu2017_gimbal"),
     ...                          vacuum=False, air_speed=1.0, reference_preload=92.8)
@@ -779,6 +872,10 @@ def parameters_for_pair(pair, *, vacuum: bool, **options) -> ThermalParameters:
     """:func:`mechanism_parameters` of a :class:`bearing.BearingPair` (or any object with
     ``bearing`` and ``mounting``); ``options`` as there.
 
+    Returns
+    -------
+    ThermalParameters
+
     >>> from servofmu.physics.bearing import BearingPair
     >>> pair = BearingPair.from_catalog("ning_space_shaft", "mos2_film")
     >>> round(parameters_for_pair(pair, vacuum=True, mounted=True).mount_conductance, 4)
@@ -792,6 +889,10 @@ def preset(key: str) -> ThermalParameters:
     """The parameters of preset ``key`` (:data:`PRESETS`, ``data/thermal.toml``): Yu's
     seeker gimbal in the air of a climatic chamber, Ning's space bearing in thermal vacuum,
     and Ning's bearing on his rig in the air of his high-low temperature chamber.
+
+    Returns
+    -------
+    ThermalParameters
 
     >>> round(preset("ning_space_vacuum").housing_capacity, 1)
     145.6

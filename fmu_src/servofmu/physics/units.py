@@ -20,22 +20,86 @@ GRAM_FORCE_CM = GRAM_FORCE * 1.0e-2  # N·m per gram-force centimetre (g·cm, gr
 
 
 def celsius_to_kelvin(t_c):
-    """°C → K."""
+    """°C → K.
+
+    Parameters
+    ----------
+    t_c : float or array_like
+        Temperature [°C].
+
+    Returns
+    -------
+    float or ndarray
+        Temperature [K] (t_c + 273.15).
+
+    Examples
+    --------
+    >>> celsius_to_kelvin(-40.0)  # K
+    233.14999999999998
+    """
     return t_c + ZERO_CELSIUS
 
 
 def kelvin_to_celsius(t_k):
-    """K → °C."""
+    """K → °C.
+
+    Parameters
+    ----------
+    t_k : float or array_like
+        Temperature [K].
+
+    Returns
+    -------
+    float or ndarray
+        Temperature [°C] (t_k − 273.15).
+
+    Examples
+    --------
+    >>> kelvin_to_celsius(373.15)  # °C
+    100.0
+    """
     return t_k - ZERO_CELSIUS
 
 
 def rpm_to_rad_per_s(n):
-    """rev/min → rad/s."""
+    """rev/min → rad/s.
+
+    Parameters
+    ----------
+    n : float or array_like
+        Speed [rev/min].
+
+    Returns
+    -------
+    float or ndarray
+        Speed [rad/s] (n·2π/60).
+
+    Examples
+    --------
+    >>> round(rpm_to_rad_per_s(60.0), 6)  # rad/s: one turn a second is 2π
+    6.283185
+    """
     return n * RPM
 
 
 def rad_per_s_to_rpm(omega):
-    """rad/s → rev/min."""
+    """rad/s → rev/min.
+
+    Parameters
+    ----------
+    omega : float or array_like
+        Speed [rad/s].
+
+    Returns
+    -------
+    float or ndarray
+        Speed [rev/min] (ω·60/2π).
+
+    Examples
+    --------
+    >>> round(rad_per_s_to_rpm(math.pi), 6)  # rev/min
+    30.0
+    """
     return omega / RPM
 
 
@@ -86,7 +150,27 @@ TO_SI = {
 
 
 def to_si(value: float, unit: str) -> float:
-    """Convert ``value`` given in ``unit`` (a key of :data:`TO_SI`, or ``degC``) to SI."""
+    """Convert ``value`` given in ``unit`` (a key of :data:`TO_SI`, or ``degC``) to SI.
+
+    Parameters
+    ----------
+    value : float
+        The number in ``unit``.
+    unit : str
+        A key of :data:`TO_SI` (e.g. "mm", "cSt", "N/mm") or "degC".
+
+    Returns
+    -------
+    float
+        The value in SI (m, m²/s, N/m, K, ...); ValueError for an unknown unit.
+
+    Examples
+    --------
+    >>> to_si(26.0, "mm")  # m
+    0.026000000000000002
+    >>> round(to_si(20.0, "degC"), 2)  # K
+    293.15
+    """
     if unit == "degC":
         return celsius_to_kelvin(value)
     try:

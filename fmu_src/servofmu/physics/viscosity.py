@@ -58,6 +58,17 @@ def walther_kinematic_viscosity(temperature, a: float, b: float, c: float = 0.7)
     c : additive constant [cSt]
 
     The equation is written in cSt and kelvin; the result is converted to m²/s.
+
+    Returns
+    -------
+    float or ndarray
+        ν [m²/s].
+
+    Examples
+    --------
+    >>> nu = walther_kinematic_viscosity(313.15, 8.0, 3.1)
+    >>> round(float(nu) * 1e6, 2)  # cSt at 40 °C for lg lg(ν + 0.7) = 8 − 3.1·lg T
+    67.38
     """
     t = check_temperature("temperature", temperature)
     nu_cst = 10.0 ** (10.0 ** (a - b * np.log10(t))) - c
@@ -78,6 +89,12 @@ def walther_from_two_points(
 
     Returns the :class:`WaltherViscosity` with b = (Y1 − Y2)/(lg T2 − lg T1), a = Y1 + b·lg T1,
     Y = lg lg(ν[cSt] + c).
+
+    Examples
+    --------
+    >>> v = walther_from_two_points(313.15, 32e-6, 373.15, 5.4e-6)  # an ISO VG 32 oil
+    >>> round(float(v.kinematic_viscosity(313.15)) * 1e6, 9)  # cSt: back through the point
+    32.0
     """
     t1 = check_temperature("t1", t1)
     t2 = check_temperature("t2", t2)
