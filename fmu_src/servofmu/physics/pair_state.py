@@ -347,15 +347,13 @@ def load_state(pair: BearingPair, thermal: ThermalState, axial_load=0.0, radial_
     f_r = check_finite("radial_load", radial_load, "N")
     if np.any(np.asarray(f_r) != 0):
         return _combined_load_state(pair, thermal, float(f_ext), float(f_r))
-    if is_tandem(pair) and np.all(np.asarray(f_ext) == 0):
+    if np.all(np.asarray(f_ext) == 0):  # the thermal state holds the unloaded offsets
         a_a = thermal.preload_offset
-        a_b = a_a + thermal.closure
+        a_b = a_a + thermal.closure if is_tandem(pair) else a_a
     elif is_tandem(pair):
         k, thrust = tandem_preload(pair)
         off = tandem_offsets(thermal.geometry, thermal.closure, k, thrust, f_ext)
         a_a, a_b = off.offset_a, off.offset_b
-    elif np.all(np.asarray(f_ext) == 0):
-        a_a = a_b = thermal.preload_offset
     else:
         off = pair_offsets(thermal.geometry, thermal.closure, thermal.loop_stiffness, f_ext)
         a_a, a_b = off.offset_a, off.offset_b
