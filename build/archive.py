@@ -23,7 +23,38 @@ class ArchiveError(ValueError):
 
 
 def check_member(info: zipfile.ZipInfo, archive: Path) -> PurePosixPath:
-    """The safe relative path of one zip entry, or ArchiveError."""
+    """The safe relative path of one zip entry, or ArchiveError.
+
+    Parameters
+    ----------
+    info : zipfile.ZipInfo
+        The entry (its name and, for links, its Unix mode in ``external_attr``).
+    archive : pathlib.Path
+        The archive it belongs to (for messages only).
+
+    Returns
+    -------
+    pathlib.PurePosixPath
+        The entry's path relative to the folder it unpacks into.
+
+    Raises
+    ------
+    ArchiveError
+        For an absolute path, a drive letter, a backslash, a ``..`` component or a symbolic
+        link.
+
+    Examples
+    --------
+    >>> import zipfile
+    >>> from pathlib import Path
+    >>> check_member(zipfile.ZipInfo("resources/model.py"), Path("demo.fmu"))
+    PurePosixPath('resources/model.py')
+    >>> try:
+    ...     check_member(zipfile.ZipInfo("../evil.py"), Path("demo.fmu"))
+    ... except ArchiveError as exc:
+    ...     print(exc)
+    demo.fmu: entry '../evil.py' leaves the archive folder ('..')
+    """
     name = info.filename
     where = f"{archive.name}: entry {name!r}"
     if "\\" in name:
@@ -42,7 +73,46 @@ def check_member(info: zipfile.ZipInfo, archive: Path) -> PurePosixPath:
 def check_members(infos, archive: Path, max_bytes: int) -> list[PurePosixPath]:
     """The safe relative paths of all entries (:func:`check_member`), or ArchiveError for the
     first unsafe entry, a name that occurs twice (also after normalisation: ``a//b``,
-    ``./a/b``), or declared uncompressed sizes above ``max_bytes`` in total."""
+    ``./a/b``), or declared uncompressed sizes above ``max_bytes`` in total.
+
+    Parameters
+    ----------
+    infos : list of zipfile.ZipInfo
+        The entries of the archive (``ZipFile.infolist()``).
+    archive : pathlib.Path
+        The archive (for messages only).
+    max_bytes : int
+        Largest total of the declared uncompressed sizes [bytes].
+
+    Returns
+    -------
+    list of pathlib.PurePosixPath
+        The entries' relative paths, in the order of ``infos``.
+
+    Raises
+    ------
+    ArchiveError
+        For the first unsafe entry, a repeated name, or too many bytes declared.
+
+    Examples
+    --------
+    >>> import zipfile
+    >>> from pathlib import Path
+    >>> a, b = zipfile.ZipInfo("a/b.txt"), zipfile.ZipInfo("./a/b.txt")
+    >>> check_members([a], Path("demo.ssp"), max_bytes=1024)
+    [PurePosixPath('a/b.txt')]
+    >>> try:
+    ...     check_members([a, b], Path("demo.ssp"), max_bytes=1024)
+    ... except ArchiveError as exc:
+    ...     print(exc)
+    demo.ssp: entry './a/b.txt' occurs twice (also as 'a/b.txt'): a reader would take either
+    >>> a.file_size = 2048  # what the header declares [bytes]
+    >>> try:
+    ...     check_members([a], Path("demo.ssp"), max_bytes=1024)
+    ... except ArchiveError as exc:
+    ...     print(exc)  # doctest: +ELLIPSIS
+    demo.ssp: its entries declare 2048 bytes unpacked, more than 1024; refusing a possible ...
+    """
     paths, seen = [], {}
     for info in infos:
         path = check_member(info, archive)
@@ -66,7 +136,54 @@ def check_members(infos, archive: Path, max_bytes: int) -> list[PurePosixPath]:
 def safe_extract(archive, dest, max_entries: int | None = None, max_bytes: int | None = None):
     """Unpack ``archive`` into ``dest`` (created) after checking every entry; returns dest.
     Limits default to :data:`MAX_ENTRIES` and :data:`MAX_BYTES` (read at call time). On a
-    refusal midway, what this call wrote is removed again."""
+    refusal midway, what this call wrote is removed again.
+
+    Parameters
+    ----------
+    archive : str or pathlib.Path
+        The zip archive (.fmu, .ssp).
+    dest : str or pathlib.Path
+        The folder to unpack into (created with its parents if missing).
+    max_entries : int, optional
+        Largest number of entries [-]; default :data:`MAX_ENTRIES`.
+    max_bytes : int, optional
+        Largest total unpacked size [bytes], declared and counted; default
+        :data:`MAX_BYTES`.
+
+    Returns
+    -------
+    pathlib.Path
+        ``dest``.
+
+    Raises
+    ------
+    ArchiveError
+        For an unreadable archive, an unsafe or repeated entry, or too many entries or
+        bytes; nothing this call wrote stays.
+
+    Examples
+    --------
+    A two-entry archive made on the spot, unpacked; then unpacked with a limit below its
+    22 + 5 bytes:
+
+    >>> import tempfile, zipfile
+    >>> from pathlib import Path
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     fmu = Path(tmp) / "demo.fmu"
+    ...     with zipfile.ZipFile(fmu, "w") as zf:
+    ...         zf.writestr("modelDescription.xml", "<fmiModelDescription/>")
+    ...         zf.writestr("resources/model.py", "x = 1")
+    ...     out = safe_extract(fmu, Path(tmp) / "unpacked")
+    ...     print(sorted(p.relative_to(out).as_posix() for p in out.rglob("*")))
+    ...     try:
+    ...         safe_extract(fmu, Path(tmp) / "small", max_bytes=10)
+    ...     except ArchiveError as exc:
+    ...         print(exc)  # doctest: +ELLIPSIS
+    ...     print((Path(tmp) / "small").exists())  # nothing left behind
+    ['modelDescription.xml', 'resources', 'resources/model.py']
+    demo.fmu: its entries declare 27 bytes unpacked, more than 10; refusing a possible zip ...
+    False
+    """
     max_entries = MAX_ENTRIES if max_entries is None else max_entries
     max_bytes = MAX_BYTES if max_bytes is None else max_bytes
     archive, dest = Path(archive), Path(dest)
@@ -117,7 +234,44 @@ def safe_extract(archive, dest, max_entries: int | None = None, max_bytes: int |
 
 
 def read_member(archive, name: str, max_bytes: int = 64 * 1024**2) -> bytes:
-    """One entry of a zip (e.g. modelDescription.xml) after the same checks, size-bounded."""
+    """One entry of a zip (e.g. modelDescription.xml) after the same checks, size-bounded.
+
+    Parameters
+    ----------
+    archive : str or pathlib.Path
+        The zip archive.
+    name : str
+        The entry's name in the archive.
+    max_bytes : int, default 64 MiB
+        Largest size of the entry [bytes], declared and counted.
+
+    Returns
+    -------
+    bytes
+        The entry's content.
+
+    Raises
+    ------
+    ArchiveError
+        For an unreadable archive, an unsafe or repeated entry (:func:`check_members`), a
+        missing entry, or one larger than ``max_bytes``.
+
+    Examples
+    --------
+    >>> import tempfile, zipfile
+    >>> from pathlib import Path
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     fmu = Path(tmp) / "demo.fmu"
+    ...     with zipfile.ZipFile(fmu, "w") as zf:
+    ...         zf.writestr("modelDescription.xml", "<fmiModelDescription/>")
+    ...     print(read_member(fmu, "modelDescription.xml"))
+    ...     try:
+    ...         read_member(fmu, "modelDescription.xml", max_bytes=8)
+    ...     except ArchiveError as exc:
+    ...         print(exc)
+    b'<fmiModelDescription/>'
+    demo.fmu: entry 'modelDescription.xml' declares 22 bytes, more than 8
+    """
     archive = Path(archive)
     try:
         with zipfile.ZipFile(archive) as zf:
@@ -147,7 +301,34 @@ def read_member(archive, name: str, max_bytes: int = 64 * 1024**2) -> bytes:
 
 def check_archive(archive) -> list[str]:
     """Every entry of ``archive`` that :func:`safe_extract` would refuse (empty: fine), without
-    unpacking anything."""
+    unpacking anything.
+
+    Parameters
+    ----------
+    archive : str or pathlib.Path
+        The zip archive.
+
+    Returns
+    -------
+    list of str
+        One message per refused entry (or for an unreadable archive); empty when the
+        archive is safe to unpack.
+
+    Examples
+    --------
+    >>> import tempfile, zipfile
+    >>> from pathlib import Path
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     ssp = Path(tmp) / "demo.ssp"
+    ...     with zipfile.ZipFile(ssp, "w") as zf:
+    ...         zf.writestr("SystemStructure.ssd", "<ssd/>")
+    ...     print(check_archive(ssp))
+    ...     with zipfile.ZipFile(ssp, "a") as zf:
+    ...         zf.writestr("../outside.txt", "x")
+    ...     print(check_archive(ssp))
+    []
+    ["demo.ssp: entry '../outside.txt' leaves the archive folder ('..')"]
+    """
     archive = Path(archive)
     try:
         with zipfile.ZipFile(archive) as zf:

@@ -38,7 +38,51 @@ class Defaults:
 
 
 def read(path) -> tuple[dict, dict]:
-    """(tables, defaults) of user catalogue ``path``; ValueError naming the file."""
+    """(tables, defaults) of user catalogue ``path``; ValueError naming the file.
+
+    Only reads and checks the ``[defaults]`` keys; :func:`load` checks the entries.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The user catalogue (TOML).
+
+    Returns
+    -------
+    tuple of dict
+        ``(tables, defaults)``: ``{table: {key: entry}}`` as written (numbers in the file's
+        units, ``{value, unit, kind, ref}``), and the ``[defaults]`` table (``{}`` without
+        one).
+
+    Raises
+    ------
+    ValueError
+        For an unreadable file, invalid TOML, or a ``[defaults]`` key other than
+        ``mounting``, ``lubricant`` and ``support_mounting``; the message names the file.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     path = Path(tmp) / "mine.toml"
+    ...     _ = path.write_text(
+    ...         '[defaults]\\nlubricant = "krytox_143aa"\\n'
+    ...         '[materials.my_7075]\\nname = "Aluminium 7075-T6"\\n'
+    ...         'youngs_modulus = { value = 71.7, unit = "GPa", kind = "handbook", ref = "x" }\\n'
+    ...     )
+    ...     tables, defaults = read(path)
+    ...     _ = path.write_text('[defaults]\\ncolour = "red"\\n')
+    ...     try:
+    ...         read(path)
+    ...     except ValueError as exc:
+    ...         print(str(exc).replace(str(path), "mine.toml"))
+    mine.toml: [defaults] may name ['mounting', 'lubricant', 'support_mounting'], not ['colour']
+    >>> defaults
+    {'lubricant': 'krytox_143aa'}
+    >>> tables["materials"]["my_7075"]["youngs_modulus"]["value"]  # as written, in GPa
+    71.7
+    """
     path = Path(path)
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
@@ -57,7 +101,62 @@ def load(paths, mounting=None, lubricant=None, support_mounting=None) -> Default
     """Merge the user catalogues ``paths`` into the catalogue, check every entry they add
     (loaded, and each mounting turned into the parameter set), and return the build's
     defaults: the arguments given, else the last file's ``[defaults]``. On an error nothing
-    stays merged and ValueError names the file, the entry and the field."""
+    stays merged and ValueError names the file, the entry and the field.
+
+    Parameters
+    ----------
+    paths : iterable of str or pathlib.Path
+        User catalogues (TOML, see the module docstring), merged in this order.
+    mounting : str, optional
+        Catalogue mounting whose numbers become BearingFriction's start values (overrides
+        the files' ``[defaults]``).
+    lubricant : str, optional
+        Catalogue lubricant of those start values (overrides the files' ``[defaults]``).
+    support_mounting : str, optional
+        Catalogue mounting of ActuatorStiffness's support pair (overrides the files'
+        ``[defaults]``).
+
+    Returns
+    -------
+    Defaults
+        The chosen presets (None: the package's own) and the files merged. The entries stay
+        in the catalogue until :func:`unload`.
+
+    Raises
+    ------
+    ValueError
+        For a bad file, entry or preset; nothing stays merged then.
+
+    Examples
+    --------
+    A user material merged into the catalogue (71.7 GPa = 7.17e10 Pa), then forgotten:
+
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> from servofmu.physics import catalog
+    >>> q = '{{ value = {}, unit = "{}", kind = "handbook", ref = "ASM" }}'.format
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     path = Path(tmp) / "mine.toml"
+    ...     _ = path.write_text(
+    ...         '[defaults]\\nlubricant = "krytox_143aa"\\n'
+    ...         '[materials.my_7075]\\nname = "Aluminium 7075-T6"\\n'
+    ...         f'youngs_modulus = {q(71.7, "GPa")}\\npoisson_ratio = {q(0.33, "-")}\\n'
+    ...         f'expansion = {q(23.6e-6, "1/K")}\\n'
+    ...     )
+    ...     defaults = load([path])
+    >>> defaults.lubricant, defaults.mounting
+    ('krytox_143aa', None)
+    >>> f"{catalog.material('my_7075').youngs_modulus:.4g}"  # Pa
+    '7.17e+10'
+    >>> unload()
+    >>> load([], mounting="yu2017_gimbal_spring").mounting  # a package preset, no file
+    'yu2017_gimbal_spring'
+    >>> try:
+    ...     load([], support_mounting="my_gimbal")
+    ... except ValueError as exc:
+    ...     print(exc)  # doctest: +ELLIPSIS
+    command line: support_mounting = 'my_gimbal' is not in the catalogue's mountings: [...]
+    """
     from servofmu.physics.bearing_parameters import default_parameters
 
     chosen = {"mounting": mounting, "lubricant": lubricant, "support_mounting": support_mounting}
@@ -102,14 +201,48 @@ def _check_preset(path, mounting, default_parameters, lubricant=None) -> None:
 
 
 def unload() -> None:
-    """Forget the user catalogues (the package's catalogue stays)."""
+    """Forget the user catalogues (the package's catalogue stays).
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> q = {"value": 70, "unit": "GPa", "kind": "assumed", "ref": "demo"}
+    >>> entry = {"name": "demo", "youngs_modulus": q}
+    >>> catalog.add_entries({"materials": {"demo_alu": entry}}, "demo.toml")
+    >>> catalog.origin("materials", "demo_alu")
+    'demo.toml'
+    >>> unload()
+    >>> "demo_alu" in catalog.keys("materials"), "cast_aluminium" in catalog.keys("materials")
+    (False, True)
+    """
     catalog.remove_user_entries()
 
 
 def listing() -> str:
     """The catalogue as text, one table per kind, each entry with its origin (the package's
     data file or a user catalogue) and the numbers that identify it (SI at the edges: mm,
-    GPa, cSt, µm/m/K)."""
+    GPa, cSt, µm/m/K).
+
+    Returns
+    -------
+    str
+        One header line per table (bearings, lubricants, materials, mountings) naming the
+        columns and their units (mm, °, cSt, °C, GPa, µm/(m·K)), then one line per entry.
+
+    Examples
+    --------
+    The header of the bearings and the line of the 71803 (d × D × B = 17 × 26 × 5 mm):
+
+    >>> lines = listing().splitlines()
+    >>> print(lines[0])
+    bearings (d × D × B [mm], Z × Dw [mm], dm [mm], α0 [°], f_i/f_o)
+    >>> print(next(line for line in lines if line.split()[0] == "71803"))
+      71803      17 × 26 × 5, 15 × 2.381, 21.5, 15, 0.56/0.54  [data/bearings.toml]
+    """
     from servofmu.physics.bearing_parameters import default_parameters
 
     lines = ["bearings (d × D × B [mm], Z × Dw [mm], dm [mm], α0 [°], f_i/f_o)"]
@@ -157,7 +290,33 @@ def listing() -> str:
 
 
 def preset_table(values, sources) -> str:
-    """A parameter set as text: name, value (SI), unit and provenance, one per line."""
+    """A parameter set as text: name, value (SI), unit and provenance, one per line.
+
+    Parameters
+    ----------
+    values : dict
+        ``{parameter: value}`` in SI units (choices as item names), e.g.
+        :func:`~servofmu.physics.bearing_parameters.default_parameters`; every parameter of
+        ``PARAMETERS`` must be there.
+    sources : dict
+        ``{parameter: provenance}``, e.g.
+        :func:`~servofmu.physics.bearing_parameters.default_sources`.
+
+    Returns
+    -------
+    str
+        One line per parameter of ``PARAMETERS``: name, value (SI), SI unit, provenance.
+
+    Examples
+    --------
+    The first lines of the default preset (Yu 2017's gimbal, a 71803: d = 17 mm, D = 26 mm):
+
+    >>> from servofmu.physics.bearing_parameters import default_parameters, default_sources
+    >>> text = preset_table(default_parameters(), default_sources())
+    >>> print("\\n".join(text.splitlines()[:2]))
+      bore                              0.017 m     paper: Yu 2017 §2
+      outer_diameter                    0.026 m     paper: Yu 2017 §2
+    """
     from servofmu.physics.bearing_parameters import PARAMETERS
 
     rows = []

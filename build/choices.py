@@ -11,7 +11,28 @@ from servofmu.fmus.slave import VENDOR_TOOL
 
 def enumeration_types(root) -> dict[str, dict[str, int]]:
     """``{type name: {item name: value}}`` of the Enumeration SimpleTypes of a parsed
-    modelDescription ``root`` (an lxml or ElementTree element)."""
+    modelDescription ``root`` (an lxml or ElementTree element).
+
+    Parameters
+    ----------
+    root : lxml.etree._Element or xml.etree.ElementTree.Element
+        The root (``fmiModelDescription``) of a parsed modelDescription.
+
+    Returns
+    -------
+    dict
+        ``{type name: {item name: item value [-]}}``, in the order of the document.
+
+    Examples
+    --------
+    The golden modelDescription of BearingFriction (``build/model_descriptions/``):
+
+    >>> from servofmu.build.golden import golden_path
+    >>> from servofmu.build.xmlsafe import parse
+    >>> md = parse(golden_path("BearingFriction").read_bytes(), "BearingFriction.xml")
+    >>> enumeration_types(md)["FrictionModel"]
+    {'yu2017': 1, 'skf2004': 2, 'ehl_per_contact': 3}
+    """
     types = {}
     for simple in root.iterfind("TypeDefinitions/SimpleType"):
         enum = simple.find("Enumeration")
@@ -25,7 +46,27 @@ def enumeration_types(root) -> dict[str, dict[str, int]]:
 def choice_items(root) -> dict[str, dict[str, int]]:
     """``{variable name: {item name: value}}`` for every choice variable of a parsed
     modelDescription ``root``; a reference to a type that is not declared gives no items
-    (:func:`problems` reports it)."""
+    (:func:`problems` reports it).
+
+    Parameters
+    ----------
+    root : lxml.etree._Element or xml.etree.ElementTree.Element
+        The root (``fmiModelDescription``) of a parsed modelDescription.
+
+    Returns
+    -------
+    dict
+        ``{variable name: {item name: item value [-]}}``: FMI Enumeration variables first,
+        then the Integer variables that servofmu's VendorAnnotation ties to a type.
+
+    Examples
+    --------
+    >>> from servofmu.build.golden import golden_path
+    >>> from servofmu.build.xmlsafe import parse
+    >>> md = parse(golden_path("BearingFriction").read_bytes(), "BearingFriction.xml")
+    >>> choice_items(md)["lubrication"]
+    {'grease': 1, 'solid': 2}
+    """
     types = enumeration_types(root)
     declared = {}
     for sv in root.iterfind("ModelVariables/ScalarVariable"):
@@ -40,7 +81,43 @@ def choice_items(root) -> dict[str, dict[str, int]]:
 def problems(root) -> list[str]:
     """Every inconsistency of the choices of ``root``: a choice whose type is not declared or
     has no items, a servofmu Choice naming a variable that is not an Integer, or an Integer
-    choice whose min/max differ from its item values."""
+    choice whose min/max differ from its item values.
+
+    Parameters
+    ----------
+    root : lxml.etree._Element or xml.etree.ElementTree.Element
+        The root (``fmiModelDescription``) of a parsed modelDescription.
+
+    Returns
+    -------
+    list of str
+        One message per inconsistency; empty when the choices are consistent.
+
+    Examples
+    --------
+    A golden modelDescription has none; a hand-made one has an Integer choice whose max is
+    one too high and a choice of an undeclared type:
+
+    >>> from servofmu.build.golden import golden_path
+    >>> from servofmu.build.xmlsafe import parse
+    >>> problems(parse(golden_path("BearingFriction").read_bytes(), "BearingFriction.xml"))
+    []
+    >>> md = parse(
+    ...     b'<fmiModelDescription><TypeDefinitions><SimpleType name="Lubrication">'
+    ...     b'<Enumeration><Item name="grease" value="1"/><Item name="solid" value="2"/>'
+    ...     b'</Enumeration></SimpleType></TypeDefinitions><ModelVariables>'
+    ...     b'<ScalarVariable name="lubrication"><Integer min="1" max="3"/></ScalarVariable>'
+    ...     b'</ModelVariables><VendorAnnotations><Tool name="servofmu"><Choices>'
+    ...     b'<Choice variable="lubrication" declaredType="Lubrication"/>'
+    ...     b'<Choice variable="mode" declaredType="Mode"/>'
+    ...     b"</Choices></Tool></VendorAnnotations></fmiModelDescription>",
+    ...     "demo.xml",
+    ... )
+    >>> for line in problems(md):
+    ...     print(line)
+    choice "lubrication": min/max 1/3 differ from its item values 1…2
+    choice "mode": its enumeration type is not declared or has no items
+    """
     found = []
     variables = {sv.get("name"): sv for sv in root.iterfind("ModelVariables/ScalarVariable")}
     for name, items in choice_items(root).items():

@@ -27,7 +27,24 @@ IMAGE = "characteristic.png"
 
 
 def slave_class(name: str):
-    """The slave class ``name`` from ``servofmu.fmus``."""
+    """The slave class ``name`` from ``servofmu.fmus``.
+
+    Parameters
+    ----------
+    name : str
+        The FMU's model identifier, e.g. "BearingFriction" (module and class of that name).
+
+    Returns
+    -------
+    type
+        The pythonfmu slave class (not an instance).
+
+    Examples
+    --------
+    >>> cls = slave_class("DCMotor")
+    >>> cls.__name__, cls.__module__, cls.PHYSICS
+    ('DCMotor', 'servofmu.fmus.DCMotor', ('servofmu.physics.motor',))
+    """
     return getattr(importlib.import_module(f"servofmu.fmus.{name}"), name)
 
 
@@ -231,7 +248,31 @@ CURVES = {
 
 
 def plot_curve(curve: Curve, path: Path) -> Path:
-    """Write ``curve`` as a PNG (labelled axes with units) to ``path``."""
+    """Write ``curve`` as a PNG (labelled axes with units) to ``path``.
+
+    Parameters
+    ----------
+    curve : Curve
+        The curve: x values, series and labels in display units.
+    path : str or pathlib.Path
+        The PNG file to write (its folder must exist).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> curve = Curve("y = x²", "x [-]", "y [-]", np.arange(3.0), (("x²", np.arange(3.0) ** 2),),
+    ...               "a parabola")  # fmt: skip
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     png = plot_curve(curve, Path(tmp) / "curve.png")
+    ...     print(png.name, png.read_bytes()[1:4])
+    curve.png b'PNG'
+    """
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(6.4, 4.0), dpi=100)
@@ -277,7 +318,27 @@ def _docutils():
 
 def rst_to_html(text: str) -> str:
     """HTML body of a reStructuredText docstring. ``|x|`` is an absolute value in the
-    docstrings, not a substitution; docutils' messages stay out of the page."""
+    docstrings, not a substitution; docutils' messages stay out of the page.
+
+    Parameters
+    ----------
+    text : str or None
+        The docstring (reStructuredText; Sphinx roles such as ``:func:`` become code).
+
+    Returns
+    -------
+    str
+        The HTML body (section titles from ``<h4>`` on); empty for an empty docstring.
+
+    Examples
+    --------
+    >>> print(rst_to_html("The torque ``M`` grows with |F| (:func:`friction_torque`)."))
+    <p>The torque <span class="docutils literal">M</span> grows with |F| (<span \
+class="docutils literal">friction_torque</span>).</p>
+    <BLANKLINE>
+    >>> rst_to_html(None)
+    ''
+    """
     publish_parts = _docutils()
     source = (text or "").replace("|", "\\|")
     parts = publish_parts(
@@ -426,7 +487,30 @@ own numbers.</p>
 
 
 def render(name: str, curve: Curve | None = None) -> str:
-    """The HTML page of FMU ``name``; with ``curve``, it shows :data:`IMAGE` and its caption."""
+    """The HTML page of FMU ``name``; with ``curve``, it shows :data:`IMAGE` and its caption.
+
+    Parameters
+    ----------
+    name : str
+        The FMU's model identifier, e.g. "DCMotor".
+    curve : Curve, optional
+        Its characteristic curve (:data:`CURVES`); without it the page has no figure.
+
+    Returns
+    -------
+    str
+        The whole HTML page: description, module docstring, figure, variables with units,
+        start values, ranges and provenance, the physics modules' docstrings, host
+        requirements.
+
+    Examples
+    --------
+    >>> page = render("DCMotor")
+    >>> page.splitlines()[0], "<h1>DCMotor</h1>" in page, IMAGE in page
+    ('<!DOCTYPE html>', True, False)
+    >>> IMAGE in render("DCMotor", CURVES["DCMotor"]())
+    True
+    """
     cls = slave_class(name)
     module = importlib.import_module(cls.__module__)
     physics = "".join(
@@ -465,7 +549,31 @@ padding:0.3em 1em}}figure img{{max-width:100%}}code{{background:#f2f2f2}}</style
 
 def write_documentation(name: str, folder: Path) -> Path:
     """Write ``index.html`` and :data:`IMAGE` (the characteristic curve) of FMU ``name`` into
-    ``folder``; returns the page's path."""
+    ``folder``; returns the page's path.
+
+    Parameters
+    ----------
+    name : str
+        The FMU's model identifier, one of :data:`CURVES`.
+    folder : str or pathlib.Path
+        The folder to write into (created with its parents if missing).
+
+    Returns
+    -------
+    pathlib.Path
+        ``folder/index.html``.
+
+    Examples
+    --------
+    DCMotor's curve (500 steps of the motor's own code) is the quickest to compute:
+
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     page = write_documentation("DCMotor", Path(tmp) / "documentation")
+    ...     print(page.name, sorted(f.name for f in page.parent.iterdir()))
+    index.html ['characteristic.png', 'index.html']
+    """
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     curve = CURVES[name]()

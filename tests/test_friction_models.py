@@ -289,7 +289,8 @@ def test_the_grease_variant_is_what_the_calibration_writes():
     for name, value in cal.parameters.items():
         spec = parameter(name)
         expected = spec.item(value) if spec.choices else value
-        assert float(bound[name]) == expected, name
+        # written from the library's fit; another numpy/scipy build may round its last digit
+        assert float(bound[name]) == pytest.approx(expected, rel=1e-12), name
 
 
 def test_the_reduction_factors_the_ehl_model_leaves_out():

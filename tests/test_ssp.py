@@ -119,5 +119,7 @@ def test_thermal_systems_bind_the_network_presets(name, preset, ssv):
         if field == "environment":
             assert int(bound[field]) == tn.ENVIRONMENTS.index(value) + 1
         else:
-            assert float(bound[field]) == value, field
+            # the file holds the library's value as written when it was generated; libm's
+            # pow/exp may round the last digit differently in another numpy build
+            assert float(bound[field]) == pytest.approx(value, rel=1e-12), field
     assert values("bearing.ssv")["temperature_mode"] == "3"  # parts
