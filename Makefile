@@ -52,4 +52,4 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_calibration.py
 
 clean:
-	rm -rf $(VENV) $(OUT) .pytest_cache .ruff_cache
+	rm -rf $(VENV) $(OUT) .pytest_cache .ruff_cache .setuptools-build dist servofmu.egg-info
