@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import sys
 import shutil
 import tempfile
 from pathlib import Path
@@ -17,7 +18,10 @@ from .presets import start_values, write_presets
 
 FMUS = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
 PACKAGE_DIR = Path(servofmu.__file__).resolve().parent
-DEFAULT_OUT = Path(__file__).resolve().parent / "out"
+#: Where ``servofmu build`` writes, and where every command looks for built FMUs and systems
+#: (building them there when they are missing or stale): the working folder's build/out.
+#: Relative, so resolved against the folder a command runs in; never inside the package.
+DEFAULT_OUT = Path("build") / "out"
 
 
 def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None = None) -> Path:
@@ -107,25 +111,31 @@ def build_all(
     return paths
 
 
+def build_info(fmu: Path) -> dict | None:
+    """The build record (``resources/servofmu_build.json``) of a built FMU, or None when
+    ``fmu`` is missing or not readable as one."""
+    import zipfile
+
+    try:
+        with zipfile.ZipFile(fmu) as zf:
+            return json.loads(zf.read(f"resources/{BUILD_INFO}"))
+    except (OSError, KeyError, ValueError, zipfile.BadZipFile):
+        return None
+
+
 def is_current(out_dir: Path = DEFAULT_OUT) -> bool:
     """True when every FMU and system in ``out_dir`` was built from the current sources: the
     FMU build hash against the parts of the package an FMU ships (an edit elsewhere, e.g. in
     papers/ or the CLI, leaves the FMUs current), with the package's own defaults (not a
     user catalogue's), and archives newer than their ssp/ sources and than the FMUs they
     pack."""
-    import zipfile
-
     from .ssp import systems
 
     current = package_hash(PACKAGE_DIR)
     for name in FMUS:
-        fmu = Path(out_dir) / f"{name}.fmu"
-        if not fmu.is_file():
-            return False
-        with zipfile.ZipFile(fmu) as zf:
-            info = json.loads(zf.read(f"resources/{BUILD_INFO}"))
-            if info["package_hash"] != current or "start" in info:  # a user build is not ours
-                return False
+        info = build_info(Path(out_dir) / f"{name}.fmu")
+        if info is None or info["package_hash"] != current or "start" in info:
+            return False  # missing, stale, or a user build (start values of a catalogue)
     for system in systems():
         archive = Path(out_dir) / f"{system.name}.ssp"
         newest = max(f.stat().st_mtime for f in system.rglob("*") if f.is_file())
@@ -137,7 +147,22 @@ def is_current(out_dir: Path = DEFAULT_OUT) -> bool:
 
 
 def ensure_built(out_dir: Path = DEFAULT_OUT) -> Path:
-    """Build FMUs and systems into ``out_dir`` unless they are current; returns out_dir."""
+    """Build FMUs and systems into ``out_dir`` unless they are current; returns out_dir.
+
+    A user build there (FMUs built with ``--catalog``/``--preset``) is never overwritten:
+    ValueError names the folder and what to do."""
     if not is_current(out_dir):
+        user = [
+            name
+            for name in FMUS
+            if "start" in (build_info(Path(out_dir) / f"{name}.fmu") or {})
+        ]
+        if user:
+            raise ValueError(
+                f"{out_dir} holds FMUs built with a user catalogue or preset ({', '.join(user)}); "
+                "this command needs the standard build and will not overwrite yours: run it "
+                "from another folder, or move that build (servofmu build --out DIR)"
+            )
+        print(f"building the FMUs and systems into {out_dir}", file=sys.stderr, flush=True)
         build_all(out_dir)
     return Path(out_dir)

@@ -2,18 +2,28 @@
 
 from __future__ import annotations
 
+import importlib.resources
 import zipfile
 from pathlib import Path
 
 from .xmlsafe import parse
 
-SSP_DIR = Path(__file__).resolve().parents[1] / "ssp"
+#: The SSP system sources: the package ``servofmu.ssp`` (the checkout's ``ssp/``, shipped in
+#: the wheel), read, never written.
+SSP_DIR = Path(str(importlib.resources.files("servofmu.ssp")))
 NS = {"ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription"}
 
 
 def systems(ssp_dir: Path = SSP_DIR) -> list[Path]:
-    """The system folders (those with a SystemStructure.ssd)."""
-    return sorted(p.parent for p in Path(ssp_dir).glob("*/SystemStructure.ssd"))
+    """The system folders (those with a SystemStructure.ssd); FileNotFoundError, naming the
+    folder, when there is none (an install without its system sources)."""
+    found = sorted(p.parent for p in Path(ssp_dir).glob("*/SystemStructure.ssd"))
+    if not found:
+        raise FileNotFoundError(
+            f"no SSP system sources (*/SystemStructure.ssd) in {ssp_dir}: the servofmu "
+            "installation is incomplete; reinstall it"
+        )
+    return found
 
 
 def fmu_sources(system_dir: Path) -> list[str]:

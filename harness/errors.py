@@ -33,6 +33,11 @@ class SystemError_(HarnessError):
         return super().__str__() + ":\n  - " + "\n  - ".join(self.problems)
 
 
+class MissingExtra(ImportError):
+    """A command needs packages of an extra that this install left out; the message names the
+    extra to install (bad set-up: the command line exits 2)."""
+
+
 class ArgumentError(HarnessError, ValueError):
     """An argument of a run (times, overrides, signals, names to record) is unusable; raised
     before any FMU is instantiated (bad input: the command line exits 2)."""

@@ -476,11 +476,34 @@ TABLE_SUFFIXES = (".csv", ".parquet")
 
 
 def check_table_path(path) -> None:
-    """ValueError unless ``path`` ends in one of :data:`TABLE_SUFFIXES`."""
+    """ValueError unless ``path`` ends in one of :data:`TABLE_SUFFIXES`, and the packages that
+    write it are installed (:func:`require_sweep_extra`)."""
     if Path(path).suffix not in TABLE_SUFFIXES:
         raise ValueError(
             f"out = {str(path)!r}: a sweep table is written as {' or '.join(TABLE_SUFFIXES)}; "
             "name the file so"
+        )
+    if Path(path).suffix == ".parquet":
+        require_sweep_extra(("pyarrow",))
+
+
+#: The packages of the ``sweep`` extra that running a sweep needs.
+SWEEP_PACKAGES = ("dask", "distributed")
+
+
+def require_sweep_extra(packages=SWEEP_PACKAGES) -> None:
+    """:class:`~servofmu.harness.errors.MissingExtra` naming the extra to install when one of
+    ``packages`` is missing (sweeps and Monte-Carlo studies run on Dask, which a base install
+    of servofmu leaves out)."""
+    import importlib.util
+
+    from .errors import MissingExtra
+
+    missing = [p for p in packages if importlib.util.find_spec(p) is None]
+    if missing:
+        raise MissingExtra(
+            f"{', '.join(missing)} not installed: sweeps and Monte-Carlo studies need the "
+            "sweep extra (pip install 'servofmu[sweep]')"
         )
 
 

@@ -79,6 +79,19 @@ def _validate(args) -> int:
     return 1 if failed else 0
 
 
+def _examples(args) -> int:
+    """List the shipped example files, or copy them into a folder."""
+    from servofmu.examples_files import copy_examples, example_files
+
+    if args.dest is None:
+        for path in example_files():
+            print(path)
+        return 0
+    for path in copy_examples(Path(args.dest), overwrite=args.force):
+        print(path)
+    return 0
+
+
 def _host_env(args) -> int:
     from servofmu.build.host import host_environment_text
 
@@ -87,19 +100,24 @@ def _host_env(args) -> int:
 
 
 def _system_path(arg: str) -> tuple[Path, Path | None]:
-    """(path, fmu_dir) for ``servofmu run``: an .ssp, a system folder (its FMUs taken from the
-    build), or the name of a system in ssp/ (its built .ssp)."""
+    """(path, fmu_dir) for ``servofmu run`` and ``sweep``: an .ssp, a system folder (its FMUs
+    taken from the build), or the name of a system of the package (its .ssp in the build
+    folder, built there when missing or stale)."""
     from servofmu.build.fmu import DEFAULT_OUT, ensure_built
-    from servofmu.build.ssp import systems
+    from servofmu.build.ssp import SSP_DIR, systems
     from servofmu.harness.scenarios.common import system_path
 
-    names = [s.name for s in systems()]
     path = Path(arg)
     if path.exists():
         return path, (ensure_built(DEFAULT_OUT) if path.is_dir() or path.suffix == ".ssd" else None)
+    names = [s.name for s in systems()]
     if arg in names:
         return system_path(arg), None
-    raise ValueError(f"system = {arg!r}: no such file or folder, nor one of {names}")
+    raise ValueError(
+        f"system = {arg!r}: no such .ssp file or system folder here, nor a system name; the "
+        f"systems are {names} (sources in {SSP_DIR}, built into {DEFAULT_OUT} by "
+        "`servofmu build`)"
+    )
 
 
 def _value(text: str):
@@ -425,11 +443,13 @@ def _sweep(args) -> int:
         check_table_path,
         cross,
         grid_points,
+        require_sweep_extra,
         run_sweep,
         sample_points,
     )
     from servofmu.physics.bearing_parameters import default_parameters
 
+    require_sweep_extra()
     out = Path(args.out or "out/sweep/results.csv")
     check_table_path(out)
     axes = dict(_axis(g) for g in args.grid)
@@ -475,8 +495,10 @@ def _sweep(args) -> int:
 
 
 def _montecarlo(args) -> int:
+    from servofmu.harness.sweep import require_sweep_extra
     from servofmu.harness.tolerance import run
 
+    require_sweep_extra()
     result = run(
         Path(args.out or "out/montecarlo"),
         samples=args.samples,
@@ -745,6 +767,17 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--json", action="store_true", help="print the result as JSON")
     c.add_argument("--out", help="output directory (default out/calibration/DATA)")
     c.set_defaults(func=_calibrate)
+    e = sub.add_parser(
+        "examples",
+        help="list the example files shipped with servofmu, or copy them into a folder",
+        description="The example files shipped with servofmu: a user catalogue "
+        "(my_gimbal_catalog.toml), a measured-friction data file (data/*.csv) and a "
+        "plain-fmpy script. Without DEST: list where they are installed; with DEST: copy "
+        "them there (existing files are kept unless --force).",
+    )
+    e.add_argument("dest", nargs="?", help="folder to copy the examples into")
+    e.add_argument("--force", action="store_true", help="overwrite files already in DEST")
+    e.set_defaults(func=_examples)
     h = sub.add_parser("host-env", help="environment a non-Python FMI host must set for our FMUs")
     h.set_defaults(func=_host_env)
     return parser
@@ -754,7 +787,13 @@ def main(argv: list[str] | None = None) -> int:
     """Exit codes: 0 done, 1 a run failed (partial results kept), 2 bad input (data,
     arguments, system description), 3 an internal error (traceback in a log file), 130
     interrupted (Ctrl-C; a run stops at a step boundary and keeps its results)."""
-    from .harness.errors import ArgumentError, HarnessError, Interrupted, SystemError_
+    from .harness.errors import (
+        ArgumentError,
+        HarnessError,
+        Interrupted,
+        MissingExtra,
+        SystemError_,
+    )
 
     args = build_parser().parse_args(argv)
     try:
@@ -771,7 +810,7 @@ def main(argv: list[str] | None = None) -> int:
     except HarnessError as exc:
         print(f"servofmu: run failed: {exc}", file=sys.stderr)
         return 1
-    except (ValueError, OSError) as exc:
+    except (ValueError, OSError, MissingExtra) as exc:
         print(f"servofmu: error: {exc}", file=sys.stderr)
         return 2
     except Exception as exc:
