@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import json
-import sys
 import shutil
+import sys
 import tempfile
 from pathlib import Path
 
@@ -153,9 +153,7 @@ def ensure_built(out_dir: Path = DEFAULT_OUT) -> Path:
     ValueError names the folder and what to do."""
     if not is_current(out_dir):
         user = [
-            name
-            for name in FMUS
-            if "start" in (build_info(Path(out_dir) / f"{name}.fmu") or {})
+            name for name in FMUS if "start" in (build_info(Path(out_dir) / f"{name}.fmu") or {})
         ]
         if user:
             raise ValueError(
