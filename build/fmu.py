@@ -113,7 +113,26 @@ def build_all(
 
 def build_info(fmu: Path) -> dict | None:
     """The build record (``resources/servofmu_build.json``) of a built FMU, or None when
-    ``fmu`` is missing or not readable as one."""
+    ``fmu`` is missing or not readable as one.
+
+    Parameters
+    ----------
+    fmu : pathlib.Path
+        A built ``.fmu`` archive.
+
+    Returns
+    -------
+    dict or None
+        ``model``, ``version``, ``package_hash`` and, for a user build, the ``start`` values
+        and ``catalogues`` it was built with; None without a readable record.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> print(build_info(Path(tempfile.gettempdir()) / "no_such.fmu"))
+    None
+    """
     import zipfile
 
     try:

@@ -494,7 +494,27 @@ SWEEP_PACKAGES = ("dask", "distributed")
 def require_sweep_extra(packages=SWEEP_PACKAGES) -> None:
     """:class:`~servofmu.harness.errors.MissingExtra` naming the extra to install when one of
     ``packages`` is missing (sweeps and Monte-Carlo studies run on Dask, which a base install
-    of servofmu leaves out)."""
+    of servofmu leaves out).
+
+    Parameters
+    ----------
+    packages : tuple of str
+        Importable names to look for (default: :data:`SWEEP_PACKAGES`).
+
+    Returns
+    -------
+    None
+        When every package is importable.
+
+    Examples
+    --------
+    >>> require_sweep_extra(("math",))
+    >>> try:
+    ...     require_sweep_extra(("no_such_package",))
+    ... except ImportError as exc:
+    ...     print(exc)  # doctest: +ELLIPSIS
+    no_such_package not installed: ... (pip install 'servofmu[sweep]')
+    """
     import importlib.util
 
     from .errors import MissingExtra

@@ -12,12 +12,34 @@ _SKIP = ("__init__.py", "__pycache__")
 
 
 def examples_dir() -> Path:
-    """The installed folder of the example files (read only: copy them before editing)."""
+    """The installed folder of the example files (read only: copy them before editing).
+
+    Returns
+    -------
+    pathlib.Path
+        The folder of the package ``servofmu.examples``.
+
+    Examples
+    --------
+    >>> (examples_dir() / "my_gimbal_catalog.toml").is_file()
+    True
+    """
     return Path(str(importlib.resources.files("servofmu.examples")))
 
 
 def example_files() -> list[Path]:
-    """Every shipped example file (absolute paths), sorted."""
+    """Every shipped example file, sorted.
+
+    Returns
+    -------
+    list of pathlib.Path
+        Absolute paths of the files under :func:`examples_dir` (no Python package plumbing).
+
+    Examples
+    --------
+    >>> [p.relative_to(examples_dir()).as_posix() for p in example_files()][:2]
+    ['README.md', 'bearing_friction_temperature.py']
+    """
     root = examples_dir()
     return sorted(
         p
@@ -27,9 +49,39 @@ def example_files() -> list[Path]:
 
 
 def copy_examples(dest: Path, overwrite: bool = False) -> list[Path]:
-    """Copy the example files into ``dest`` (created), keeping their relative paths; returns
-    the files written. FileExistsError, naming the file, when one exists already and
-    ``overwrite`` is false (nothing is copied then)."""
+    """Copy the example files into ``dest`` (created), keeping their relative paths.
+
+    Parameters
+    ----------
+    dest : pathlib.Path
+        The folder to copy into.
+    overwrite : bool, default False
+        Replace files that exist in ``dest`` already.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written.
+
+    Raises
+    ------
+    FileExistsError
+        Naming the first file that exists already, when ``overwrite`` is false (nothing is
+        copied then).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     written = copy_examples(Path(tmp) / "mine")
+    ...     print((Path(tmp) / "mine" / "data").is_dir(), len(written) == len(example_files()))
+    ...     try:
+    ...         copy_examples(Path(tmp) / "mine")
+    ...     except FileExistsError as exc:
+    ...         print("refused:", Path(str(exc).split()[0]).name)
+    True True
+    refused: README.md
+    """
     root, dest = examples_dir(), Path(dest)
     pairs = [(src, dest / src.relative_to(root)) for src in example_files()]
     if not overwrite:
