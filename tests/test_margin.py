@@ -337,3 +337,58 @@ def test_the_example_user_catalogue(tmp_path, capsys):
     assert "mechanism: my_gimbal" in text
     assert "no tolerance bands for mounting 'my_gimbal'" in text  # said, not silently skipped
     assert code == 0
+
+
+def test_a_torque_speed_curve_a_temperature_coefficient_and_drawn_bands(tmp_path):
+    """The motor as a curve giving k_t·I at the speed: the same torques; a coefficient of
+    −0.1 %/K about 20 °C: T(−20 °C) = 25 × (1 + 0.001 × 40) = 26 N·mm; bands drawn around the
+    nominal interference stay in the band."""
+    curve = SMALL.replace(
+        'torque_constant = { value = 0.05, unit = "N.m/A", kind = "assumed", ref = "test" }\n'
+        'current_limit = { value = 0.5, unit = "A" }',
+        'torque_speed = { speed = { values = [0, 3], unit = "rad/s" }, '
+        'torque = { values = [25, 25], unit = "N.mm" } }\n'
+        'temperature_coefficient = { value = -0.1, unit = "%/K" }\n'
+        'reference_temperature = { value = 20, unit = "degC" }',
+    )
+    curve += textwrap.dedent("""
+        [tolerances]
+        samples = 3
+        seed = 7
+        [tolerances.bands]
+        outer_interference = { low = -2, high = 2, unit = "um", kind = "assumed", ref = "t" }
+        """)
+    assert curve != SMALL
+    inputs = load_inputs(_write(tmp_path, curve))
+    result = run(inputs)
+    for r in result.steady:
+        expected = 25.0 * (1.0 - 0.001 * (r["temperature"] - 293.15))
+        assert r["available"] * 1e3 == pytest.approx(expected, rel=1e-12)
+    nominal = inputs.parameters["as given"]["outer_interference"]
+    drawn = {r["draw"]: r["outer_interference"] for r in result.draws}
+    assert sorted(drawn) == [0, 1, 2]
+    assert all(abs(v - nominal) <= 2e-6 + 1e-18 for v in drawn.values())
+    assert len({round(v, 15) for v in drawn.values()}) == 3  # three different parts
+
+
+def test_end_of_life_values_of_a_table_torque(tmp_path):
+    text = _bad(
+        SMALL,
+        'torque = { value = 2.0, unit = "N.mm" }',
+        'temperature = { values = [-40, 60], unit = "degC" }\n'
+        'torque = { values = [3, 1], unit = "N.mm" }\n'
+        'end_of_life = { values = [6, 2], unit = "N.mm" }',
+    )
+    text += '[end_of_life]\nsource = "test"\nscale = { palmgren_s0 = 1.0 }\n'
+    result = run(load_inputs(_write(tmp_path, text)))
+    rows = {(r["life"], r["case"], round(r["temperature"], 2)): r for r in result.steady}
+    # at −20 °C the table gives 3 − 2 × 20/100 = 2.6 N·mm (BOL) and 6 − 4 × 0.2 = 5.2 (EOL);
+    # harness measured: × 1.5
+    bol = rows[("BOL", "run", 253.15)]["factored_harness"] * 1e3
+    eol = rows[("EOL", "run", 253.15)]["factored_harness"] * 1e3
+    assert (bol, eol) == (pytest.approx(1.5 * 2.6), pytest.approx(1.5 * 5.2))
+    # the bearing is the same at both lives here (scale 1)
+    assert (
+        rows[("EOL", "run", 253.15)]["bearing_torque"]
+        == (rows[("BOL", "run", 253.15)]["bearing_torque"])
+    )
