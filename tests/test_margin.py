@@ -392,3 +392,30 @@ def test_end_of_life_values_of_a_table_torque(tmp_path):
         rows[("EOL", "run", 253.15)]["bearing_torque"]
         == (rows[("BOL", "run", 253.15)]["bearing_torque"])
     )
+
+
+def test_a_point_without_a_bearing_state_is_nan_and_not_met(tmp_path, capsys, monkeypatch):
+    """Where the bearing model finds no state (here made to at −20 °C), that point's margin is
+    NaN, the report says why, and the command exits 1: a margin that cannot be shown is not
+    met."""
+    from servofmu.physics import bearing
+
+    real = bearing.BearingModel.evaluate
+
+    def evaluate(self, temperature, *args, **kwargs):
+        if abs(float(temperature) - 253.15) < 1e-9:
+            raise ValueError("no state here (test)")
+        return real(self, temperature, *args, **kwargs)
+
+    def exact(*args, **kwargs):
+        raise ValueError("no state (test)")
+
+    monkeypatch.setattr(bearing.BearingModel, "evaluate", evaluate)
+    monkeypatch.setattr(bearing, "operating_outputs", exact)
+    out = tmp_path / "out"
+    assert main(["margin", str(_write(tmp_path)), "--out", str(out)]) == 1
+    text = capsys.readouterr().out
+    assert "no bearing state" in text and "NOT MET" in text
+    rows = {(r["case"], r["temperature [degC]"]): r for r in _csv(out / "margin.csv")}
+    assert rows[("run", "-20")]["margin T/T_min-1 [-]"] == "nan"
+    assert float(rows[("run", "20")]["margin T/T_min-1 [-]"]) > -1.0

@@ -871,8 +871,8 @@ def _parse(data, base_dir: Path, source: str, catalogs, mounting) -> MarginInput
     file_catalogs = [base_dir / str(c) for c in mech.get("catalog", [])]
     chosen, chosen_from = _choose_mounting(mounting, catalogs, mech, file_catalogs, source)
     try:
-        cat.load([*file_catalogs, *catalogs], mounting=chosen)
-        parameters = _parameters(r, mech, eol, chosen, lives)
+        defaults = cat.load([*file_catalogs, *catalogs], mounting=chosen)
+        parameters = _parameters(r, mech, eol, chosen, lives, defaults.lubricant)
         nominal = next(iter(parameters.values()), {})
         tolerances = _tolerances(r, data, chosen, nominal, notes) if nominal else None
         if transient is not None and nominal:
@@ -932,9 +932,11 @@ def _choose_mounting(mounting, catalogs, mech: Mapping, file_catalogs, source: s
     return DEFAULT_MOUNTING, "the package default"
 
 
-def _parameters(r: _Reader, mech: Mapping, eol: Mapping, mounting: str, lives) -> dict:
-    """{life: parameter set (SI)}: the mounting's preset, the file's changes, and at end of
-    life the end-of-life changes; each checked."""
+def _parameters(r: _Reader, mech: Mapping, eol: Mapping, mounting: str, lives,
+                lubricant=None) -> dict:  # fmt: skip
+    """{life: parameter set (SI)}: the mounting's preset (with a catalogue's ``[defaults]``
+    lubricant when one names it), the file's changes, and at end of life the end-of-life
+    changes; each checked."""
     from servofmu.physics.bearing_parameters import (
         default_parameters,
         pair_from_parameters,
@@ -944,7 +946,7 @@ def _parameters(r: _Reader, mech: Mapping, eol: Mapping, mounting: str, lives) -
 
     out = {}
     try:
-        base = default_parameters(mounting)
+        base = default_parameters(mounting, lubricant=lubricant)
     except (KeyError, ValueError) as exc:
         r.fail(f"mechanism.mounting = {mounting!r}: {exc}")
         return out

@@ -251,7 +251,6 @@ def run(inputs: MarginInputs, result: MarginResult | None = None) -> MarginResul
     >>> block, row["life"], row["case"], round(row["temperature"] - 273.15, 2)
     ('steady', 'EOL', 'run', -40.0)
     """
-    from servofmu.physics.bearing import operating_outputs
     from servofmu.physics.bearing_parameters import pair_from_parameters
 
     result = MarginResult(inputs) if result is None else result
@@ -259,26 +258,49 @@ def run(inputs: MarginInputs, result: MarginResult | None = None) -> MarginResul
     temps = np.asarray(inputs.temperatures, dtype=float)
     for life, params in inputs.parameters.items():
         pair = pair_from_parameters(params)
-        out = _outputs(operating_outputs, pair, temps, inputs)
+        out = _outputs(pair, temps, inputs, result.notes, f"{life}, nominal parts")
         result.steady += _rows(inputs, life, temps, out, {})
         if inputs.tolerances is not None:
-            result.draws += _draw_rows(inputs, life, params, temps)
+            result.draws += _draw_rows(inputs, life, params, temps, result.notes)
         if inputs.transient is not None:
-            result.transient += _transient_rows(inputs, life, pair)
+            result.transient += _transient_rows(inputs, life, pair, result.notes)
     return result
 
 
-def _outputs(operating_outputs, pair, temps, inputs: MarginInputs):
-    """The library's outputs over ``temps`` at the operating speed and loads (vectorised;
-    one temperature at a time under a radial load)."""
-    if inputs.radial_load == 0.0:
-        return operating_outputs(pair, temps, inputs.speed, inputs.axial_load)
-    rows = [
-        operating_outputs(pair, float(t), inputs.speed, inputs.axial_load, inputs.radial_load)
-        for t in temps
-    ]
-    fields = rows[0].as_dict()
-    return type(rows[0])(**{k: np.array([getattr(r, k) for r in rows]) for k in fields})
+def _outputs(pair, temps, inputs: MarginInputs, notes: list, label: str):
+    """The library's outputs over ``temps`` at the operating speed and loads (exact path;
+    vectorised without a radial load); where it finds no state, point by point, NaN at the
+    points without one (:func:`_point`)."""
+    from servofmu.physics.bearing import BearingModel, operating_outputs
+
+    try:
+        if inputs.radial_load == 0.0:
+            return operating_outputs(pair, temps, inputs.speed, inputs.axial_load)
+        speed, axial, radial = inputs.speed, inputs.axial_load, inputs.radial_load
+        return _stack([operating_outputs(pair, float(t), speed, axial, radial) for t in temps])
+    except (ValueError, ArithmeticError):
+        model = BearingModel(pair)
+        return _stack([_point(model, float(t), inputs, notes, label) for t in temps])
+
+
+def _point(model, temperature, inputs: MarginInputs, notes: list, label: str):
+    """The model's outputs at one point (a temperature [K] or the parts' temperatures), or
+    NaN outputs and a note where it has no state there: that point's margin is NaN, which
+    counts as not met."""
+    try:
+        return model.evaluate(temperature, inputs.speed, inputs.axial_load, inputs.radial_load)
+    except (ValueError, ArithmeticError) as exc:
+        notes.append(f"no bearing state ({label}): {exc}; the margin there is NaN (not met)")
+        return _nan_outputs()
+
+
+def _nan_outputs():
+    from dataclasses import fields
+
+    from servofmu.physics.bearing import BearingOutputs
+
+    return BearingOutputs(**{f.name: (False if f.name in FLAGS else math.nan)
+                             for f in fields(BearingOutputs)})  # fmt: skip
 
 
 def _rows(
@@ -325,7 +347,7 @@ def _scalar(v):
     return int(v) if isinstance(v, np.integer | int) else float(v)
 
 
-def _draw_rows(inputs: MarginInputs, life: str, params: Mapping, temps) -> list[dict]:
+def _draw_rows(inputs: MarginInputs, life: str, params: Mapping, temps, notes) -> list[dict]:
     """The rows of every Monte-Carlo draw of one life: the parameters drawn from the bands
     around this life's values (the same seed at every life: the same parts)."""
     from servofmu.harness.tolerance import tolerance_draws
@@ -337,12 +359,8 @@ def _draw_rows(inputs: MarginInputs, life: str, params: Mapping, temps) -> list[
     for draw in tolerance_draws(params, tol.bands, tol.samples, tol.seed):
         index = draw.pop("sample")
         model = BearingModel(pair_from_parameters(dict(params) | draw))
-        out = _stack(
-            [
-                model.evaluate(float(t), inputs.speed, inputs.axial_load, inputs.radial_load)
-                for t in temps
-            ]
-        )
+        label = f"{life}, draw {index}"
+        out = _stack([_point(model, float(t), inputs, notes, label) for t in temps])
         rows += _rows(inputs, life, temps, out, {"draw": index, **draw})
     return rows
 
@@ -380,7 +398,7 @@ def chamber_temperature(transient, time):
     return float(out) if out.ndim == 0 else out
 
 
-def _transient_rows(inputs: MarginInputs, life: str, pair) -> list[dict]:
+def _transient_rows(inputs: MarginInputs, life: str, pair, notes: list) -> list[dict]:
     """Rows along the chamber transient of one life: the thermal network of the pair
     (:mod:`servofmu.physics.thermal_network`) stepped with the chamber as its ambient and
     sink and the bearing's power loss at the operating speed as its heat input; the bearing
@@ -399,15 +417,13 @@ def _transient_rows(inputs: MarginInputs, life: str, pair) -> list[dict]:
     reference = None
     history, outs = [], []
     for k, time in enumerate(times):
-        outs.append(
-            model.evaluate(
-                tuple(float(p) for p in parts), inputs.speed, inputs.axial_load, inputs.radial_load
-            )
-        )
+        label = f"{life}, transient at t = {time:g} s"
+        outs.append(_point(model, tuple(float(p) for p in parts), inputs, notes, label))
         history.append(parts)
         if k < n:  # zero-order hold over the step, the chamber at its midpoint
             chamber = chamber_temperature(tr, time + 0.5 * tr.step)
             power = abs(outs[-1].running_torque * inputs.speed)
+            power = power if math.isfinite(power) else 0.0  # no state: no heat
             if (
                 reference is None
                 or max(abs(a - b) for a, b in zip(parts, reference, strict=True)) > RELINEARISE
