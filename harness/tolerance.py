@@ -32,19 +32,59 @@ OUTPUTS = ("running_torque", "preload", "max_contact_pressure", "overloaded", "u
 FLAGS = ("overloaded", "unloaded")
 
 
-def tolerance_points(mounting: str, samples: int, seed: int) -> list[dict]:
-    """``samples`` draws of (outer_interference, shim) of ``mounting``, each crossed with the
-    temperatures of :data:`TEMPS_C` at :data:`SPEED`."""
-    nominal = default_parameters(mounting)
-    tol = catalog.tolerances(mounting)
-    bands = {name: Uniform(lo, hi) for name, (lo, hi, _) in tol.items()}
-    draws = sample_points(bands, samples, seed)
-    mids = {name: 0.5 * (lo + hi) for name, (lo, hi, _) in tol.items()}
+#: Bands of the two seat dimensions whose deviations make the outer ring's interference.
+SEAT_BANDS = ("ring_outer_diameter", "housing_bore")
+
+
+def tolerance_draws(nominal, bands, samples: int, seed: int) -> list[dict]:
+    """``samples`` draws of parameter values from tolerance bands, each uniform in its band.
+
+    A band of ``ring_outer_diameter`` or ``housing_bore`` (deviations of the ring's outside
+    diameter and of the housing bore) moves ``outer_interference`` by (ring − mid) − (bore −
+    mid); a band of any other name moves the parameter of that name by (draw − mid). The
+    bands are centred: mid-band parts give the nominal value.
+
+    Parameters
+    ----------
+    nominal : mapping
+        The parameter set (SI) the deviations apply to.
+    bands : mapping
+        {name: (low, high, provenance)}: deviations from nominal in SI
+        (:func:`servofmu.physics.catalog.tolerances`).
+    samples : int
+        Number of draws, ≥ 1.
+    seed : int
+        Seed of numpy's ``default_rng``.
+
+    Returns
+    -------
+    list of dict
+        Per draw: ``sample`` (its index) and the drawn parameter values (SI).
+
+    Examples
+    --------
+    >>> draws = tolerance_draws({"shim": 1e-4}, {"shim": (-2e-6, 2e-6, "±2 µm")}, 3, 1)
+    >>> [d["sample"] for d in draws], all(abs(d["shim"] - 1e-4) <= 2e-6 for d in draws)
+    ([0, 1, 2], True)
+    """
+    draws = sample_points({n: Uniform(lo, hi) for n, (lo, hi, _) in bands.items()}, samples, seed)
+    mids = {name: 0.5 * (lo + hi) for name, (lo, hi, _) in bands.items()}
     for d in draws:
-        ring = d.pop("ring_outer_diameter") - mids["ring_outer_diameter"]
-        bore = d.pop("housing_bore") - mids["housing_bore"]
-        d["outer_interference"] = nominal["outer_interference"] + ring - bore
-        d["shim"] = nominal["shim"] + d["shim"] - mids["shim"]
+        seat = [d.pop(n) - mids[n] if n in mids else 0.0 for n in SEAT_BANDS]
+        if any(n in mids for n in SEAT_BANDS):
+            d["outer_interference"] = nominal["outer_interference"] + seat[0] - seat[1]
+        for name in set(mids) - set(SEAT_BANDS):
+            d[name] = nominal[name] + d[name] - mids[name]
+    return draws
+
+
+def tolerance_points(mounting: str, samples: int, seed: int) -> list[dict]:
+    """``samples`` draws of (outer_interference, shim) of ``mounting`` (its bands in
+    ``physics/data/tolerances.toml``, :func:`tolerance_draws`), each crossed with the
+    temperatures of :data:`TEMPS_C` at :data:`SPEED`."""
+    draws = tolerance_draws(
+        default_parameters(mounting), catalog.tolerances(mounting), samples, seed
+    )
     return cross(draws, _grid())
 
 

@@ -16,7 +16,7 @@ import servofmu
 
 _PACKAGES = ("servofmu", "servofmu.physics", "servofmu.papers", "servofmu.calibration",
              "servofmu.fmus", "servofmu.harness", "servofmu.harness.scenarios",
-             "servofmu.build")  # fmt: skip
+             "servofmu.build", "servofmu.margin")  # fmt: skip
 
 
 def _module_names():

@@ -511,6 +511,27 @@ def _montecarlo(args) -> int:
     return 0
 
 
+def _margin(args) -> int:
+    """``servofmu margin [FILE]``: the motorisation margin (servofmu.margin); exit 1 when it is
+    negative anywhere. Ctrl-C writes the rows computed so far."""
+    from .margin import MarginResult, example_input, load_inputs, run, to_text, write_all
+
+    # the whole input is read and checked before any computation (exit 2 naming the field)
+    inputs = load_inputs(args.file or example_input(), args.catalog, args.mounting)
+    out = Path(args.out)
+    result = MarginResult(inputs)
+    try:
+        run(inputs, result)
+    except KeyboardInterrupt:
+        files = write_all(result, out) if result.steady else []
+        raise KeyboardInterrupt(
+            f"the rows computed so far are in {', '.join(map(str, files))}" if files else ""
+        ) from None
+    files = write_all(result, out)
+    print(to_text(result, files))
+    return 0 if result.passed else 1
+
+
 class _Parser(argparse.ArgumentParser):
     """argparse with its errors on one line (no usage block): exit 2."""
 
@@ -703,6 +724,29 @@ def build_parser() -> argparse.ArgumentParser:
     mc.add_argument("--scheduler")
     mc.add_argument("--out", help="directory (default out/montecarlo)")
     mc.set_defaults(func=_montecarlo)
+    mg = sub.add_parser(
+        "margin",
+        help="motorisation (torque) margin of a mechanism, ECSS-E-ST-33-01C 4.7.5.3, over "
+        "temperature, a chamber transient and tolerances: table, CSV, plot; exit 1 when the "
+        "margin is negative anywhere",
+        description="The minimum actuation torque T_min = 2 × Σ u·R + 1.25 × T_D + T_L "
+        "(ECSS-E-ST-33-01C 4.7.5.3.1, Table 4-2's uncertainty factors u) with the bearing "
+        "pair's friction from the bearing model, and the margin T / T_min − 1, at every "
+        "temperature, case (start, running), life (BOL, EOL), Monte-Carlo draw and transient "
+        "time of FILE. Without FILE: the documented example (Yu's gimbal, motor and other "
+        "torques assumed). Exit 0: margin ≥ 0 everywhere; 1: negative somewhere; 2: a bad input.",
+    )
+    mg.add_argument(
+        "file", nargs="?", metavar="FILE.toml",
+        help="margin input file (format: examples/margin_yu_gimbal.toml, the default)",
+    )  # fmt: skip
+    mg.add_argument("--catalog", action="append", default=[], metavar="FILE.toml",
+                    help="a user catalogue (format: examples/my_gimbal_catalog.toml); its "
+                    "[defaults] mounting wins over the input file's")  # fmt: skip
+    mg.add_argument("--mounting", metavar="KEY", help="catalogue mounting to study (wins over "
+                    "the catalogues' [defaults] and the input file)")  # fmt: skip
+    mg.add_argument("--out", default="out/margin", help="output folder (default out/margin)")
+    mg.set_defaults(func=_margin)
     c = sub.add_parser(
         "calibrate",
         help="fit a bearing pair's unknown coefficients to measured friction torque (CSV)",
