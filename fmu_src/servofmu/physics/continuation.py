@@ -7,8 +7,9 @@ change a little from one communication step to the next, so this module solves t
 equations from the previous step's solution:
 
 - the thermal state (ring growth, Lamé fits, clearance, loop closure, viscosity) is closed
-  form: the equations of :func:`fits.mounted_geometry`, :func:`preload.loop_interference` and
-  :func:`viscosity.walther_kinematic_viscosity`, written out on floats (:func:`thermal_floats`);
+  form: the equations of :func:`fits.mounted_geometry` and :func:`preload.loop_interference`
+  written out on floats, and the lubricant's own law on floats
+  (:meth:`viscosity.ViscosityRange.operating_viscosity_at`) (:func:`thermal_floats`);
 - the pair's offsets and radial displacements x = (p, z, δr_A, δr_B) [m] solve the conditions
   of :func:`preload.pair_equilibrium` (F_A − F_B = F_ext, Fr_A = Fr_B = F_r/2,
   (F_A + F_B)/2 = k·(C − 2p)) by Newton's method with the analytic Jacobian, the contact
@@ -73,7 +74,7 @@ from .friction_models import skf_loads
 from .hertz import ellipticity
 from .materials import reduced_compliance
 from .pair import assembly_geometry, effective_shim, loop_stiffness
-from .pair_state import PointState, rest_torque, state_flags
+from .pair_state import PointState, axial_play, preload_force, rest_torque, state_flags
 from .preload import ROLES
 
 #: Relative change of a contact's ellipticity from its anchor beyond which the anchor is
@@ -188,7 +189,9 @@ class PairConstants:
         )
         self.loop_stiffness = float(loop_stiffness(pair))
         visc = pair.lubricant
-        self.walther = None if visc is None else (visc.a, visc.b, visc.c)
+        # the lubricant's law on floats, held below its range, and the range (:mod:`.viscosity`)
+        self.viscosity = None if visc is None else visc.operating_viscosity_at
+        self.lubricant_range = (0.0, _INF) if visc is None else (visc.lower_limit, visc.upper_limit)
         self.coefficients = pair.coefficients
         self.lubrication = pair.lubrication
         self.solid = pair.lubrication == "solid"
@@ -209,6 +212,7 @@ class Thermal:
         "closure",
         "curvature_distance",
         "dw_third",
+        "first_contact_offset",
         "gamma_scale",
         "inner_fit_pressure",
         "inner_groove_radius",
@@ -219,6 +223,7 @@ class Thermal:
         "outer_fit_pressure",
         "outer_groove_radius",
         "outer_interference",
+        "outside_lubricant_range",
         "pitch_diameter",
         "radial_centre_distance",
         "rest_torque",
@@ -236,7 +241,8 @@ class Thermal:
 def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -> Thermal:
     """Thermal state at the parts' temperatures ``temps`` = (housing, shaft, outer ring, inner
     ring) [K]: the equations of :func:`fits.mounted_geometry` (Yu 2017 eq 10–13),
-    :func:`preload.loop_interference` (eq 14–15) and Walther's viscosity (eq 18) on floats.
+    :func:`preload.loop_interference` (eq 14–15) and the lubricant's viscosity (eq 18, or
+    Vogel's law; :mod:`.viscosity`) on floats, with the lubricant's range flag.
 
     Parameters
     ----------
@@ -307,11 +313,11 @@ def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -
     th.closure = c.closure0 - (
         c.closure_housing * (t_h - t0) + c.closure_shaft * (t_s - t0) + c.closure_rings * (t_b - t0)
     )
-    if c.walther is None:
-        th.kinematic_viscosity = 0.0
-    else:
-        wa, wb, wc = c.walther
-        th.kinematic_viscosity = (10.0 ** (10.0 ** (wa - wb * math.log10(t_b))) - wc) * 1e-6
+    th.kinematic_viscosity = 0.0 if c.viscosity is None else c.viscosity(t_b)
+    lo, hi = c.lubricant_range
+    th.outside_lubricant_range = not lo <= t_b <= hi
+    a2 = th.radial_centre_distance
+    th.first_contact_offset = _sqrt(a * a - a2 * a2) if pd > 0.0 and a2 < a else 0.0
     th.outer_fit_pressure, th.inner_fit_pressure = p_o, p_i
     th.outer_interference, th.inner_interference = delta_o, delta_i
     return th
@@ -1068,6 +1074,7 @@ class PairSolver:
             rolling = skf_loads(fa, fb, radial_load)
         p_max = max(sa[5], sb[5])
         flags = state_flags(self.pair, th.clearance, p_max, fa, fb)
+        a_a, a_b = x[0] + x[1], x[0] - x[1]
         if th.rest_torque is None:
             th.rest_torque = rest_torque(self.pair, th.kinematic_viscosity, th.pitch_diameter)
         point = PointState.of(
@@ -1075,15 +1082,16 @@ class PairSolver:
             th,
             (sa[0] + sb[0], sa[1] + sb[1], sa[2] + sb[2], sa[3] + sb[3], sa[4] + sb[4]),
             (
-                0.5 * (fa + fb),
+                preload_force(fa, fb),
                 sa[7] / sa[6] if sa[6] > 0.0 else th.free_contact_angle,
                 _pair_stiffness(ka, kb, c.loop_stiffness),
                 p_max,
                 fa,
                 fb,
                 x[1],
+                axial_play(th.first_contact_offset, a_a, a_b, fa, fb),
             ),
-            (flags["overloaded"], flags["locked"], flags["unloaded"]),
+            (flags["overloaded"], flags["locked"], flags["unloaded"], flags["reverse_loaded"]),
             th.rest_torque,
             rolling,
         )
