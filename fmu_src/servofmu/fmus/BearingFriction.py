@@ -24,6 +24,17 @@ contact, Biboulet & Houpert 2010, with ``lubricant_density``, + Yu's hysteresis 
 term (``grease_f0``, ``grease_starting_ratio``, ``grease_reference_speed``; 0 = off) that
 adds to running and breakaway torque. running_torque = hysteresis + spin + sliding + viscous +
 grease.
+
+The lubricant's viscosity is the ASTM D341 line through ``lubricant_viscosity_40``/``_100``, or
+Vogel's law through them and ``lubricant_viscosity_cold`` at ``lubricant_cold_temperature``
+(:mod:`servofmu.physics.viscosity`). Outside ``lubricant_minimum_temperature`` …
+``lubricant_maximum_temperature`` (the range of the lubricant's data) the output
+``outside_lubricant_range`` is set and one warning naming the temperature and the limit is
+logged each time the lubricant's temperature leaves the range; below it the viscosity is held
+at its value at the lower end. ``preload`` is never negative, ``axial_play`` is the gap of an
+unloaded pair, ``reverse_loaded`` says a bearing is loaded on the other flanks of its grooves
+(:func:`servofmu.physics.pair_state.preload_force`, :func:`~servofmu.physics.pair_state.axial_play`,
+:func:`~servofmu.physics.pair_state.state_flags`).
 """
 
 from __future__ import annotations
