@@ -176,3 +176,10 @@ def test_vogel_through_three_points_by_hand():
 def test_vogel_refuses_points_it_cannot_pass_through(points, text):
     with pytest.raises(ValueError, match=text):
         vogel_from_points(points)
+
+
+def test_a_law_without_a_finite_value_at_the_lower_limit_is_refused():
+    with pytest.raises(ValueError, match=r"lower_limit = 1\.0 K is inf"):
+        walther_from_reference(32e-6, 5.4e-6, lower_limit=1.0)
+    with pytest.raises(ValueError, match="must lie below the lowest temperature"):
+        vogel_from_points([(250.0, 1.0), (300.0, 0.01), (350.0, 0.005)], lower_limit=150.0)

@@ -85,6 +85,19 @@ class ViscosityRange:
                 f"upper_limit = {self.upper_limit!r} K must lie above lower_limit = {lo!r} K"
             )
 
+    def _check_held(self):
+        """The viscosity held below ``lower_limit`` must be a number: the law there, finite."""
+        if self.lower_limit > 0.0:
+            try:
+                nu = self.viscosity_at(self.lower_limit)
+            except (OverflowError, ZeroDivisionError):
+                nu = math.inf
+            if not 0.0 < nu < math.inf:
+                raise ValueError(
+                    f"the viscosity at lower_limit = {self.lower_limit!r} K is {nu!r} m²/s: "
+                    "the law has no finite value there (raise the lower limit)"
+                )
+
     def kinematic_viscosity(self, temperature):  # the law (subclasses)
         raise NotImplementedError
 
@@ -151,6 +164,7 @@ class WaltherViscosity(ViscosityRange):
         check_positive("b", self.b)
         check_range("c", self.c, 0.0, 10.0, lo_open=True, unit="cSt")
         self._check_range()
+        self._check_held()
 
     def kinematic_viscosity(self, temperature):
         """ν(T) [m²/s] of the law for ``temperature`` [K] (scalar or array). Yu 2017 eq 18."""
@@ -332,6 +346,7 @@ class VogelViscosity(ViscosityRange):
                 f"law is used at ({coldest:.6g} K: the lower limit or the coldest point), "
                 "where it diverges"
             )
+        self._check_held()
 
     def kinematic_viscosity(self, temperature):
         """ν(T) [m²/s] of the law for ``temperature`` [K] (scalar or array), Vogel 1921."""
