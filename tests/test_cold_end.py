@@ -120,6 +120,8 @@ def test_the_cold_point_parameters_give_the_published_cold_viscosity(fmus):
         ({"lubricant_viscosity_cold": 1e-2, "lubricant_cold_temperature": 273.15,
           "lubricant_minimum_temperature": 233.15}, "T∞"),  # T∞ = 246 K
         ({"lubricant_minimum_temperature": 400.0}, "must lie above lubricant_minimum"),
+        ({"lubricant_minimum_temperature": 1.0},
+         "lubricant_minimum_temperature = 1.0 K: the viscosity at lower_limit"),
     ],
 )  # fmt: skip
 def test_an_impossible_lubricant_is_refused_naming_the_values(fmus, extra, text):

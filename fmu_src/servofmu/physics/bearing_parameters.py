@@ -268,20 +268,26 @@ def _lubricant_problems(p: Mapping[str, object]) -> list[str]:
             f"lubricant_minimum_temperature = {lo!r} K"
         )
     nu, t = p["lubricant_viscosity_cold"], p["lubricant_cold_temperature"]
-    if nu == 0.0:
-        return found
-    if not t > 0.0 or min(abs(t - T40), abs(t - T100)) < 1.0:
+    if nu != 0.0 and (not t > 0.0 or min(abs(t - T40), abs(t - T100)) < 1.0):
         found.append(
             f"lubricant_cold_temperature = {t!r} K must be > 0 K and at least 1 K from 313.15 "
             f"and 373.15 K (lubricant_viscosity_cold = {nu!r} m2/s is given)"
         )
         return found
+    nu40, nu100, c = (p[n] for n in ("lubricant_viscosity_40", "lubricant_viscosity_100",
+                                      "lubricant_walther_c"))  # fmt: skip
+    if found or not (nu100 < nu40 and nu100 + c > CST):
+        return found  # (ν100 ≥ ν40 and ν + c ≤ 1 cSt are named by parameter_problems)
     try:
         _viscosity(p)
     except ValueError as err:
-        found.append(
+        cold = (
             f"lubricant_viscosity_cold = {nu!r} m2/s at lubricant_cold_temperature = {t!r} K, "
-            f"lubricant_viscosity_40 = {p['lubricant_viscosity_40']!r} and "
+            if nu != 0.0
+            else f"lubricant_walther_c = {p['lubricant_walther_c']!r} m2/s, "
+        )
+        found.append(
+            f"{cold}lubricant_viscosity_40 = {p['lubricant_viscosity_40']!r} and "
             f"lubricant_viscosity_100 = {p['lubricant_viscosity_100']!r} m2/s with "
             f"lubricant_minimum_temperature = {lo!r} K: {err}"
         )
