@@ -46,6 +46,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_bearing.py --models
 	$(BIN)/python benchmarks/bench_actuator.py
 	$(BIN)/python benchmarks/bench_fmus.py --models
+	$(BIN)/python benchmarks/bench_worst_step.py
 	$(BIN)/python benchmarks/bench_harness.py
 	$(BIN)/python benchmarks/bench_sweep.py
 	$(BIN)/python benchmarks/bench_thermal_network.py

@@ -256,7 +256,7 @@ def listing() -> str:
         )
     lines.append(
         "lubricants (type, ν40 / ν100 [cSt] of the base oil and the kind of their source, pour "
-        "point [°C])"
+        "point [°C]; the range of its data [°C], and the law when a third viscosity is known)"
     )
     for key in catalog.keys("lubricants"):
         rec = catalog.lubricant_record(key)
@@ -267,6 +267,10 @@ def listing() -> str:
             f"({rec.source('viscosity_40').split(':')[0]})"
         )
         pour = "" if rec.pour_point is None else f", {rec.pour_point - 273.15:.4g}"
+        if rec.viscosity is not None:
+            v = rec.viscosity
+            law = "; Vogel" if len(getattr(v, "points", ())) >= 3 else ""
+            pour += f"; {v.lower_limit - 273.15:.4g}…{v.upper_limit - 273.15:.4g}{law}"
         lines.append(
             f"  {key:16s} {rec.lubricant_type}, {nu}{pour}  [{catalog.origin('lubricants', key)}]"
         )

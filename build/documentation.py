@@ -130,8 +130,11 @@ def _bearing_curve() -> Curve:
         "temperature; the lubricant's viscosity adds the viscous part of the running torque. "
         "skf2004 and ehl_per_contact see the bearings' loads: once the preload is lost they "
         "fall below 0.01 N·mm (the axis' end), and SKF's replenishment factor cuts its rolling "
-        "torque where the base oil's extrapolated viscosity exceeds about 1e5 mm²/s (below "
-        "−45 °C). "
+        "torque as the base oil thickens. Outside the range of the lubricant's data "
+        "(lubricant_minimum_temperature … lubricant_maximum_temperature; the default Krytox "
+        "143AA: −40…+60 °C, Yu's) the output outside_lubricant_range is set, and below it the "
+        "viscosity is held at its value at −40 °C: the torque there follows the fits and the "
+        "preload only. "
         + (
             "The start values are this build's preset (see the parameters' provenance)."
             if _build_start("BearingFriction")

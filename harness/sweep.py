@@ -142,6 +142,9 @@ class ModelTask:
         "overloaded",
         "locked",
         "unloaded",
+        "axial_play",
+        "reverse_loaded",
+        "outside_lubricant_range",
     )
 
     def check(self, points: Sequence[dict]) -> None:

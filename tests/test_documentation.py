@@ -84,7 +84,10 @@ def test_controller_curve_is_proportional_step_integral_ramp_and_limit():
 def test_bearing_and_actuator_curves_have_the_physical_trends():
     bearing = doc.CURVES["BearingFriction"]()
     running = bearing.series[0][1]
-    assert running[0] > 100 * running[-1]  # cold grease and preload: far above the warm torque
+    cold = running[bearing.x == -40.0][0]  # the lower end of Krytox 143AA's data
+    assert cold > 10 * running[-1]  # cold grease and preload: far above the warm torque
+    # below it the viscosity is held: the torque moves with the fits and preload only
+    assert running[0] < 1.5 * cold
     actuator = doc.CURVES["ActuatorStiffness"]()
     for _, k in actuator.series:
         assert np.all(np.diff(k) > 0)  # the Hertzian support bearings stiffen with load

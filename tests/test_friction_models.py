@@ -296,9 +296,13 @@ def test_the_grease_variant_is_what_the_calibration_writes():
 def test_the_reduction_factors_the_ehl_model_leaves_out():
     # the numbers friction_models' docstring states for the 71803 at 10 °/s (Krytox 143AA)
     n = 10.0 / 6.0  # r/min
+    law = catalog.lubricant("krytox_143aa")  # Yu's eq 18, extrapolated below -40 °C
     for celsius, ish, rs in ((-40.0, 1.6e-4, 0.92), (-60.0, None, 0.0019)):
         out = BearingModel(_pair("ehl_per_contact")).evaluate(celsius + 273.15, W)
-        nu = out.kinematic_viscosity / 1e-6  # mm²/s
+        nu = float(law.kinematic_viscosity(celsius + 273.15)) / 1e-6  # mm²/s
+        # the model holds -40 °C's viscosity below -40 °C, the end of Krytox 143AA's data
+        assert out.kinematic_viscosity == pytest.approx(law.kinematic_viscosity(233.15), rel=1e-12)
+        assert out.outside_lubricant_range == (celsius < -40.0)
         if ish is not None:
             assert 1.0 - rf._phi_ish(nu, n, 21.5) == pytest.approx(ish, rel=0.05)
             assert nu == pytest.approx(4.1e4, rel=0.01)

@@ -542,3 +542,26 @@ def test_a_slow_component_steps_at_its_rate_and_holds_its_outputs(out, algorithm
     assert res["time"][25] == pytest.approx(25 * h)
     assert alone.get("shaft_temperature") == pytest.approx(float(shaft[25]), abs=1e-12)
     alone.close()
+
+
+def test_the_gimbal_runs_at_minus_84_degc_with_its_lubricant_flagged(out):
+    """Below Krytox 143AA's data (-40 °C, the end of Yu's use of his law) the bearing holds the
+    viscosity at its value there: the speed loop holds 10 °/s at -84 °C (the law's 1.5e8 m²/s
+    at 173 K made the bearing's torque kN·m and the loop unstable), the flag says the model
+    left the lubricant's data."""
+    system = load_system(out / "seeker_gimbal.ssp")
+    try:
+        res = run(
+            system,
+            signals={
+                "bearing.temperature": Steps((0.0,), (273.15 - 84.0,)),
+                "controller.reference": Steps((0.0,), (math.radians(10.0),)),
+            },
+            stop=1.0,
+            record=["motor.speed", "bearing.running_torque", "bearing.outside_lubricant_range"],
+        )
+    finally:
+        system.close()
+    assert res["motor.speed"][-1] == pytest.approx(math.radians(10.0), rel=1e-3)
+    assert np.all(res["bearing.outside_lubricant_range"] > 0.5)
+    assert 1e-3 < res["bearing.running_torque"][-1] < 1e-2  # N·m: a few N·mm

@@ -152,3 +152,17 @@ def test_semi_minor_axis_matches_hamrock_brewe(ratio):
     a, b = hertz.contact_constants(rho, f_rho, STEEL_ETA).semi_axes(q)
     assert b == pytest.approx(b_hb, rel=0.02)
     assert a == pytest.approx(a_hb, rel=0.025)
+
+
+def test_the_scalar_ellipticity_equals_the_interpolated_one():
+    """One float takes Newton's method from Hamrock & Brewe's approximation (the per-step
+    path), an array the interpolant and its polish: the same k to rounding over the range of
+    ball–groove contacts."""
+    import numpy as np
+
+    from servofmu.physics.hertz import ellipticity
+
+    f = np.linspace(0.002, 0.9998, 4001)
+    scalar = np.array([ellipticity(float(x)) for x in f])
+    assert np.allclose(scalar, ellipticity(f), rtol=1e-12, atol=0.0)
+    assert ellipticity(0.0) == 1.0 and isinstance(ellipticity(0.9), float)

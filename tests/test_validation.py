@@ -121,9 +121,15 @@ def test_rig_rows_against_an_independent_recomputation(rep):
 
 def test_files_and_parameters(rep):
     names = [f.rsplit("/", 1)[-1] for f in rep.files]
-    assert names == ["balan2015_torque.csv", "balan2015_torque.png"]
-    header = Path(rep.files[0]).read_text().splitlines()[0].split(",")
-    assert all("[" in h for h in header[1:])
+    assert names == [
+        "balan2015_torque.csv",
+        "balan2015_torque.png",
+        "viscosity_points.csv",
+        "viscosity_fits.png",
+    ]
+    for csv in (rep.files[0], rep.files[2]):
+        header = Path(csv).read_text().splitlines()[0].split(",")
+        assert all("[" in h for h in header[1:])
     for p in rep.parameters:
         kind = p.provenance.split(":")[0]
         assert kind in PROVENANCE_KINDS or p.name.startswith("source."), p
@@ -133,5 +139,44 @@ def test_cli_runs_the_report(tmp_path, capsys):
     assert cli.main(["paper", "validation", "--json", "--out", str(tmp_path)]) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["paper"] == "validation"
-    # 12 + 12 rig rows, 1 second-source row, 2 SKF, 2 calibrated, 1 grease prediction
-    assert len(data["rows"]) == 30
+    # 12 + 12 rig rows, 1 second-source row, 2 SKF, 2 calibrated, 1 grease prediction; 31
+    # recorded viscosities of 13 fluid lubricants (26 ν40/ν100 less Krytox 143AA's two, derived
+    # from Yu's constants, and 7 further points), 6 of Yu's eq 18
+    assert len(data["rows"]) == 30 + 31 + 6
+
+
+def test_the_viscosity_section_lists_every_recorded_point_within_3_percent(rep):
+    """Every ν40, ν100 and published point of every catalogue lubricant (those derived from
+    another law aside: Yu's Krytox 143AA), the law's value there and its error; a row's
+    published value is the data file's, by hand (cSt)."""
+    r = rows(rep)
+    expected = {}
+    for key in catalog.keys("lubricants"):
+        rec = catalog.lubricant_record(key)
+        if rec.viscosity is None:
+            continue
+        pts = [(40, rec.viscosity_40, rec.source("viscosity_40")),
+               (100, rec.viscosity_100, rec.source("viscosity_100"))]  # fmt: skip
+        pts += [(round(t - 273.15), nu, "")
+                for t, nu in rec.viscosity_points]  # fmt: skip
+        for t_c, nu, src in pts:
+            if "Walther a =" not in src:  # Yu's constants give Krytox 143AA's
+                expected[f"viscosity.{key}.{t_c:+d}C"] = nu * 1e6
+    got = {k: v for k, v in r.items() if k.startswith("viscosity.") and ".yu_eq18." not in k}
+    assert set(got) == set(expected)
+    for rid, row in got.items():
+        assert row.published == pytest.approx(expected[rid], rel=1e-12), rid
+        assert row.kind == "calibration" and row.status == "calibrated", rid
+        assert abs(row.computed / row.published - 1) <= 0.03 and "error" in row.note.lower(), rid
+    # the cold points the ASTM D341 line through ν40/ν100 missed, by hand
+    assert r["viscosity.pennzane_2000.-40C"].published == pytest.approx(80500)
+    assert r["viscosity.xc_5606j.-54C"].published == pytest.approx(2450)
+    assert "+56.9%" in r["viscosity.pennzane_2000.-40C"].note
+    for t_c in (-40, -20, 0, 20, 40, 60):  # Yu's constants stay his
+        row = r[f"viscosity.krytox_143aa.yu_eq18.{t_c:+d}C"]
+        assert row.kind == "check" and row.status == "reproduced"
+        by_hand = 10 ** (10 ** (9.597 - 3.773 * math.log10(t_c + 273.15))) - 0.932
+        assert row.published == pytest.approx(by_hand, rel=1e-12)
+    ranges = {p.name: p for p in rep.parameters if p.name.endswith(".range")}
+    assert ranges["krytox_143aa.range"].value == "-40 … 60"
+    assert ranges["pennzane_2000.range"].value == "-55 … 100"

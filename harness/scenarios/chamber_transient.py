@@ -56,7 +56,7 @@ ROW = 10.0  # s between kept rows
 TOLERANCE = 0.02  # within 2 % of the quasi-static value
 YU_HOLD = 30.0  # min: Yu's hold at each chamber temperature
 NING_CHANGES = (1.7, 0.9)  # N·mm: Ning's drop of the maximum, rise of the minimum
-FLAGS = ("unloaded", "locked", "overloaded")
+FLAGS = ("unloaded", "locked", "overloaded", "outside_lubricant_range")
 PARTS = ("housing", "shaft", "outer_ring", "inner_ring")
 RECORD = (
     *(f"thermal.{p}_temperature" for p in PARTS),
@@ -234,6 +234,9 @@ def _window_figures(tr: Trace, sel) -> dict:
         "qs unloaded [min]": float(np.sum(tr.qs_flags["unloaded"][sel])) * minutes,
         "locked [min]": float(np.sum(tr.flags["locked"][sel])) * minutes,
         "overloaded [min]": float(np.sum(tr.flags["overloaded"][sel])) * minutes,
+        "outside lubricant range [min]": (
+            float(np.sum(tr.flags["outside_lubricant_range"][sel])) * minutes
+        ),
     }
 
 
@@ -345,8 +348,9 @@ def _notes(coarse: bool) -> list[str]:
         f"stays within {TOLERANCE:.0%} of its quasi-static value there (Yu held {YU_HOLD:g} "
         "min); 'never': not within the run. torque after 30 min: its deviation then.",
         "flags [min]: time the transient bearing was unloaded (preload lost), locked (no "
-        "radial clearance left) or overloaded (4200 MPa); qs unloaded: the same "
-        "quasi-statically.",
+        "radial clearance left), overloaded (4200 MPa) or outside the range of its "
+        "lubricant's data (the viscosity held at its lower end below it); qs unloaded: the "
+        "same quasi-statically.",
         "Steps: gimbal loop 10 ms, its network 1 s; Ning's system 1 s (ssp/README.md); rows "
         f"every {ROW:g} s; {SOAK / 60:g} min soak with the loop running before the chamber "
         "moves."

@@ -27,7 +27,9 @@ from .common import ScenarioResult, Table, plateau_mean, system_path
 
 TEMPS_C = (-40.0, -20.0, 0.0, 20.0, 40.0, 60.0)  # Yu §3 chamber temperatures
 SPEED = 10.0 * DEG  # rad/s, the assumed test speed of the Yu reproduction
-FLAGS = ("overloaded", "locked", "unloaded")
+#: BearingFriction's flags, each a column of the rows (outside_lubricant_range: the chamber
+#: left the range of the lubricant's data, the viscosity held at its lower end below it)
+FLAGS = ("overloaded", "locked", "unloaded", "outside_lubricant_range")
 #: The gimbal's mounting variants (ssp/seeker_gimbal/variants: each a catalogue preset bound in
 #: full), after the system's own default, the yoke: what the design choice of the frame does.
 MOUNTINGS = {
@@ -227,7 +229,7 @@ def _mounting_table(runs, kt, plateau) -> Table:
             )
     return Table(
         f"Mounting variants side by side (forward, ±{SPEED / DEG:g} °/s): torque, preload, "
-        "overload and looseness",
+        "overload, looseness and the lubricant's range",
         list(rows[0]),
         rows,
     )

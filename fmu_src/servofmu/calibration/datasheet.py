@@ -43,6 +43,7 @@ from ..physics.parameter_table import LUBRICANT_FIELDS, spec
 from ..physics.presets import walther_c_si
 from ..physics.rolling_friction import MU_EHL
 from ..physics.units import CST, RPM, kelvin_to_celsius
+from ..physics.viscosity import T40, T100
 from .fit import UNREPLICATED_LIMIT
 
 #: The parameters a datasheet calibration writes, in the order of the parameter table.
@@ -217,6 +218,28 @@ def _parameters(cal: DatasheetCalibration, rig, visc) -> tuple[dict, dict]:
         "grease_f0": where,
         "grease_starting_ratio": where,
         "grease_reference_speed": f"{rig.source('speed')} ({cal.test})",
+    }
+    # the base oil's data: its two viscosities and the calibration's test temperatures (the
+    # set reproduces the datasheet's torque there); no pour point recorded (physics/viscosity.py)
+    coldest = min(t for t, *_ in cal.points)
+    lower = min(T40, coldest)
+    values |= {
+        "lubricant_minimum_temperature": lower,
+        "lubricant_maximum_temperature": T100,
+        "lubricant_viscosity_cold": 0.0,
+        "lubricant_cold_temperature": 0.0,
+    }
+    sources |= {
+        "lubricant_minimum_temperature": (
+            f"derived: the coldest {cal.test} datasheet point of {cal.lubricant} the grease term "
+            f"was calibrated on ({kelvin_to_celsius(coldest):g} °C), below its base oil's 40 °C "
+            "viscosity (no pour point recorded)"
+            if lower < T40
+            else "derived: its lower viscosity point, 40 °C (no pour point recorded)"
+        ),
+        "lubricant_maximum_temperature": "derived: its upper viscosity point, 100 °C",
+        "lubricant_viscosity_cold": "none: two viscosities known",
+        "lubricant_cold_temperature": "none: two viscosities known",
     }
     return values, sources
 

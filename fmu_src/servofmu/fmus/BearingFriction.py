@@ -24,9 +24,22 @@ contact, Biboulet & Houpert 2010, with ``lubricant_density``, + Yu's hysteresis 
 term (``grease_f0``, ``grease_starting_ratio``, ``grease_reference_speed``; 0 = off) that
 adds to running and breakaway torque. running_torque = hysteresis + spin + sliding + viscous +
 grease.
+
+The lubricant's viscosity is the ASTM D341 line through ``lubricant_viscosity_40``/``_100``, or
+Vogel's law through them and ``lubricant_viscosity_cold`` at ``lubricant_cold_temperature``
+(:mod:`servofmu.physics.viscosity`). Outside ``lubricant_minimum_temperature`` …
+``lubricant_maximum_temperature`` (the range of the lubricant's data) the output
+``outside_lubricant_range`` is set and one warning naming the temperature and the limit is
+logged each time the lubricant's temperature leaves the range; below it the viscosity is held
+at its value at the lower end. ``preload`` is never negative, ``axial_play`` is the gap of an
+unloaded pair, ``reverse_loaded`` says a bearing is loaded on the other flanks of its grooves
+(:func:`servofmu.physics.pair_state.preload_force`, :func:`~servofmu.physics.pair_state.axial_play`,
+:func:`~servofmu.physics.pair_state.state_flags`).
 """
 
 from __future__ import annotations
+
+from pythonfmu.enums import Fmi2Status
 
 from servofmu.fmus.part_temperatures import (
     TEMPERATURE_INPUTS,
@@ -78,8 +91,8 @@ def _outputs_of(fields, variables) -> tuple[str, ...]:
     return tuple(next(v.name for v in variables if v.field == f) for f in fields)
 
 
-def _flag(name, description, groups=_STATE):
-    return _out(name, description, None, kind="Boolean", groups=groups)
+def _flag(name, description, groups=_STATE, depends=_LOADS):
+    return _out(name, description, None, kind="Boolean", groups=groups, depends=depends)
 
 
 class BearingFriction(ServoSlave):
@@ -207,10 +220,17 @@ class BearingFriction(ServoSlave):
         ),
         _out(
             "preload",
-            "Axial force in the preload loop ((F_A + F_B)/2; tandem: half the thrust)",
+            "Preload: the mean axial force (F_A + F_B)/2 of the two bearings (tandem: half the "
+            "thrust the set carries), 0 where it is not a compression",
             "N",
         ),
-        _out("contact_angle", "Operating contact angle of bearing A", "rad", "deg"),
+        _out(
+            "contact_angle",
+            "Operating contact angle of bearing A (negative: its balls on the other flanks of "
+            "its grooves, reverse_loaded)",
+            "rad",
+            "deg",
+        ),
         _out(
             "radial_clearance",
             "Operating radial (diametral) clearance",
@@ -265,6 +285,28 @@ class BearingFriction(ServoSlave):
         _flag("unloaded", "Preload lost: a bearing of the pair carries no axial load (axial play)"),
         temperature_mode_parameter(),
         *(spec_parameter(p) for p in PARAMETERS),
+        # appended after the parameters, so that earlier value references stay
+        _flag(
+            "outside_lubricant_range",
+            "The lubricant's temperature lies outside the range of its data "
+            "(lubricant_minimum_temperature, lubricant_maximum_temperature): below it the "
+            "viscosity is held at its value at the lower end, above it extrapolated",
+            ("lubrication", "lubricant"),
+            _TEMPS,
+        ),
+        _out(
+            "axial_play",
+            "Axial play: the gap to first contact of the bearings that carry no axial load "
+            "(0 while both do; at zero load 2h - C, how far the loop is short of closing)",
+            "m",
+            "um",
+        ),
+        _flag(
+            "reverse_loaded",
+            "A bearing's balls pushed onto the other flanks of its grooves (axial force < 0: "
+            "the loop pulled apart, or a tandem set loaded against its thrust beyond it); "
+            "the model takes the grooves as symmetric there",
+        ),
     )
     _SPEED_OUTPUTS = _outputs_of(_SPEED_FIELDS, VARIABLES)  # those that move with speed alone
     _set_speed = staticmethod(ServoSlave.output_setter(_SPEED_OUTPUTS))
@@ -295,9 +337,32 @@ class BearingFriction(ServoSlave):
         temps = temperatures(self)
         point = (temps, self.axial_load, self.radial_load)
         if point != self._point:  # else only the speed changed: the speed terms alone
+            was_outside = self.outside_lubricant_range
             self._copy_state(self, self.model.update(temps, self.axial_load, self.radial_load))
             self._point = point
+            if self.outside_lubricant_range and not was_outside:
+                self._warn_lubricant_range(temps)
         self._set_speed(self, self.model.speed_outputs(self.speed))
+
+    def _warn_lubricant_range(self, temps):
+        """One warning each time the lubricant's temperature leaves the range of its data."""
+        t = temps if type(temps) is float else 0.5 * (temps[2] + temps[3])  # the rings' mean
+        lo, hi = self.lubricant_minimum_temperature, self.lubricant_maximum_temperature
+        below = t < lo
+        limit, what = (lo, "lower") if below else (hi, "upper")
+        then = (
+            "the viscosity is held at its value there"
+            if below
+            else "the viscosity law is extrapolated"
+        )
+        self.log(
+            f"{self.instance_name}: the lubricant's temperature {t:.2f} K ({t - 273.15:.1f} °C) "
+            f"is {'below' if below else 'above'} the {what} end of its data, "
+            f"lubricant_{'minimum' if below else 'maximum'}_temperature = {limit:.2f} K "
+            f"({limit - 273.15:.1f} °C); {then}, and outside_lubricant_range is set until it "
+            "returns",
+            status=Fmi2Status.warning,
+        )
 
 
 # every output is either in the model's PointState or moves with speed (compute copies those)

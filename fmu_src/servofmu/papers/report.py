@@ -125,9 +125,25 @@ MEASURED_TORQUE = Rule(
     "with literature constants alone (repeat measurements of such rigs scatter by 10–20 %)",
     rel=0.30,
 )
+VISCOSITY_FIT = Rule(
+    "viscosity fit",
+    "±3 % of a recorded viscosity that the lubricant's law is built from (through two or three "
+    "points exactly, through more by least squares in ln ν): the aim fixed for a fit through "
+    "every point, larger than the datasheets' rounding (three significant figures, ≤ 0.5 %)",
+    rel=0.03,
+)
 RANGE = Rule("range", "inside the published range, its bounds as printed")
 TREND = Rule("trend", "the published trend holds on the model's curve (the row states the test)")
-RULES = (FIT, ARITHMETIC, PAPER_MODEL, MEASURED_CHANGE, MEASURED_TORQUE, RANGE, TREND)
+RULES = (
+    FIT,
+    ARITHMETIC,
+    PAPER_MODEL,
+    MEASURED_CHANGE,
+    MEASURED_TORQUE,
+    VISCOSITY_FIT,
+    RANGE,
+    TREND,
+)
 
 
 @dataclass
@@ -388,9 +404,11 @@ def calibrated(
     coefficient: str,
     *,
     note: str = "",
+    rule: Rule = FIT,
 ) -> Row:
     """A number a coefficient was fitted on: ``calibrated`` when the fit reached it (rule
-    :data:`FIT`), else ``not-reproduced`` (the fit failed).
+    :data:`FIT`, or ``rule`` for a fit through more points than coefficients), else
+    ``not-reproduced`` (the fit failed).
 
     >>> calibrated("x", "q", 2.3, 2.3, "N", "s0 = 0.7").status
     'calibrated'
@@ -402,7 +420,7 @@ def calibrated(
         published,
         computed,
         unit,
-        FIT,
+        rule,
         note=_join(f"calibrated: {coefficient}.", note),
         miss_note="the fit did not reach its target",
     )

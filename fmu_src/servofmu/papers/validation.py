@@ -1,5 +1,6 @@
 """``servofmu paper validation``: the friction models against published measured torques
-that no coefficient of theirs was fitted to (issue 17).
+that no coefficient of theirs was fitted to, and every catalogue lubricant's law against the
+viscosities it was built from.
 
 Sources (data with provenance in ``physics/data/friction_measurements.toml`` and
 ``physics/data/grease_torques.toml``):
@@ -15,6 +16,11 @@ Sources (data with provenance in ``physics/data/friction_measurements.toml`` and
    model (:mod:`physics.rolling_friction`, catalogue constants of series 62) as a
    prediction; the grease term (:mod:`physics.grease_torque`) is calibrated on this point, so
    its rows are "calibrated", and its prediction is untested for want of a second point.
+
+3. Every viscosity the catalogue records for a lubricant (``physics/data/lubricants.toml``: ν40,
+   ν100 and further published points) against the lubricant's law (:mod:`physics.viscosity`:
+   the ASTM D341 line through two points, Vogel's law through three or more), with the
+   range of each lubricant's data; Yu's Krytox 143AA against his eq 18.
 
 Issue 17 asks for at least two independent oil-lubricated sources. The candidates searched for a
 second one, and why none could be used, are data (``[[searched]]`` in
@@ -40,13 +46,16 @@ from ..physics.grease_torque import (
     torque_test,
 )
 from ..physics.rolling_friction import MU_BOUNDARY, MU_EHL, skf_constants, skf_friction
-from ..physics.units import NMM, RPM, kelvin_to_celsius
+from ..physics.units import CST, NMM, RPM, kelvin_to_celsius
+from ..physics.viscosity import T40, T100, VogelViscosity, walther_from_reference
 from .report import (
     MEASURED_TORQUE,
+    VISCOSITY_FIT,
     Parameter,
     Report,
     Row,
     calibrated,
+    check,
     plot,
     prediction,
     trend,
@@ -227,6 +236,157 @@ def _balan_files(out_dir: Path, series, cols) -> list[str]:
     return [str(csv), str(png)]
 
 
+def _law_text(model) -> str:
+    """The law of a viscosity model and its constants, in words."""
+    if isinstance(model, VogelViscosity):
+        how = "through" if len(model.points) == 3 else "least squares in ln ν through"
+        return (
+            f"Vogel's law ln ν = a + b/(T − T∞) {how} its {len(model.points)} points (a = "
+            f"{model.a:.6g} ln(m²/s), b = {model.b:.6g} K, T∞ = {model.t_inf:.6g} K)"
+        )
+    return (
+        f"Walther/ASTM D341 lg lg(ν + c) = a − b·lg T through ν40 and ν100 (a = {model.a:.6g}, "
+        f"b = {model.b:.6g}, c = {model.c:g} cSt)"
+    )
+
+
+def _lubricant_points(rec) -> list[tuple[float, float, str]]:
+    """(T [K], ν [m²/s], source) of every viscosity a lubricant record holds, ν40 and ν100
+    first; those derived from another law's constants (Yu's a, b, c of Krytox 143AA) left
+    out."""
+    pts = [
+        (T40, rec.viscosity_40, rec.source("viscosity_40")),
+        (T100, rec.viscosity_100, rec.source("viscosity_100")),
+    ]
+    pts += [(t, nu, rec.source(f"viscosity_points[{i}]"))
+            for i, (t, nu) in enumerate(rec.viscosity_points)]  # fmt: skip
+    return [p for p in pts if "Walther a =" not in p[2]]
+
+
+def _viscosity_rows(out_dir: Path) -> tuple[list[Row], list[Parameter], list[str]]:
+    """Every recorded viscosity of every catalogue lubricant against the lubricant's law
+    (physics/viscosity.py): the law is built from these numbers, so each is a calibration row
+    at the viscosity-fit rule (±3 %); a cold point also gives what the ASTM D341 line through
+    ν40/ν100 alone gives there. Yu's Krytox 143AA (no published point) is checked against his
+    eq 18 at his chamber temperatures. The range of each lubricant's data is a parameter."""
+    rows, params, table = [], [], []
+    for key in catalog.keys("lubricants"):
+        rec = catalog.lubricant_record(key)
+        model = rec.viscosity
+        if model is None:
+            continue
+        line = walther_from_reference(rec.viscosity_40, rec.viscosity_100)
+        for t, nu, src in _lubricant_points(rec):
+            got = float(model.kinematic_viscosity(t))
+            t_c, err = kelvin_to_celsius(t), got / nu - 1.0
+            note = f"error {err:+.2%}; {src}"
+            if isinstance(model, VogelViscosity) and t < T40:
+                d341 = float(line.kinematic_viscosity(t))
+                note += (
+                    f"; the ASTM D341 line through ν40/ν100 alone: {d341 / CST:.5g} cSt "
+                    f"({d341 / nu - 1.0:+.1%})"
+                )
+            rows.append(
+                calibrated(
+                    f"viscosity.{key}.{round(t_c):+d}C",
+                    f"kinematic viscosity of {rec.name} at {t_c:g} °C",
+                    nu / CST,
+                    got / CST,
+                    "cSt",
+                    _law_text(model),
+                    note=note,
+                    rule=VISCOSITY_FIT,
+                )
+            )
+            table.append((key, t_c, nu / CST, got / CST, 100.0 * err))
+        params.append(
+            Parameter(
+                f"{key}.range",
+                f"{kelvin_to_celsius(model.lower_limit):g} … "
+                f"{kelvin_to_celsius(model.upper_limit):g}",
+                "degC",
+                f"{model.source('lower_limit')}; {model.source('upper_limit')}",
+            )
+        )
+    rows += _yu_viscosity_rows()
+    files = _viscosity_files(out_dir, table)
+    return rows, params, files
+
+
+def _yu_viscosity_rows() -> list[Row]:
+    """Yu 2017 eq 18 by hand at his chamber temperatures against the catalogue's Krytox 143AA
+    (his a, b, c through its ν40/ν100: the FMU's numbers)."""
+    model = catalog.lubricant("krytox_143aa")
+    out = []
+    for t_c in (-40, -20, 0, 20, 40, 60):
+        t = t_c + 273.15
+        yu = 10.0 ** (10.0 ** (9.597 - 3.773 * math.log10(t))) - 0.932  # cSt, Yu's eq 18
+        out.append(
+            check(
+                f"viscosity.krytox_143aa.yu_eq18.{t_c:+d}C",
+                f"kinematic viscosity of Krytox 143AA at {t_c} °C, Yu 2017 eq 18",
+                yu,
+                float(model.kinematic_viscosity(t)) / CST,
+                "cSt",
+                note="Yu's constants a = 9.597, b = 3.773, c = 0.932 cSt stay his; the "
+                "catalogue holds them as ν40, ν100 and c",
+            )
+        )
+    return out
+
+
+def _viscosity_files(out_dir: Path, table) -> list[str]:
+    """viscosity_points.csv (every recorded point, the law, the error) and viscosity_fits.png
+    (the lubricants with three or more points: the law over its range, the points, and the
+    ASTM D341 line through ν40/ν100 alone)."""
+    import csv
+
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    path = out_dir / "viscosity_points.csv"
+    with path.open("w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["lubricant", "temperature [degC]", "published [cSt]", "law [cSt]",
+                    "error [%]"])  # fmt: skip
+        for key, t_c, pub, got, err in table:
+            w.writerow([key, f"{t_c:.6g}", f"{pub:.9g}", f"{got:.9g}", f"{err:.6g}"])
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 4.6), dpi=110)
+    seen = set()
+    for key in catalog.keys("lubricants"):
+        rec = catalog.lubricant_record(key)
+        model = rec.viscosity
+        if not isinstance(model, VogelViscosity) or model.points in seen:
+            continue  # (a grease whose base oil is plotted already)
+        seen.add(model.points)
+        top = min(model.upper_limit, 150.0 + 273.15)
+        t = np.linspace(model.lower_limit, top, 200)
+        line = walther_from_reference(rec.viscosity_40, rec.viscosity_100)
+        (curve,) = ax.semilogy(t - 273.15, model.kinematic_viscosity(t) / CST, label=key)
+        ax.semilogy(t - 273.15, line.kinematic_viscosity(t) / CST, "--",
+                    color=curve.get_color(), lw=0.8)  # fmt: skip
+        pts = np.array(model.points)
+        ax.semilogy(pts[:, 0] - 273.15, pts[:, 1] / CST, "o", color=curve.get_color())
+    ax.set_xlabel("temperature [°C]")
+    ax.set_ylabel("kinematic viscosity [cSt]")
+    ax.set_title(
+        "Vogel's law through every point (lines, over each lubricant's range), the\n"
+        "ASTM D341 line through ν40/ν100 alone (dashed), published points (markers)",
+        fontsize=9,
+    )
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    png = out_dir / "viscosity_fits.png"
+    fig.savefig(png)
+    plt.close(fig)
+    return [str(path), str(png)]
+
+
 def _grease_rows() -> tuple[list[Row], list[Parameter]]:
     key = "molykote_g1074"
     label = "Molykote G-1074"
@@ -394,7 +554,8 @@ def reproduce(out_dir) -> Report:
     )
     rows, params, files = _balan_rows(out_dir)
     g_rows, g_params = _grease_rows()
-    rep.rows = [*rows, _second_source_row(), *g_rows]
-    rep.parameters = params + g_params
-    rep.files = files
+    v_rows, v_params, v_files = _viscosity_rows(out_dir)
+    rep.rows = [*rows, _second_source_row(), *g_rows, *v_rows]
+    rep.parameters = params + g_params + v_params
+    rep.files = files + v_files
     return rep

@@ -11,7 +11,8 @@ Where each part lives (Yu 2017 §1–3; Ning §1–2):
 - :mod:`.continuation` — the same equations solved per step from the previous step's
   solution, on floats;
 - here, :class:`BearingModel`: the per-step evaluation an FMU calls, continuation first and
-  the exact path when the warm start fails (a tandem pair: the exact path every step).
+  a cold start on the same floats when the warm start fails, and the exact path when that
+  fails too.
 
 The names of :mod:`.pair` and :mod:`.pair_state` are re-exported here, so that
 ``from servofmu.physics.bearing import BearingPair, thermal_state`` keeps working.
@@ -113,10 +114,11 @@ class BearingModel:
     radial load), as floats: the path of the BearingFriction FMU.
 
     The thermal and load state is solved by continuation from the previous call
-    (:class:`continuation.PairSolver`); the exact path (:func:`thermal_state`,
-    :func:`load_state`) solves the first call, and any call whose warm start fails, and seeds
-    the continuation again. A tandem pair (:func:`is_tandem`) has no continuation: the exact
-    path solves every call whose temperatures or loads changed. A call whose temperatures and
+    (:class:`continuation.PairSolver`); the first call, and any call whose warm start fails,
+    is solved from scratch on the same floats (:meth:`continuation.PairSolver.start`), and
+    the exact path (:func:`thermal_state`, :func:`load_state`) solves a call that fails too and
+    seeds the continuation again (a tandem pair, :func:`is_tandem`, alike: its offsets move
+    together, :func:`continuation.tandem_step`). A call whose temperatures and
     loads equal the previous call's reuses its state (:class:`~.pair_state.PointState`): a
     change of speed alone costs only the speed terms; a call whose temperatures equal the
     previous call's reuses the thermal state.
@@ -124,7 +126,9 @@ class BearingModel:
     Attributes
     ----------
     steps : calls that solved a new state
-    exact_steps : of those, the ones solved by the exact path
+    cold_starts : of those, the ones the continuation solved from scratch
+        (:meth:`continuation.PairSolver.start`: the first call, or a failed warm start)
+    exact_steps : of those, the ones solved by the exact path (a failed cold start)
     """
 
     def __init__(self, pair: BearingPair):
@@ -135,6 +139,7 @@ class BearingModel:
         self._th = None  # thermal state (floats) at self._temps
         self._point: PointState | None = None
         self.steps = 0
+        self.cold_starts = 0
         self.exact_steps = 0
 
     # ---------------------------------------------------------------- state
@@ -188,11 +193,11 @@ class BearingModel:
         return PointState.exact(self.pair, th_exact, ls)
 
     def _solve(self, temps, axial_load: float, radial_load: float) -> PointState:
-        if is_tandem(self.pair):  # no continuation for a tandem pair: every step is exact
-            self.exact_steps += 1
-            return self._exact(None, temps, axial_load, radial_load)
         th = self._th if temps == self._temps else thermal_floats(self.solver.c, temps)
         point = self.solver.solve(th, axial_load, radial_load)
+        if point is None:  # no last solution, or the warm start failed: a cold start
+            self.cold_starts += 1
+            point = self.solver.start(th, axial_load, radial_load)
         if point is None:
             self.exact_steps += 1
             point = self._exact(th, temps, axial_load, radial_load)

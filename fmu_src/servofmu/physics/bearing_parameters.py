@@ -68,7 +68,7 @@ from .presets import (
 )
 from .rolling_friction import SkfConstants
 from .units import CST
-from .viscosity import walther_from_reference
+from .viscosity import T40, T100, viscosity_model
 
 __all__ = [
     "BEARING_FIELDS",
@@ -195,7 +195,8 @@ def _checked(p: Mapping[str, object]) -> dict[str, object]:
 def parameter_problems(p: Mapping[str, object]) -> list[str]:
     """Every inconsistency of a parameter set (after :func:`_checked`), each naming the
     values: a geometry that cannot be a bearing (:func:`geometry.bearing_geometry_problems`),
-    seats that do not surround the rings, ν100 ≥ ν40, a spring preload without a stiffness or
+    seats that do not surround the rings, ν100 ≥ ν40, a cold viscosity no Vogel law falls
+    through, a lubricant range that is empty, a spring preload without a stiffness or
     compression, a force preload without a force, a tandem pair preloaded by a shim, a yoke
     without arms, a loop with nothing in it.
 
@@ -231,6 +232,8 @@ def parameter_problems(p: Mapping[str, object]) -> list[str]:
                 f"{name} = {p[name]!r} m2/s with lubricant_walther_c = {c!r} m2/s gives "
                 f"ν + c = {(p[name] + c) / CST:.4g} cSt; Walther's lg lg(ν + c) needs > 1 cSt"
             )
+    if p["lubrication"] == "grease":
+        found += _lubricant_problems(p)
     method = p["preload_method"]
     if method == "spring":
         for name, unit in (("spring_stiffness", "N/m"), ("spring_compression", "m")):
@@ -253,6 +256,56 @@ def parameter_problems(p: Mapping[str, object]) -> list[str]:
             f"oil's viscosity), not {p['lubrication']}"
         )
     return found
+
+
+def _lubricant_problems(p: Mapping[str, object]) -> list[str]:
+    """The cold point and the range of the lubricant's data, each problem naming the values."""
+    found = []
+    lo, hi = p["lubricant_minimum_temperature"], p["lubricant_maximum_temperature"]
+    if not lo < hi:
+        found.append(
+            f"lubricant_maximum_temperature = {hi!r} K must lie above "
+            f"lubricant_minimum_temperature = {lo!r} K"
+        )
+    nu, t = p["lubricant_viscosity_cold"], p["lubricant_cold_temperature"]
+    if nu != 0.0 and (not t > 0.0 or min(abs(t - T40), abs(t - T100)) < 1.0):
+        found.append(
+            f"lubricant_cold_temperature = {t!r} K must be > 0 K and at least 1 K from 313.15 "
+            f"and 373.15 K (lubricant_viscosity_cold = {nu!r} m2/s is given)"
+        )
+        return found
+    nu40, nu100, c = (p[n] for n in ("lubricant_viscosity_40", "lubricant_viscosity_100",
+                                      "lubricant_walther_c"))  # fmt: skip
+    if found or not (nu100 < nu40 and nu100 + c > CST):
+        return found  # (ν100 ≥ ν40 and ν + c ≤ 1 cSt are named by parameter_problems)
+    try:
+        _viscosity(p)
+    except ValueError as err:
+        cold = (
+            f"lubricant_viscosity_cold = {nu!r} m2/s at lubricant_cold_temperature = {t!r} K, "
+            if nu != 0.0
+            else f"lubricant_walther_c = {p['lubricant_walther_c']!r} m2/s, "
+        )
+        found.append(
+            f"{cold}lubricant_viscosity_40 = {p['lubricant_viscosity_40']!r} and "
+            f"lubricant_viscosity_100 = {p['lubricant_viscosity_100']!r} m2/s with "
+            f"lubricant_minimum_temperature = {lo!r} K: {err}"
+        )
+    return found
+
+
+def _viscosity(p: Mapping[str, object]):
+    """The viscosity model of parameter set ``p`` (:func:`.viscosity.viscosity_model`)."""
+    nu_cold = p["lubricant_viscosity_cold"]
+    return viscosity_model(
+        p["lubricant_viscosity_40"],
+        p["lubricant_viscosity_100"],
+        p["lubricant_walther_c"] / CST,
+        (p["lubricant_cold_temperature"], nu_cold) if nu_cold > 0.0 else None,
+        key="parameters",
+        lower_limit=p["lubricant_minimum_temperature"],
+        upper_limit=p["lubricant_maximum_temperature"],
+    )
 
 
 def friction_from_parameters(p: Mapping[str, object]) -> FrictionModel:
@@ -425,17 +478,7 @@ def pair_from_parameters(p: Mapping[str, object]) -> BearingPair:
         assembly_preload=preload,
         arrangement=p["arrangement"],
     )
-    grease = p["lubrication"] == "grease"
-    lubricant = (
-        walther_from_reference(
-            p["lubricant_viscosity_40"],
-            p["lubricant_viscosity_100"],
-            c=p["lubricant_walther_c"] / CST,
-            key="parameters",
-        )
-        if grease
-        else None
-    )
+    lubricant = _viscosity(p) if p["lubrication"] == "grease" else None
     return BearingPair(
         bearing=bearing,
         mounting=mounting,

@@ -7,6 +7,7 @@ convert to SI and keep ``"kind: ref"`` as the provenance of each field.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import tomllib
 from importlib import resources
@@ -27,7 +28,9 @@ from .units import MM, UM, to_si
 from .viscosity import (
     T40,
     T100,
+    ViscosityRange,
     WaltherViscosity,
+    vogel_from_points,
     walther_from_reference,
     walther_from_two_points,
 )
@@ -315,10 +318,11 @@ def _quantities(entry: dict, owner: str, skip=()) -> tuple[dict, dict]:
 
 
 def _walther(key: str, entry: dict, v: dict, prov: dict) -> WaltherViscosity:
-    """The Walther model of a lubricant entry, always as the ASTM D341 fit through ν40 and
-    ν100 (:func:`viscosity.walther_from_reference`, the FMU's parameters): the entry gives
-    ν40/ν100, or a, b (and c), or two points t1/nu1, t2/nu2, from which ν40 and ν100 follow
-    first. c defaults to ASTM D341's 0.7 cSt."""
+    """The ASTM D341 model of a lubricant entry's two reference viscosities, always as the fit
+    through ν40 and ν100 (:func:`viscosity.walther_from_reference`, the FMU's parameters): the
+    entry gives ν40/ν100, or a, b (and c), or two points t1/nu1, t2/nu2, from which ν40 and
+    ν100 follow first. c defaults to ASTM D341's 0.7 cSt. Without a range (see
+    :func:`_viscosity_model`)."""
     if "c" in v:
         c_cst, c_src = v["c"] / to_si(1.0, "cSt"), prov["c"]
     else:
@@ -348,6 +352,54 @@ def _walther(key: str, entry: dict, v: dict, prov: dict) -> WaltherViscosity:
     return WaltherViscosity(key=key, name=name, a=fit.a, b=fit.b, c=c_cst, provenance=prov_fit)
 
 
+def _reference_points(v: dict, nu: dict) -> list[tuple[float, float]]:
+    """The entry's own two reference (T [K], ν [m²/s]) points: t1/nu1, t2/nu2 when it gives
+    them, else 40 and 100 °C with ``nu`` (:func:`_reference_viscosities`)."""
+    if "viscosity_40" not in v and all(f in v for f in ("t1", "nu1", "t2", "nu2")):
+        return [(v["t1"], v["nu1"]), (v["t2"], v["nu2"])]
+    return [(T40, nu["viscosity_40"]), (T100, nu["viscosity_100"])]
+
+
+def _range(v: dict, prov: dict, temperatures) -> tuple[float, float, str, str]:
+    """(lower, upper limit [K], their sources) of a lubricant's data (see
+    :mod:`.viscosity`): lower = the lowest of its pour point, its ``minimum_temperature``
+    (the lowest temperature of its data where no pour point is published) and the
+    temperatures of its viscosity points; upper = its ``maximum_temperature``, else its
+    highest viscosity point."""
+    low = [(t, "the lowest viscosity point") for t in temperatures]
+    for field, what in (
+        ("pour_point", "pour point"),
+        ("minimum_temperature", "minimum_temperature"),
+    ):
+        if field in v:
+            low.append((v[field], f"{what} ({prov[field]})"))
+    lower, lo_src = min(low)
+    if "maximum_temperature" in v:
+        upper, hi_src = (
+            v["maximum_temperature"],
+            f"maximum_temperature ({prov['maximum_temperature']})",
+        )
+    else:
+        upper, hi_src = max(temperatures), "the highest viscosity point"
+    return lower, upper, f"derived: {lo_src}", f"derived: {hi_src}"
+
+
+def _viscosity_model(walther: WaltherViscosity, v: dict, prov: dict, nu: dict, points):
+    """The viscosity model of a fluid lubricant entry (:mod:`.viscosity`), with its range: the
+    ASTM D341 model of its reference pair (``walther``, :func:`_walther`) when it has no
+    further ``viscosity_points``, else Vogel's law through the reference pair and every point
+    (a lubricant's published points are used, not only checked)."""
+    ref = _reference_points(v, nu)
+    all_points = [*ref, *points]
+    lower, upper, lo_src, hi_src = _range(v, prov, [t for t, _ in all_points])
+    limits = {"lower_limit": lower, "upper_limit": upper}
+    range_prov = (("lower_limit", lo_src), ("upper_limit", hi_src))
+    if not points:
+        return dataclasses.replace(walther, provenance=walther.provenance + range_prov, **limits)
+    model = vogel_from_points(all_points, walther.key, walther.name, **limits)
+    return dataclasses.replace(model, provenance=model.provenance + range_prov)
+
+
 def _named(where: str, err: Exception) -> ValueError:
     """``err`` as a ValueError whose message starts with ``where`` (the entry it is about)."""
     msg = err.args[0] if isinstance(err, KeyError) else str(err)
@@ -372,10 +424,11 @@ def _torque_test(key: str, i: int, spec: dict) -> TorqueTest:
         raise _named(where, err) from None
 
 
-def _reference_viscosities(key: str, visc: WaltherViscosity, v: dict, prov: dict) -> dict:
-    """ν at 40 and 100 °C [m²/s]: the entry's, or its model's (provenance set by _walther)."""
+def _reference_viscosities(walther: WaltherViscosity, v: dict) -> dict:
+    """ν at 40 and 100 °C [m²/s]: the entry's, or its Walther model's (provenance set by
+    :func:`_walther`)."""
     return {
-        field: v[field] if field in v else float(visc.kinematic_viscosity(t))
+        field: v[field] if field in v else float(walther.kinematic_viscosity(t))
         for field, t in (("viscosity_40", T40), ("viscosity_100", T100))
     }
 
@@ -428,9 +481,12 @@ def _lubricant_record(key: str, entry: dict) -> LubricantRecord:
         raise ValueError(f"model = {model!r} is not walther or solid")
     v, prov = _quantities(entry, f"lubricant {key!r}")
     solid = model == "solid"
-    visc = None if solid else _walther(key, entry, v, prov)
-    nu = {} if solid else _reference_viscosities(key, visc, v, prov)
     points = _viscosity_points(key, entry, prov)
+    visc, nu = None, {}
+    if not solid:
+        walther = _walther(key, entry, v, prov)
+        nu = _reference_viscosities(walther, v)
+        visc = _viscosity_model(walther, v, prov, nu, points)
     torques = tuple(
         _torque_test(key, i, t) for i, t in enumerate(entry.get("low_temperature_torque", []))
     )
@@ -447,6 +503,8 @@ def _lubricant_record(key: str, entry: dict) -> LubricantRecord:
         density=v.get("density"),
         density_temperature=v.get("density_temperature"),
         pour_point=v.get("pour_point"),
+        minimum_temperature=v.get("minimum_temperature"),
+        maximum_temperature=v.get("maximum_temperature"),
         oil_class=entry.get("oil_class", ""),
         low_temperature_torque=torques,
         provenance=tuple(sorted(prov.items())),
@@ -477,7 +535,7 @@ def lubricant_record(key: str) -> LubricantRecord:
 
 
 @functools.cache
-def lubricant(key: str) -> WaltherViscosity | None:
+def lubricant(key: str) -> ViscosityRange | None:
     """The viscosity model of lubricant ``key``; ``None`` for a solid (dry-film) lubricant.
 
     Parameters

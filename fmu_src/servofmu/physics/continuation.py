@@ -7,8 +7,9 @@ change a little from one communication step to the next, so this module solves t
 equations from the previous step's solution:
 
 - the thermal state (ring growth, Lamé fits, clearance, loop closure, viscosity) is closed
-  form: the equations of :func:`fits.mounted_geometry`, :func:`preload.loop_interference` and
-  :func:`viscosity.walther_kinematic_viscosity`, written out on floats (:func:`thermal_floats`);
+  form: the equations of :func:`fits.mounted_geometry` and :func:`preload.loop_interference`
+  written out on floats, and the lubricant's own law on floats
+  (:meth:`viscosity.ViscosityRange.operating_viscosity_at`) (:func:`thermal_floats`);
 - the pair's offsets and radial displacements x = (p, z, δr_A, δr_B) [m] solve the conditions
   of :func:`preload.pair_equilibrium` (F_A − F_B = F_ext, Fr_A = Fr_B = F_r/2,
   (F_A + F_B)/2 = k·(C − 2p)) by Newton's method with the analytic Jacobian, the contact
@@ -72,8 +73,8 @@ from .friction import _heathcote, _hysteresis, _spin
 from .friction_models import skf_loads
 from .hertz import ellipticity
 from .materials import reduced_compliance
-from .pair import assembly_geometry, effective_shim, loop_stiffness
-from .pair_state import PointState, rest_torque, state_flags
+from .pair import assembly_geometry, effective_shim, is_tandem, loop_stiffness, tandem_preload
+from .pair_state import PointState, axial_play, preload_force, rest_torque, state_flags
 from .preload import ROLES
 
 #: Relative change of a contact's ellipticity from its anchor beyond which the anchor is
@@ -90,6 +91,13 @@ GAMMA_SPAN = 5e-5
 INV_F_SPAN = 3e-9
 #: Newton iterations of one step before the exact path takes over.
 MAX_ITERATIONS = 12
+#: Newton iterations of each stage of a cold start (:meth:`PairSolver.start`): from the loop
+#: closure's half to a barely loaded contact the convergence is linear (ratio 1/3, Hertz's
+#: Q ∝ δ^1.5) until the quadratic phase.
+START_ITERATIONS = 60
+#: The smallest share of the external load a cold start adds in one stage (it halves a stage
+#: whose Newton's method fails, down to this).
+START_SMALLEST_STAGE = 1.0 / 256.0
 #: Newton stops at the first point whose next correction is below this fraction of the
 #: curvature distance A (≈ 1e-16 m for the catalogue bearings, the exact path's tolerance).
 _TOLERANCE = 1e-12
@@ -183,12 +191,21 @@ class PairConstants:
         self.closure_housing = sum(k for k, part in terms if part == "housing")
         self.closure_shaft = sum(k for k, part in terms if part == "shaft")
         self.closure_rings = sum(k for k, part in terms if part not in ("housing", "shaft"))
-        self.closure0 = 2.0 * float(assembly_geometry(pair).first_contact_offset) + float(
-            effective_shim(pair)
+        # a tandem pair: B's mismatch d(T) along the thrust instead of the loop closure (0 at
+        # T0, :func:`pair.loop_closure`), and its preload spring's k_s and thrust T
+        self.tandem = is_tandem(pair)
+        self.closure0 = (
+            0.0
+            if self.tandem
+            else 2.0 * float(assembly_geometry(pair).first_contact_offset)
+            + float(effective_shim(pair))
         )
-        self.loop_stiffness = float(loop_stiffness(pair))
+        self.spring_stiffness, self.thrust = tandem_preload(pair) if self.tandem else (0.0, 0.0)
+        self.loop_stiffness = self.spring_stiffness if self.tandem else float(loop_stiffness(pair))
         visc = pair.lubricant
-        self.walther = None if visc is None else (visc.a, visc.b, visc.c)
+        # the lubricant's law on floats, held below its range, and the range (:mod:`.viscosity`)
+        self.viscosity = None if visc is None else visc.operating_viscosity_at
+        self.lubricant_range = (0.0, _INF) if visc is None else (visc.lower_limit, visc.upper_limit)
         self.coefficients = pair.coefficients
         self.lubrication = pair.lubrication
         self.solid = pair.lubrication == "solid"
@@ -209,6 +226,7 @@ class Thermal:
         "closure",
         "curvature_distance",
         "dw_third",
+        "first_contact_offset",
         "gamma_scale",
         "inner_fit_pressure",
         "inner_groove_radius",
@@ -219,8 +237,10 @@ class Thermal:
         "outer_fit_pressure",
         "outer_groove_radius",
         "outer_interference",
+        "outside_lubricant_range",
         "pitch_diameter",
         "radial_centre_distance",
+        "rest_offset",
         "rest_torque",
         "temperatures",
         "torque_coefficients",
@@ -236,7 +256,8 @@ class Thermal:
 def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -> Thermal:
     """Thermal state at the parts' temperatures ``temps`` = (housing, shaft, outer ring, inner
     ring) [K]: the equations of :func:`fits.mounted_geometry` (Yu 2017 eq 10–13),
-    :func:`preload.loop_interference` (eq 14–15) and Walther's viscosity (eq 18) on floats.
+    :func:`preload.loop_interference` (eq 14–15) and the lubricant's viscosity (eq 18, or
+    Vogel's law; :mod:`.viscosity`) on floats, with the lubricant's range flag.
 
     Parameters
     ----------
@@ -296,7 +317,7 @@ def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -
     dm = 0.5 * (d_groove_i + d_groove_o)
     th.temperatures = temps
     th.ball_diameter, th.dw_third = dw, _cbrt(dw)
-    th.rest_torque = th.torque_coefficients = None  # evaluated when first needed
+    th.rest_torque = th.torque_coefficients = th.rest_offset = None  # when first needed
     th.pitch_diameter = dm
     th.inner_groove_radius, th.outer_groove_radius = r_i, r_o
     th.inv_f_inner, th.inv_f_outer = dw / r_i, dw / r_o
@@ -307,11 +328,11 @@ def thermal_floats(c: PairConstants, temps: tuple[float, float, float, float]) -
     th.closure = c.closure0 - (
         c.closure_housing * (t_h - t0) + c.closure_shaft * (t_s - t0) + c.closure_rings * (t_b - t0)
     )
-    if c.walther is None:
-        th.kinematic_viscosity = 0.0
-    else:
-        wa, wb, wc = c.walther
-        th.kinematic_viscosity = (10.0 ** (10.0 ** (wa - wb * math.log10(t_b))) - wc) * 1e-6
+    th.kinematic_viscosity = 0.0 if c.viscosity is None else c.viscosity(t_b)
+    lo, hi = c.lubricant_range
+    th.outside_lubricant_range = not lo <= t_b <= hi
+    hp = 0.5 * min(max(pd, 0.0), 2.0 * a)  # geometry.first_contact_offset on floats
+    th.first_contact_offset = _sqrt(max(a * a - (a - hp) * (a - hp), 0.0))
     th.outer_fit_pressure, th.inner_fit_pressure = p_o, p_i
     th.outer_interference, th.inner_interference = delta_o, delta_i
     return th
@@ -765,6 +786,56 @@ def newton_step(ra: tuple, rb: tuple, r1, r2, r3, r4, k_loop: float, radial: boo
     return dp, dz, 0.0, 0.0
 
 
+def tandem_step(ra: tuple, rb: tuple, r1, r2, r3, k_spring: float, radial: bool):
+    """Newton correction (dp, 0, dδr_A, dδr_B) [m] of a tandem pair's equilibrium
+    (:func:`preload.tandem_equilibrium`: both offsets move together, a_B = a_A + d) from the
+    bearings' :func:`ring_point` results and the residuals r1 = F_A + F_B + k_s·a_A − T −
+    F_ext, r2 = Fr_A − F_r/2, r3 = Fr_B − F_r/2 [N]: the radial rows eliminated as in
+    :func:`newton_step`, u = (−r1 + t_A·r2 + t_B·r3)/(e_A + e_B + k_s). None when singular.
+
+    Parameters
+    ----------
+    ra, rb : tuple
+        :func:`ring_point` results of bearings A and B.
+    r1, r2, r3 : float
+        Residuals [N].
+    k_spring : float
+        The preload spring's stiffness k_s [N/m] (0: a constant force).
+    radial : bool
+        Whether the radial rows are solved.
+
+    Returns
+    -------
+    tuple or None
+        (dp, 0, dδr_A, dδr_B) [m], or None when singular.
+
+    Examples
+    --------
+    Axial only: u = −r1/(e_A + e_B + k_s), by hand 3 N / (3 N/µm) = 1 µm:
+
+    >>> ra = (0.0, 0.0, 2e6, 0.0, 0.0, 0.0, 2e6, 1e-6)  # dFa/da = 2 N/µm
+    >>> rb = (0.0, 0.0, 1e6, 0.0, 0.0, 0.0, 1e6, 1e-6)
+    >>> round(tandem_step(ra, rb, -3.0, 0.0, 0.0, 0.0, False)[0] * 1e6, 9)  # µm
+    1.0
+    """
+    _, _, a11, a12, a21, a22, _, _ = ra
+    _, _, b11, b12, b21, b22, _, _ = rb
+    g = -r1
+    if radial:
+        if a22 == 0.0 or b22 == 0.0:
+            return None
+        ta, tb = a12 / a22, b12 / b22
+        a11, b11 = a11 - ta * a21, b11 - tb * b21
+        g += ta * r2 + tb * r3
+    det = a11 + b11 + k_spring
+    if not det > 0.0:
+        return None
+    u = g / det
+    if radial:
+        return u, 0.0, (-r2 - a21 * u) / a22, (-r3 - b21 * u) / b22
+    return u, 0.0, 0.0, 0.0
+
+
 def _parallel(d1, d0) -> float:
     """θ with d1 ≈ θ·d0 for the 4-vectors d1 and d0 when they are parallel (cosine above
     1 − 1e-6) and point the same way; else 0."""
@@ -894,9 +965,41 @@ class PairSolver:
         self.mode, self.jacobian, self.secant = mode, None, None
 
     # ---------------------------------------------------------------- solve
-    def solve(self, th: Thermal, axial_load: float, radial_load: float) -> PointState | None:
+    def start(self, th: Thermal, axial_load: float, radial_load: float) -> PointState | None:
+        """A first solution without the exact path: the pair at zero external load (Newton's
+        method on the symmetric offset p of 2p + F(p)/k = C from p = C/2, F one bearing's
+        axial force: it converges monotonically, F being odd and convex beyond first
+        contact), then the external loads added in stages, each solved by :meth:`solve` (its
+        predictor and Newton's method) and halved when that fails. The step's
+        :class:`~.pair_state.PointState`, or None (the solver reset: the caller solves
+        exactly)."""
+        half = 0.5 * th.closure  # a tandem pair: a_A = 0, a_B = d
+        self.seed(th, (*th.temperatures, 0.0, 0.0), (half, -half if self.c.tandem else 0.0))
+        point = self.solve(th, 0.0, 0.0, START_ITERATIONS)
+        done, stage = 0.0, 1.0
+        while point is not None and done < 1.0:
+            share = min(1.0, done + stage)
+            nxt = self.solve(th, share * axial_load, share * radial_load, START_ITERATIONS)
+            if nxt is None:
+                stage *= 0.5
+                if stage < START_SMALLEST_STAGE:
+                    point = None
+                continue
+            point, done, stage = nxt, share, 2.0 * stage
+        if point is None:
+            self.reset()
+        return point
+
+    def solve(
+        self,
+        th: Thermal,
+        axial_load: float,
+        radial_load: float,
+        iterations: int = MAX_ITERATIONS,
+    ) -> PointState | None:
         """The pair at the thermal state ``th`` under ``axial_load`` (pressing A) and
-        ``radial_load`` [N]: the step's :class:`~.pair_state.PointState`, or None."""
+        ``radial_load`` [N] from the last solution, in at most ``iterations`` Newton
+        iterations per anchor round: the step's :class:`~.pair_state.PointState`, or None."""
         if self.x is None:
             return None
         mode = "axial" if radial_load == 0.0 else "radial"
@@ -905,16 +1008,15 @@ class PairSolver:
         inputs = (*th.temperatures, axial_load, radial_load)
         x = self._predict(inputs)
         for _ in range(MAX_ANCHOR_ROUNDS):
-            sol = self._newton(th, axial_load, radial_load, x)
+            sol = self._newton(th, axial_load, radial_load, x, iterations)
             if sol is None and x is not self.x:  # the predictor overshot: from the last step
                 x = self.x
-                sol = self._newton(th, axial_load, radial_load, x)
+                sol = self._newton(th, axial_load, radial_load, x, iterations)
             if sol is None:
                 return None
             x, ka, kb, jac = sol
-            point, redo = self._point(
-                th, x, ka, kb, axial_load == 0.0 and mode == "axial", radial_load
-            )
+            symmetric = axial_load == 0.0 and mode == "axial" and not self.c.tandem
+            point, redo = self._point(th, x, ka, kb, symmetric, radial_load)
             if not redo:
                 self._advance(x, inputs, jac)
                 return point
@@ -927,6 +1029,9 @@ class PairSolver:
         if d_ext == 0.0 and d_r == 0.0:
             return (0.0, 0.0, 0.0, 0.0)
         half = -0.5 * d_r
+        if self.c.tandem:
+            return tandem_step(*jac, -d_ext, half, half, self.c.spring_stiffness,
+                               self.mode == "radial")  # fmt: skip
         return newton_step(
             *jac, -d_ext, half, half, 0.0, self.c.loop_stiffness, self.mode == "radial"
         )
@@ -972,12 +1077,14 @@ class PairSolver:
                 )
         self.x, self.inputs, self.jacobian = x, inputs, jac
 
-    def _newton(self, th: Thermal, f_ext: float, f_r: float, x0):
-        """Newton's method from ``x0`` = (p, z, δr_A, δr_B) [m]: the solution, the bearings'
-        output stiffnesses [N/m] and their Jacobians there (the balls hold its loads), or None
-        (see :func:`newton_step`).
+    def _newton(self, th: Thermal, f_ext: float, f_r: float, x0, iterations=MAX_ITERATIONS):
+        """Newton's method from ``x0`` = (p, z, δr_A, δr_B) [m] in at most ``iterations``
+        iterations: the solution, the bearings' output stiffnesses [N/m] and their Jacobians
+        there (the balls hold its loads), or None (see :func:`newton_step`).
         Without external load z = 0 and B mirrors A (the exact path's symmetric solution)."""
         c = self.c
+        if c.tandem:
+            return self._newton_tandem(th, f_ext, f_r, x0, iterations)
         k_loop, closure = c.loop_stiffness, th.closure
         rigid = k_loop == _INF
         tol = _TOLERANCE * th.curvature_distance
@@ -991,13 +1098,20 @@ class PairSolver:
             z = 0.0
         ring_a, ring_b = self.rings
         half = 0.5 * f_r
-        for _ in range(MAX_ITERATIONS):
+        for _ in range(iterations):
             ra = ring_point(th, c, p + z, da, ring_a)
             rb = ra if symmetric else ring_point(th, c, p - z, db, ring_b)
             r4 = 0.0 if rigid else 2.0 * p + 0.5 * (ra[0] + rb[0]) / k_loop - closure
             if symmetric:
                 dp = 0.0 if rigid else -r4 / (2.0 + ra[2] / k_loop)
                 dz = dda = ddb = 0.0
+            elif not radial and ra[2] == 0.0 and rb[2] == 0.0:
+                # no ball of either bearing touches (axial play): move the shaft along the
+                # load until its first contact carries about the load, and go on
+                z = self._engage(th, p, f_ext)
+                if z is None:
+                    return None
+                continue
             elif radial and (ra[5] == 0.0 or rb[5] == 0.0):
                 # a bearing with no ball in contact has no radial stiffness: move it radially
                 # until its ball nearest the load's direction carries about F_r/2, and go on
@@ -1020,6 +1134,88 @@ class PairSolver:
             p, z, da, db = p + dp, z + dz, da + dda, db + ddb
         return None
 
+    def _newton_tandem(self, th: Thermal, f_ext: float, f_r: float, x0, iterations):
+        """:meth:`_newton` of a tandem pair: a_A = p + z, a_B = p − z with z = −d/2 held
+        (the mismatch d of the thermal state), Newton's method on p (and the radial
+        displacements) by :func:`tandem_step`."""
+        c = self.c
+        tol = _TOLERANCE * th.curvature_distance
+        floor = _ROUNDING * th.curvature_distance
+        p, _, da, db = x0
+        z = -0.5 * th.closure
+        radial = f_r != 0.0
+        ring_a, ring_b = self.rings
+        half = 0.5 * f_r
+        ks, target = c.spring_stiffness, c.thrust + f_ext
+        for _ in range(iterations):
+            ra = ring_point(th, c, p + z, da, ring_a)
+            rb = ring_point(th, c, p - z, db, ring_b)
+            if radial and (ra[5] == 0.0 or rb[5] == 0.0):
+                da = self._touch(th, p + z, half, ring_a) if ra[5] == 0.0 else da
+                db = self._touch(th, p - z, half, ring_b) if rb[5] == 0.0 else db
+                if da is None or db is None:
+                    return None
+                continue
+            r1 = ra[0] + rb[0] + ks * (p + z) - target
+            if not radial and ra[2] == 0.0 and rb[2] == 0.0 and ks == 0.0:
+                p = self._engage_tandem(th, z, r1)
+                if p is None:
+                    return None
+                continue
+            dx = tandem_step(ra, rb, r1, ra[1] - half, rb[1] - half, ks, radial)
+            if dx is None:
+                return None
+            dp, _, dda, ddb = dx
+            step = max(abs(dp), abs(dda), abs(ddb))
+            if step <= tol and (step <= _DEFLECTION_TOLERANCE * min(ra[7], rb[7]) or step <= floor):
+                return (p, z, da, db), ra[6], rb[6], (ra, rb)
+            if not step < _INF:
+                return None
+            p, da, db = p + dp, da + dda, db + ddb
+        return None
+
+    def _engage_tandem(self, th: Thermal, z: float, r1: float) -> float | None:
+        """Mean offset p [m] at which a tandem pair (a_A = p + z, a_B = p − z) with no ball in
+        contact and a constant force carries its residual thrust −``r1`` [N] on its first
+        contact along that thrust (:meth:`_engage` for a tandem pair)."""
+        h = th.first_contact_offset
+        s = 1.0 if r1 < 0.0 else -1.0  # the set moves along the thrust it lacks
+        # the offsets at which A and B first touch going that way: a_A = ±h, a_B = ±h
+        p_touch = min(s * h - z, s * h + z) if s > 0.0 else max(s * h - z, s * h + z)
+        trial = s * 1e-3 * th.curvature_distance
+        ring_a, ring_b = self.rings
+        got = abs(
+            ring_point(th, self.c, p_touch + trial + z, 0.0, ring_a)[0]
+            + ring_point(th, self.c, p_touch + trial - z, 0.0, ring_b)[0]
+        )
+        if not got > 0.0:
+            return None
+        return p_touch + trial * (abs(r1) / got) ** (2.0 / 3.0)
+
+    def _engage(self, th: Thermal, p: float, f: float) -> float | None:
+        """Shaft displacement z [m] at which the pair with mean offset ``p`` [m] and axial play
+        carries about the axial load ``f`` [N] on its first contact: the balls of A meet
+        their grooves at a_A = p + z = ±h, those of B at a_B = p − z = ±h (h the first-contact
+        offset; the sign of the load picks the side), the nearer of them at
+        |z| = h − |p|; beyond it the load rises as δ^1.5 (Hertz), so one trial deflection
+        scales to the load's. None without play or load."""
+        if f == 0.0:
+            return None
+        gap = th.first_contact_offset - abs(p)
+        if not gap >= 0.0:
+            return None
+        s = 1.0 if f > 0.0 else -1.0
+        trial = 1e-3 * th.curvature_distance
+        z = s * (gap + trial)
+        ring_a, ring_b = self.rings
+        got = abs(
+            ring_point(th, self.c, p + z, 0.0, ring_a)[0]
+            - ring_point(th, self.c, p - z, 0.0, ring_b)[0]
+        )
+        if not got > 0.0:
+            return None
+        return s * (gap + trial * (abs(f) / got) ** (2.0 / 3.0))
+
     def _touch(self, th: Thermal, a: float, f: float, balls) -> float | None:
         """Radial displacement [m] of a bearing at axial offset ``a`` [m] at which its ball
         nearest the direction of the radial force ``f`` [N] carries |f| with the other balls
@@ -1038,6 +1234,23 @@ class PairSolver:
         delta = (abs(f) * (ci + co) ** 1.5 / cos_a) ** (2.0 / 3.0)
         s = dist + delta
         return (_sqrt(s * s - a * a) - a2_0) / cp
+
+    def _rest_displacement(self, th: Thermal, a_a: float) -> float:
+        """A tandem pair's axial displacement [m]: a_A less its offset at zero external load
+        at the thermal state ``th`` (:func:`pair_state._displacement`), that offset solved once
+        per thermal state by :meth:`_newton_tandem` on one axial ball per bearing (their
+        anchors A's and B's first ball's), from a_A."""
+        if th.rest_offset is None:
+            rings = self.rings
+            self.rings = [
+                [Ball(0.0, float(self.c.n_balls), r[0].anc_i.copy(), r[0].anc_o.copy())]
+                for r in rings
+            ]
+            z = -0.5 * th.closure
+            sol = self._newton_tandem(th, 0.0, 0.0, (a_a - z, z, 0.0, 0.0), START_ITERATIONS)
+            self.rings = rings
+            th.rest_offset = math.nan if sol is None else sol[0][0] + z
+        return a_a - th.rest_offset
 
     def _point(self, th: Thermal, x, ka: float, kb: float, symmetric: bool, radial_load: float):
         """The step's :class:`~.pair_state.PointState` from the balls' last evaluation
@@ -1068,6 +1281,7 @@ class PairSolver:
             rolling = skf_loads(fa, fb, radial_load)
         p_max = max(sa[5], sb[5])
         flags = state_flags(self.pair, th.clearance, p_max, fa, fb)
+        a_a, a_b = x[0] + x[1], x[0] - x[1]
         if th.rest_torque is None:
             th.rest_torque = rest_torque(self.pair, th.kinematic_viscosity, th.pitch_diameter)
         point = PointState.of(
@@ -1075,15 +1289,18 @@ class PairSolver:
             th,
             (sa[0] + sb[0], sa[1] + sb[1], sa[2] + sb[2], sa[3] + sb[3], sa[4] + sb[4]),
             (
-                0.5 * (fa + fb),
+                preload_force(fa, fb),
                 sa[7] / sa[6] if sa[6] > 0.0 else th.free_contact_angle,
-                _pair_stiffness(ka, kb, c.loop_stiffness),
+                ka + kb + c.spring_stiffness
+                if c.tandem
+                else _pair_stiffness(ka, kb, c.loop_stiffness),
                 p_max,
                 fa,
                 fb,
-                x[1],
+                self._rest_displacement(th, a_a) if c.tandem else x[1],
+                axial_play(th.first_contact_offset, a_a, a_b, fa, fb),
             ),
-            (flags["overloaded"], flags["locked"], flags["unloaded"]),
+            (flags["overloaded"], flags["locked"], flags["unloaded"], flags["reverse_loaded"]),
             th.rest_torque,
             rolling,
         )

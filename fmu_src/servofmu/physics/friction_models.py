@@ -20,7 +20,8 @@ elsewhere; it writes none itself:
   empirical for a bearing's total rolling moment, not for one contact. For scale, on the
   gimbal's 71803 at 10 °/s and −40 °C (Krytox 143AA, ν = 4.1e4 mm²/s) φish is 1 − 1.6e-4
   (inlet heating is negligible at servo speeds), while SKF's replenishment factor for grease
-  is 0.92 there and 0.0019 at −60 °C (ν extrapolated to 2.9e6 mm²/s): a starved, slowly turning
+  is 0.92 there and 0.0019 at −60 °C for Yu's law extrapolated there (2.9e6 mm²/s; the model
+  holds −40 °C's viscosity below −40 °C, the end of Krytox 143AA's data): a starved, slowly turning
   grease-packed contact would have less rolling torque than this model gives, by an amount no
   cited per-contact law gives here (tests/test_friction_models.py checks these numbers).
 

@@ -161,6 +161,10 @@ def ellipticity(curvature_difference):
     >>> round(float(ellipticity(0.9)), 4)
     6.7133
     """
+    if type(curvature_difference) is float and 1e-3 < curvature_difference < 0.9999:
+        k = _ellipticity_float(curvature_difference)
+        if k is not None:  # the scalar per-step path
+            return k
     f = check_range("curvature_difference", curvature_difference, 0.0, _F_MAX, hi_open=True)
     k = np.exp(_LOG_K_OF_F(f))
     polish = k > _POLISH_K
@@ -175,6 +179,26 @@ def ellipticity(curvature_difference):
         else:
             k = kp
     return k if np.ndim(k) else float(k)
+
+
+def _ellipticity_float(f: float) -> float | None:
+    """:func:`ellipticity` of one float F(ρ) without the interpolant: Newton's method on the
+    Hertz relation (:func:`hertz_relation`) from Hamrock & Brewe's approximation
+    k ≈ 1.0339·(R_y/R_x)^0.636 with R_y/R_x = (1 + F)/(1 − F) (Hamrock B. J., Brewe D. E.,
+    "Simplified solution for stresses and deformations", J. Lubrication Technology 105 (1983)
+    171–177; within a few per cent), to rounding; None when it does not settle (the caller
+    takes the interpolant)."""
+    k = max(1.0339 * ((1.0 + f) / (1.0 - f)) ** 0.636, _POLISH_K)
+    for _ in range(12):
+        m = 1.0 - 1.0 / (k * k)
+        f_k, df_dk = hertz_relation(k, float(ellipk(m)), float(ellipe(m)))
+        step = (f_k - f) / df_dk
+        k = k - step
+        if not k > 1.0:
+            return None
+        if abs(step) <= 1e-15 * k:
+            return k
+    return None
 
 
 @dataclass(frozen=True)

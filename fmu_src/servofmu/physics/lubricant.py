@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ._checks import check_nonnegative, check_positive, check_temperature
-from .viscosity import WaltherViscosity
+from .viscosity import ViscosityRange
 
 LUBRICANT_TYPES = ("oil", "grease", "solid")
 #: Classes of base oil for the SKF model's full-film sliding coefficient μEHL (SKF 10000 EN
@@ -57,12 +57,20 @@ class LubricantRecord:
     key, name : catalogue key and description
     lubricant_type : "oil", "grease" or "solid"
     base_oil : the base oil as the datasheet names it ("" for a solid film)
-    viscosity : Walther/ASTM D341 model of the base oil (None for a solid film)
+    viscosity : the base oil's viscosity model with its range (:mod:`.viscosity`: the ASTM
+        D341 line through ν40 and ν100, or Vogel's law through them and ``viscosity_points``);
+        None for a solid film
     viscosity_40, viscosity_100 : kinematic viscosity at 40 and 100 °C [m²/s] (None: solid)
-    viscosity_points : further published (temperature [K], viscosity [m²/s]) points, kept to
-        check the two-point fit; not used by it
+    viscosity_points : further published (temperature [K], viscosity [m²/s]) points; the
+        model passes through them (three points in all) or is fitted to them (more)
     density : base-oil density [kg/m³] at ``density_temperature`` [K] (None: not published)
     pour_point : base-oil pour point [K] (None: not published)
+    minimum_temperature : where no pour point is published, the lowest temperature of the
+        lubricant's data (the maker's lowest operating temperature, or the lowest temperature
+        a paper used its fit at) [K] (None: not given)
+    maximum_temperature : the upper end of the lubricant's data (the maker's upper operating
+        temperature, or the highest temperature a paper used its fit at) [K] (None: the
+        highest viscosity point is the upper end)
     oil_class : "mineral", "synthetic" or "transmission" (:data:`OIL_CLASSES`; "" unknown), from
         the base oil the entry names
     low_temperature_torque : datasheet torque tests, :class:`TorqueTest`
@@ -73,13 +81,15 @@ class LubricantRecord:
     name: str
     lubricant_type: str
     base_oil: str = ""
-    viscosity: WaltherViscosity | None = None
+    viscosity: ViscosityRange | None = None
     viscosity_40: float | None = None
     viscosity_100: float | None = None
     viscosity_points: tuple[tuple[float, float], ...] = ()
     density: float | None = None
     density_temperature: float | None = None
     pour_point: float | None = None
+    minimum_temperature: float | None = None
+    maximum_temperature: float | None = None
     oil_class: str = ""
     low_temperature_torque: tuple[TorqueTest, ...] = ()
     provenance: tuple[tuple[str, str], ...] = ()
@@ -111,8 +121,9 @@ class LubricantRecord:
             check_positive("density", self.density, "kg/m³")
         if self.density_temperature is not None:
             check_temperature("density_temperature", self.density_temperature)
-        if self.pour_point is not None:
-            check_temperature("pour_point", self.pour_point)
+        for name in ("pour_point", "minimum_temperature", "maximum_temperature"):
+            if getattr(self, name) is not None:
+                check_temperature(name, getattr(self, name))
 
     def source(self, field: str) -> str:
         """Provenance of one field ("" when not recorded)."""

@@ -16,7 +16,7 @@ from .friction_models import DEFAULT_FRICTION, FrictionModel, preset
 from .geometry import BallBearing, RaceGeometry
 from .mounting import Mounting
 from .preload import TANDEM, PreloadLoop, loop_interference, shim_for_preload, tandem_offsets
-from .viscosity import WaltherViscosity
+from .viscosity import ViscosityRange
 
 LUBRICATIONS = ("grease", "solid")
 DEFAULT_COEFFICIENTS = FrictionCoefficients()
@@ -35,7 +35,8 @@ class BearingPair:
     bearing : :class:`geometry.BallBearing`
     mounting : :class:`Mounting`
     lubrication : "grease" (Yu 2017 eq 9) or "solid" (Ning)
-    lubricant : viscosity model (grease); None for a dry film
+    lubricant : viscosity model with the range of its data (:mod:`.viscosity`; grease); None
+        for a dry film
     coefficients : :class:`friction.FrictionCoefficients`
     regularisation_speed : width ω_r of the smooth sign through zero speed [rad/s]
     stribeck_speed : decay speed ω_s of the breakaway excess [rad/s]
@@ -49,7 +50,7 @@ class BearingPair:
     bearing: BallBearing
     mounting: Mounting
     lubrication: str = "grease"
-    lubricant: WaltherViscosity | None = None
+    lubricant: ViscosityRange | None = None
     coefficients: FrictionCoefficients = DEFAULT_COEFFICIENTS
     regularisation_speed: float = 1e-3
     stribeck_speed: float = 1e-2

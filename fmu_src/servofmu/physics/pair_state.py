@@ -63,9 +63,12 @@ class ThermalState:
     outer_interference, inner_interference : diametral fit interferences at T [m]
     closure : loop closure C [m] (a tandem pair: the mismatch d of B relative to A)
     loop_stiffness : k_loop [N/m] (a tandem pair: its preload spring's k_s, 0 for a force)
-    kinematic_viscosity : ν [m²/s] (0 for a dry film)
+    kinematic_viscosity : ν [m²/s] the bearing uses (0 for a dry film): the lubricant's law,
+        held at its value at the lower end of its data below it (:mod:`.viscosity`)
     preload_offset : offset of bearing A at zero external load [m] (B's too, but in a tandem
         pair: the closure more)
+    outside_lubricant_range : the lubricant's temperature lies outside the range of its data
+        (:meth:`.viscosity.ViscosityRange.outside`; False for a dry film)
     """
 
     temperatures: PartTemperatures
@@ -78,6 +81,7 @@ class ThermalState:
     loop_stiffness: float
     kinematic_viscosity: np.ndarray
     preload_offset: np.ndarray
+    outside_lubricant_range: np.ndarray = False
 
     @property
     def temperature(self):
@@ -138,11 +142,9 @@ def thermal_state(pair: BearingPair, temperature) -> ThermalState:
         k = loop_stiffness(pair)
         offsets = pair_offsets(mounted.race, closure, k, 0.0)
     t_lub = np.asarray(temps.lubricant)
-    visc = (
-        np.zeros_like(t_lub)
-        if pair.lubricant is None
-        else pair.lubricant.kinematic_viscosity(t_lub)
-    )
+    lub = pair.lubricant
+    visc = np.zeros_like(t_lub) if lub is None else lub.operating_viscosity(t_lub)
+    outside = np.zeros(t_lub.shape, bool) if lub is None else np.asarray(lub.outside(t_lub))
     return ThermalState(
         temperatures=temps,
         geometry=mounted.race,
@@ -154,6 +156,7 @@ def thermal_state(pair: BearingPair, temperature) -> ThermalState:
         loop_stiffness=k,
         kinematic_viscosity=np.asarray(visc),
         preload_offset=offsets.offset_a,
+        outside_lubricant_range=outside,
     )
 
 
@@ -163,13 +166,15 @@ class LoadState:
 
     Attributes
     ----------
-    force_a, force_b : axial forces of bearings A and B [N]
-    preload : loop force (F_A + F_B)/2 [N] (a tandem pair: half the thrust it carries)
+    force_a, force_b : axial forces of bearings A and B [N] (negative: :func:`state_flags`'s
+        ``reverse_loaded``)
+    preload : :func:`preload_force` [N]
+    axial_play : :func:`axial_play` [m]
     contact_angle : load-weighted operating contact angle of bearing A [rad] (the free
         contact angle when A carries no load)
     axial_stiffness : stiffness of the shaft in the pair [N/m]
     max_contact_pressure : largest Hertz pressure over all contacts [Pa]
-    overloaded, locked, unloaded : the flags of :func:`state_flags`
+    overloaded, locked, unloaded, reverse_loaded : the flags of :func:`state_flags`
     torques : speed-independent torques of both bearings (:class:`friction.BallSetTorques`)
     axial_displacement : axial displacement of the shaft from its unloaded position,
         z = (a_A − a_B)/2 [m] (positive towards bearing A; a tandem pair: a_A less its
@@ -193,7 +198,9 @@ class LoadState:
     overloaded: np.ndarray
     locked: np.ndarray
     unloaded: np.ndarray
+    reverse_loaded: np.ndarray
     torques: BallSetTorques
+    axial_play: np.ndarray = 0.0
     axial_displacement: np.ndarray = 0.0
     converged: bool = True
     offset_a: np.ndarray = 0.0
@@ -207,7 +214,7 @@ class LoadState:
 def state_flags(
     pair: BearingPair, clearance, max_contact_pressure, force_a, force_b, converged=True
 ) -> dict:
-    """What the model knows about the state of the pair, as three flags (arrays or bools).
+    """What the model knows about the state of the pair, as four flags (arrays or bools).
 
     - ``overloaded``: the largest Hertz pressure ``max_contact_pressure`` [Pa] reaches the
       pair's ``pressure_limit`` (ISO 76: 4200 MPa, permanent deformation of the races);
@@ -216,24 +223,100 @@ def state_flags(
       collapsed and the pair can no longer set its own contact angle), or the load
       equilibrium has no solution (``converged`` False);
     - ``unloaded``: the preload is lost: one bearing's axial force ``force_a``/``force_b`` [N]
-      is zero, so the shaft has axial play (with no external load: both are zero).
+      is zero or negative, so the shaft has axial play (with no external load: both are zero);
+    - ``reverse_loaded``: a bearing's axial force is negative: its balls are pushed past the
+      axial play onto the other flanks of its grooves (the loop pulled apart, or a tandem set
+      under a load against its thrust larger than the thrust). The model takes the grooves as
+      symmetric there (a deep-groove bearing); an angular-contact bearing has a low shoulder
+      on that side and may not carry the load: its numbers are the symmetric groove's.
 
     Returns
     -------
     dict
-        ``{"overloaded", "locked", "unloaded"}``: bools for floats, boolean arrays for arrays.
+        ``{"overloaded", "locked", "unloaded", "reverse_loaded"}``: bools for floats, boolean
+        arrays for arrays.
 
     Examples
     --------
     >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
     >>> state_flags(pair, 2e-6, 1.5e9, 40.0, 0.0)  # m, Pa, N, N: B lost its load
-    {'overloaded': False, 'locked': False, 'unloaded': True}
+    {'overloaded': False, 'locked': False, 'unloaded': True, 'reverse_loaded': False}
     """
     return {
         "overloaded": max_contact_pressure >= pair.pressure_limit,
         "locked": (clearance <= 0.0) | (not converged),
         "unloaded": (force_a <= 0.0) | (force_b <= 0.0),
+        "reverse_loaded": (force_a < 0.0) | (force_b < 0.0),
     }
+
+
+def preload_force(force_a, force_b):
+    """The preload [N]: the mean axial force of the two bearings, (F_A + F_B)/2, the loop's
+    compression (a tandem pair: half the thrust the set carries, the spring's or force's plus
+    the external load), and 0 where that mean is not a compression (both bearings pushed onto
+    the other flanks of their grooves, ``reverse_loaded``). Under an external load one bearing
+    carries more than the preload, the other less; once one carries nothing (``unloaded``) the
+    mean is half the load the other carries, and :func:`axial_play` says how far the shaft can
+    move.
+
+    Parameters
+    ----------
+    force_a, force_b : float or ndarray
+        Axial forces of bearings A and B [N] (negative: on the other flanks).
+
+    Returns
+    -------
+    float or ndarray
+        [N], ≥ 0.
+
+    Examples
+    --------
+    >>> preload_force(60.0, 20.0), preload_force(-10.0, -30.0)  # N
+    (40.0, 0.0)
+    """
+    n = 0.5 * (force_a + force_b)
+    if type(n) is float:  # the per-step path
+        return n if n > 0.0 else 0.0
+    return np.maximum(n, 0.0)
+
+
+def axial_play(first_contact_offset, offset_a, offset_b, force_a, force_b):
+    """Axial play of the pair [m]: for each bearing that carries no axial load (F ≤ 0), the
+    axial offset its groove centres lack to first contact, h − a (the balls' gap to the flanks
+    that carry a preload); summed over the two bearings, 0 when both carry load. At zero
+    external load it is how far the loop is short of closing on the two bearings, 2h − C (loop
+    closure C); under a load, how far the shaft can move back before the unloaded bearing
+    touches (its elastic deflections aside). Harris & Kotzalas 2007 ch. 2 (axial play 2h).
+
+    Parameters
+    ----------
+    first_contact_offset : float or ndarray
+        h [m] (:func:`.geometry.first_contact_offset`).
+    offset_a, offset_b : float or ndarray
+        Axial offsets of bearings A and B [m].
+    force_a, force_b : float or ndarray
+        Their axial forces [N].
+
+    Returns
+    -------
+    float or ndarray
+        [m], ≥ 0.
+
+    Examples
+    --------
+    >>> round(axial_play(60e-6, 40e-6, 40e-6, 0.0, 0.0) * 1e6, 9)  # µm: two 20 µm gaps
+    40.0
+    >>> axial_play(60e-6, 65e-6, 50e-6, 30.0, 10.0)  # both in contact
+    0.0
+    """
+    h = first_contact_offset
+    if type(offset_a) is float:  # the per-step path
+        play_a = h - offset_a if force_a <= 0.0 and offset_a < h else 0.0
+        play_b = h - offset_b if force_b <= 0.0 and offset_b < h else 0.0
+        return play_a + play_b
+    play_a = np.where(np.asarray(force_a) <= 0.0, np.maximum(h - np.asarray(offset_a), 0.0), 0.0)
+    play_b = np.where(np.asarray(force_b) <= 0.0, np.maximum(h - np.asarray(offset_b), 0.0), 0.0)
+    return play_a + play_b
 
 
 def _torques(pair: BearingPair, geom: RaceGeometry, load, alpha, inner, outer, count=1):
@@ -402,12 +485,15 @@ def axial_load_state(pair: BearingPair, thermal: ThermalState, offset_a, offset_
     return LoadState(
         force_a=sa.axial_force,
         force_b=sb.axial_force,
-        preload=0.5 * (sa.axial_force + sb.axial_force),
+        preload=preload_force(sa.axial_force, sb.axial_force),
         contact_angle=angle,
         axial_stiffness=_pair_stiffness(pair, sa.axial_stiffness, sb.axial_stiffness, k),
         max_contact_pressure=p_max,
         **state_flags(pair, geom.clearance, p_max, sa.axial_force, sb.axial_force),
         torques=t,
+        axial_play=axial_play(
+            geom.first_contact_offset, offset_a, offset_b, sa.axial_force, sb.axial_force
+        ),
         axial_displacement=_displacement(pair, thermal, offset_a, offset_b),
         offset_a=np.asarray(offset_a),
         offset_b=np.asarray(offset_b),
@@ -467,12 +553,15 @@ def _combined_load_state(pair, thermal, f_ext, f_r) -> LoadState:
     return LoadState(
         force_a=fa,
         force_b=fb,
-        preload=0.5 * (fa + fb),
+        preload=preload_force(fa, fb),
         contact_angle=angle,
         axial_stiffness=float(_pair_stiffness(pair, ka, kb, k)),
         max_contact_pressure=p_max,
         **state_flags(pair, geom.clearance, p_max, fa, fb, st.converged),
         torques=t,
+        axial_play=axial_play(
+            float(geom.first_contact_offset), float(st.offset_a), float(st.offset_b), fa, fb
+        ),
         axial_displacement=float(_displacement(pair, thermal, st.offset_a, st.offset_b)),
         converged=st.converged,
         offset_a=st.offset_a,
@@ -501,7 +590,9 @@ class BearingOutputs:
     [N/m], power_loss [W], overloaded, locked, unloaded (see :func:`state_flags`); plus
     inner_ring_torque/outer_ring_torque [N·m], max_contact_pressure [Pa],
     outer/inner_fit_pressure [Pa], outer/inner_interference [m], force_a/force_b [N],
-    axial_displacement [m].
+    axial_displacement [m]; axial_play [m] (:func:`axial_play`), reverse_loaded
+    (:func:`state_flags`) and outside_lubricant_range (the lubricant's temperature outside the
+    range of its data, :mod:`.viscosity`).
     """
 
     friction_torque: float
@@ -531,6 +622,9 @@ class BearingOutputs:
     force_a: float
     force_b: float
     axial_displacement: float
+    axial_play: float
+    reverse_loaded: bool
+    outside_lubricant_range: bool
 
     def as_dict(self) -> dict:
         return {f.name: getattr(self, f.name) for f in fields(self)}
@@ -749,6 +843,9 @@ def bearing_outputs(
         force_a=load.force_a,
         force_b=load.force_b,
         axial_displacement=load.axial_displacement,
+        axial_play=load.axial_play,
+        reverse_loaded=load.reverse_loaded,
+        outside_lubricant_range=thermal.outside_lubricant_range,
     )
 
 
@@ -787,16 +884,20 @@ class PointState:
     overloaded: bool
     locked: bool
     unloaded: bool
+    reverse_loaded: bool
+    outside_lubricant_range: bool
+    axial_play: float
     rolling: tuple | list | None = None
 
     @classmethod
     def of(cls, pair: BearingPair, thermal, torques, load, flags, rest=None,
            rolling=None) -> PointState:  # fmt: skip
-        """From the thermal state ``thermal`` (clearance, viscosity, pitch diameter, fits),
-        ``torques`` = (hysteresis, spin, sliding, inner ring, outer ring) [N·m], ``load`` =
-        (preload [N], contact angle [rad], axial stiffness [N/m], largest pressure [Pa],
-        force_a, force_b [N], axial displacement [m]), ``flags`` = (overloaded, locked,
-        unloaded) (:func:`state_flags`), the viscous torque at rest [N·m]
+        """From the thermal state ``thermal`` (clearance, viscosity, pitch diameter, fits, the
+        lubricant's range flag), ``torques`` = (hysteresis, spin, sliding, inner ring, outer
+        ring) [N·m], ``load`` = (preload [N], contact angle [rad], axial stiffness [N/m],
+        largest pressure [Pa], force_a, force_b [N], axial displacement [m], axial play [m]),
+        ``flags`` = (overloaded, locked, unloaded, reverse_loaded) (:func:`state_flags`), the
+        viscous torque at rest [N·m]
         (:func:`rest_torque`, evaluated when not given) and the friction model's ``rolling``
         data (:func:`rolling_data`, floats)."""
         nu, dm = thermal.kinematic_viscosity, thermal.pitch_diameter
@@ -835,6 +936,8 @@ class PointState:
             load[5],
             load[6],
             *flags,
+            thermal.outside_lubricant_range,
+            load[7],
             rolling,
         )
 
@@ -854,8 +957,9 @@ class PointState:
                 load.force_a,
                 load.force_b,
                 load.axial_displacement,
+                load.axial_play,
             ),
-            (load.overloaded, load.locked, load.unloaded),
+            (load.overloaded, load.locked, load.unloaded, load.reverse_loaded),
             rolling=_rolling_floats(load.rolling),
         )
 
@@ -914,6 +1018,9 @@ class PointState:
             self.force_a,
             self.force_b,
             self.axial_displacement,
+            self.axial_play,
+            self.reverse_loaded,
+            self.outside_lubricant_range,
         )
 
     def as_dict(self) -> dict:

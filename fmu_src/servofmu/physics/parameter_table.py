@@ -85,7 +85,7 @@ GROUPS = {
     "fit": "bearing geometry, materials and radial fits: clearance, fits, contact geometry",
     "loop": "axial preload loop: arrangement, members, yoke, preload method, loop stiffness",
     "lubrication": "grease or dry film: viscous term, race of spin, differential sliding",
-    "lubricant": "the grease's viscosity model",
+    "lubricant": "the grease's viscosity model and the range of its data",
     "hysteresis": "elastic hysteresis loss",
     "sliding": "sliding friction of spin and differential sliding",
     "breakaway": "static over kinetic friction",
@@ -531,8 +531,56 @@ def _table() -> tuple[ParameterSpec, ...]:
             1.0e8,
             1.0e11,
         ),
-        # ---- the friction model (issue 17); appended, so that earlier references stay
+        # ---- appended in the order they came, so that earlier value references stay
         *_friction_model_specs(),
+        *_lubricant_range_specs(),
+    )
+
+
+def _lubricant_range_specs() -> tuple[ParameterSpec, ...]:
+    """The range of the lubricant's data and its optional third viscosity point."""
+    return (
+        _real(
+            "lubricant_minimum_temperature",
+            "Lower end of the lubricant's data: its pour point, or its lowest published "
+            "viscosity if lower (below it: outside_lubricant_range, the viscosity held at its "
+            "value there; 0: no lower end)",
+            "lubricant",
+            "K",
+            "degC",
+            0.0,
+            1.0e4,
+        ),
+        _real(
+            "lubricant_maximum_temperature",
+            "Upper end of the lubricant's data: the maker's upper operating temperature, else "
+            "its highest published viscosity (above it: outside_lubricant_range)",
+            "lubricant",
+            "K",
+            "degC",
+            1.0,
+            1.0e4,
+        ),
+        _real(
+            "lubricant_viscosity_cold",
+            "A third viscosity of the (base) oil, at lubricant_cold_temperature: with it the "
+            "viscosity is Vogel's law through the three points (0: none, the ASTM D341 line "
+            "through ν40 and ν100)",
+            "lubricant",
+            "m2/s",
+            "cSt",
+            0.0,
+            100.0,
+        ),
+        _real(
+            "lubricant_cold_temperature",
+            "Temperature of lubricant_viscosity_cold (0: none)",
+            "lubricant",
+            "K",
+            "degC",
+            0.0,
+            1.0e4,
+        ),
     )
 
 
@@ -617,6 +665,10 @@ LUBRICANT_FIELDS = (
     "lubricant_walther_c",
     "lubricant_density",
     "skf_film_friction",
+    "lubricant_minimum_temperature",
+    "lubricant_maximum_temperature",
+    "lubricant_viscosity_cold",
+    "lubricant_cold_temperature",
 )
 #: The SKF series constants: a bearing preset sets them (its series, or the fallback).
 SKF_SERIES_FIELDS = ("skf_r1", "skf_r2", "skf_r3", "skf_s1", "skf_s2", "skf_s3", "skf_kz")
@@ -652,7 +704,7 @@ def parameters_in(*groups: str) -> tuple[str, ...]:
 
     Examples
     --------
-    >>> parameters_in("lubricant")
+    >>> parameters_in("lubricant")[:3]
     ('lubricant_viscosity_40', 'lubricant_viscosity_100', 'lubricant_walther_c')
     """
     unknown = sorted(set(groups) - set(GROUPS))

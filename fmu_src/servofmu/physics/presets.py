@@ -26,6 +26,7 @@ from .pair import PRESSURE_LIMIT
 from .parameter_table import LUBRICANT_FIELDS, PARAMETER_NAMES, SKF_SERIES_FIELDS
 from .preload import TANDEM, LoopMember, member_kind
 from .units import CST, RPM
+from .viscosity import T40, T100, VogelViscosity
 
 #: Catalogue mounting whose values are the defaults (Yu 2017's seeker gimbal).
 DEFAULT_MOUNTING = "yu2017_gimbal"
@@ -86,13 +87,15 @@ def bearing_values(b: BallBearing) -> tuple[dict, dict]:
 
 def lubricant_values(key: str) -> tuple[dict, dict]:
     """(values, sources) of :data:`LUBRICANT_FIELDS` for catalogue lubricant ``key``: a fluid
-    gives its ν40, ν100 and Walther c with lubrication "grease"; a dry film gives lubrication
-    "solid" and leaves the viscosity numbers out (they are not used).
+    gives its ν40, ν100, Walther c, the range of its data and (when its model is Vogel's law)
+    a third viscosity with lubrication "grease" (:func:`viscosity_values`); a dry film gives
+    lubrication "solid" and leaves the viscosity numbers out (they are not used).
 
     Returns
     -------
     tuple of dict
-        (values: ν40, ν100, c [m²/s], density [kg/m³], lubrication; sources: str per name).
+        (values: ν40, ν100, c, cold viscosity [m²/s], temperatures [K], density [kg/m³],
+        lubrication; sources: str per name).
 
     Examples
     --------
@@ -104,22 +107,82 @@ def lubricant_values(key: str) -> tuple[dict, dict]:
     if rec.viscosity is None:
         return {"lubrication": "solid"}, {"lubrication": f"catalogue: lubricant {key} (dry film)"}
     (film, film_src), (density, density_src) = lubricant_numbers(rec)
-    values = {
+    values, sources = viscosity_values(rec)
+    values |= {
         "lubrication": "grease",
-        "lubricant_viscosity_40": float(rec.viscosity_40),
-        "lubricant_viscosity_100": float(rec.viscosity_100),
-        "lubricant_walther_c": walther_c_si(rec.viscosity.c),
         "lubricant_density": density,
         "skf_film_friction": film,
     }
-    sources = {
+    sources |= {
         "lubrication": f"catalogue: lubricant {key} ({rec.lubricant_type})",
-        "lubricant_viscosity_40": f"{rec.source('viscosity_40')} ({key})",
-        "lubricant_viscosity_100": f"{rec.source('viscosity_100')} ({key})",
-        "lubricant_walther_c": f"{rec.viscosity.source('c')} ({key})",
         "lubricant_density": density_src,
         "skf_film_friction": film_src,
     }
+    return values, sources
+
+
+def viscosity_values(rec) -> tuple[dict, dict]:
+    """(values, sources) of the viscosity parameters (ν40, ν100, Walther c, the cold point and
+    the range) that make :func:`.viscosity.viscosity_model` the model of lubricant record
+    ``rec``: its published ν40/ν100 (and, for Vogel's law through three points, its third
+    point) when the model passes through them, else three points of its fitted curve (Vogel's
+    law fitted to more than three points: the same law through three of its points).
+
+    Returns
+    -------
+    tuple of dict
+        (values [m²/s, K], sources).
+
+    Examples
+    --------
+    >>> v, s = viscosity_values(catalog.lubricant_record("pennzane_2000"))
+    >>> round(v["lubricant_viscosity_cold"] * 1e6), round(v["lubricant_cold_temperature"], 2)
+    (80500, 233.15)
+    """
+    model, key = rec.viscosity, rec.key
+    values = {
+        "lubricant_viscosity_40": float(rec.viscosity_40),
+        "lubricant_viscosity_100": float(rec.viscosity_100),
+        "lubricant_minimum_temperature": float(model.lower_limit),
+        "lubricant_maximum_temperature": float(model.upper_limit),
+    }
+    sources = {
+        "lubricant_viscosity_40": f"{rec.source('viscosity_40')} ({key})",
+        "lubricant_viscosity_100": f"{rec.source('viscosity_100')} ({key})",
+        "lubricant_minimum_temperature": f"{model.source('lower_limit')} ({key})",
+        "lubricant_maximum_temperature": f"{model.source('upper_limit')} ({key})",
+    }
+    if not isinstance(model, VogelViscosity):
+        values |= {
+            "lubricant_walther_c": walther_c_si(model.c),
+            "lubricant_viscosity_cold": 0.0,
+            "lubricant_cold_temperature": 0.0,
+        }
+        sources |= {
+            "lubricant_walther_c": f"{model.source('c')} ({key})",
+            "lubricant_viscosity_cold": f"none: two viscosities known ({key})",
+            "lubricant_cold_temperature": f"none: two viscosities known ({key})",
+        }
+        return values, sources
+    t_cold, nu_cold = min(p for p in model.points if p[0] not in (T40, T100))
+    values |= {
+        "lubricant_walther_c": walther_c_si(0.7),
+        "lubricant_viscosity_cold": float(nu_cold),
+        "lubricant_cold_temperature": float(t_cold),
+    }
+    cold_src = f"{rec.source('viscosity_points[0]')} ({key})"
+    sources |= {
+        "lubricant_walther_c": "not used (a cold point: Vogel's law): ASTM D341's 0.7 cSt",
+        "lubricant_viscosity_cold": cold_src,
+        "lubricant_cold_temperature": cold_src,
+    }
+    temps = {t for t, _ in model.points}
+    if len(model.points) > 3 or not {T40, T100} <= temps:  # three points of the fitted law
+        fitted = f"derived: Vogel's law fitted to the {len(model.points)} points of {key}, at "
+        for name, t in (("lubricant_viscosity_40", T40), ("lubricant_viscosity_100", T100),
+                        ("lubricant_viscosity_cold", t_cold)):  # fmt: skip
+            values[name] = float(model.kinematic_viscosity(t))
+            sources[name] = f"{fitted}{t:g} K"
     return values, sources
 
 

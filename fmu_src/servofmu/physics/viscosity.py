@@ -1,13 +1,47 @@
-"""Lubricant viscosity versus temperature: the Walther equation (ASTM D341).
+"""Lubricant viscosity versus temperature, and the range of temperatures a lubricant's data
+cover.
 
-Yu 2017 eq 18:  lg lg(ν + c) = a − b·lg T,  ν in cSt, T in K, lg = log10.
-For Krytox 143AA Yu fits a = 9.597, b = 3.773, c = 0.932 (catalogue key ``krytox_143aa``).
-ASTM D341 uses the same form with c = 0.7 and builds (a, b) from two measured viscosities:
-:func:`walther_from_two_points`.
+Two laws, each written once (kinematic viscosity ν, absolute temperature T):
+
+- **Walther** (ASTM D341-20 §5; Yu 2017 eq 18): lg lg(ν + c) = a − b·lg T, ν in cSt, T in K,
+  lg = log10; c = 0.7 cSt in ASTM D341, 0.932 in Yu's least-squares fit to DuPont's Krytox
+  143AA data (catalogue key ``krytox_143aa``: Yu's a, b, c stay his). Two viscosities fix a and
+  b (:func:`walther_from_two_points`): the ASTM D341 line through a datasheet's ν40 and ν100.
+- **Vogel** (Vogel H., "Das Temperaturabhängigkeitsgesetz der Viskosität von Flüssigkeiten",
+  Physikalische Zeitschrift 22 (1921) 645–646; reviewed with the Walther form by Seeton C. J.,
+  "Viscosity–temperature correlation for liquids", Tribology Letters 22 (2006) 67–78,
+  doi:10.1007/s11249-006-9071-2, §2): ln ν = a + b/(T − T∞), applied to the kinematic viscosity
+  (the datasheets' quantity; a density change of a few per cent over the range goes into the
+  constants). Three viscosities fix a, b and T∞ (:func:`vogel_from_points`).
+
+Which law a lubricant uses: the ASTM D341 line when two viscosities are known (the datasheet
+pair), Vogel's law when three or more are: through three exactly, through more by least
+squares in ln ν. ASTM D341 draws a petroleum oil's viscosity as a straight line (§1.2), and a
+straight line through ν40 and ν100 misses the cold points the catalogue holds: +57 % for
+Pennzane SHF X-2000 at −40 °C, −59 % and −81 % for the VI-improved MIL-PRF-5606 oil X/C 5606J
+at −40 and −54 °C. D341 applied piecewise between neighbouring points would pass each point
+but bend at each and carry the last segment's slope below the coldest one; Vogel's third
+constant bends the curve smoothly (T∞ is where the fit diverges, below every temperature it
+is used at), and through the four points of X/C 5606J it misses none by more than 1 %
+(``servofmu paper validation``, section viscosity).
+
+**Range.** A viscosity model knows a lubricant between ``lower_limit`` and ``upper_limit``
+[K] (:attr:`ViscosityRange`): from its pour point (or its lowest published viscosity if that
+is lower) to an upper limit the catalogue states (the maker's upper operating temperature,
+else the highest published viscosity). ASTM D341-20 §3.1 limits its charts to temperatures
+where the oil is a homogeneous liquid, above its cloud point; the pour point, a few kelvin
+below the cloud point, is what lubricant datasheets publish. Below the lower limit the
+lubricant no longer flows as the law says (a gel, then a solid), and no number is known:
+:meth:`ViscosityRange.operating_viscosity` holds the viscosity at its value at the lower limit
+there, keeping the torques finite, and :meth:`ViscosityRange.outside` flags the point. Above
+the upper limit the law is extrapolated (D341 §1.2: the lines stay straight to about 340 °C;
+the viscosity keeps falling and the viscous torque with it), and flagged too.
 """
 
 from __future__ import annotations
 
+import itertools
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -15,10 +49,99 @@ import numpy as np
 from ._checks import check_positive, check_range, check_temperature
 from .units import CST
 
+#: The reference temperatures of ν40 and ν100 (ISO 3448, ASTM D341) [K].
+T40, T100 = 313.15, 373.15
+
+
+def _walther_cst(lg_t, a: float, b: float, c: float):
+    """ν [cSt] of lg lg(ν + c) = a − b·lg T at lg T = ``lg_t`` (float or array): the one place
+    of Walther's equation (Yu 2017 eq 18, ASTM D341)."""
+    return 10.0 ** (10.0 ** (a - b * lg_t)) - c
+
+
+def _vogel_exponent(t, a: float, b: float, t_inf: float):
+    """ln ν [ln(m²/s)] of Vogel's law at ``t`` [K] (float or array): the one place of it."""
+    return a + b / (t - t_inf)
+
 
 @dataclass(frozen=True)
-class WaltherViscosity:
-    """Kinematic viscosity model lg lg(ν[cSt] + c) = a − b·lg(T[K]) (Yu 2017 eq 18).
+class ViscosityRange:
+    """The temperatures a lubricant's viscosity data cover, and what a bearing model uses
+    outside them (module docstring). Base of the viscosity models.
+
+    Attributes
+    ----------
+    lower_limit : its pour point, or its lowest published viscosity if lower [K] (0: none)
+    upper_limit : the upper limit its catalogue entry states [K] (inf: none)
+    """
+
+    lower_limit: float = 0.0
+    upper_limit: float = math.inf
+
+    def _check_range(self):
+        lo = check_range("lower_limit", self.lower_limit, 0.0, None, unit="K")
+        if not (lo < self.upper_limit and self.upper_limit > 0.0):
+            raise ValueError(
+                f"upper_limit = {self.upper_limit!r} K must lie above lower_limit = {lo!r} K"
+            )
+
+    def _check_held(self):
+        """The viscosity held below ``lower_limit`` must be a number: the law there, finite."""
+        if self.lower_limit > 0.0:
+            try:
+                nu = self.viscosity_at(self.lower_limit)
+            except (OverflowError, ZeroDivisionError):
+                nu = math.inf
+            if not 0.0 < nu < math.inf:
+                raise ValueError(
+                    f"the viscosity at lower_limit = {self.lower_limit!r} K is {nu!r} m²/s: "
+                    "the law has no finite value there (raise the lower limit)"
+                )
+
+    def kinematic_viscosity(self, temperature):  # the law (subclasses)
+        raise NotImplementedError
+
+    def viscosity_at(self, t: float) -> float:  # the law on one float (subclasses)
+        raise NotImplementedError
+
+    def outside(self, temperature):
+        """True where ``temperature`` [K] (float or array) lies outside
+        [``lower_limit``, ``upper_limit``].
+
+        Returns
+        -------
+        bool or ndarray of bool
+
+        Examples
+        --------
+        >>> ViscosityRange(233.15, 333.15).outside(np.array([173.15, 253.15]))
+        array([ True, False])
+        """
+        t = np.asarray(temperature)
+        out = (t < self.lower_limit) | (t > self.upper_limit)
+        return bool(out) if out.ndim == 0 else out
+
+    def operating_viscosity(self, temperature):
+        """The viscosity a bearing model uses at ``temperature`` [K] (float or array): the
+        law's, held at its value at ``lower_limit`` below it (module docstring) [m²/s].
+
+        Examples
+        --------
+        >>> v = walther_from_reference(32e-6, 5.4e-6, lower_limit=253.15)
+        >>> bool(v.operating_viscosity(173.15) == v.kinematic_viscosity(253.15))
+        True
+        """
+        t = check_temperature("temperature", temperature)
+        return self.kinematic_viscosity(np.maximum(t, self.lower_limit))
+
+    def operating_viscosity_at(self, t: float) -> float:
+        """:meth:`operating_viscosity` on one float [K] → [m²/s] (the per-step path)."""
+        return self.viscosity_at(t if t > self.lower_limit else self.lower_limit)
+
+
+@dataclass(frozen=True, kw_only=True)
+class WaltherViscosity(ViscosityRange):
+    """Kinematic viscosity model lg lg(ν[cSt] + c) = a − b·lg(T[K]) (Yu 2017 eq 18; ASTM D341).
 
     Attributes
     ----------
@@ -26,6 +149,7 @@ class WaltherViscosity:
     a, b : Walther coefficients [-]
     c : additive constant [cSt] (0.7 in ASTM D341; 0.932 in Yu's Krytox fit)
     provenance : ((field, source), ...)
+    lower_limit, upper_limit : the lubricant's range [K] (:class:`ViscosityRange`)
     """
 
     key: str
@@ -39,10 +163,16 @@ class WaltherViscosity:
         check_range("a", self.a)
         check_positive("b", self.b)
         check_range("c", self.c, 0.0, 10.0, lo_open=True, unit="cSt")
+        self._check_range()
+        self._check_held()
 
     def kinematic_viscosity(self, temperature):
-        """ν(T) [m²/s] for ``temperature`` [K] (scalar or array). Yu 2017 eq 18."""
+        """ν(T) [m²/s] of the law for ``temperature`` [K] (scalar or array). Yu 2017 eq 18."""
         return walther_kinematic_viscosity(temperature, self.a, self.b, self.c)
+
+    def viscosity_at(self, t: float) -> float:
+        """The law at one float temperature [K] → ν [m²/s] (math instead of numpy)."""
+        return _walther_cst(math.log10(t), self.a, self.b, self.c) * CST
 
     def source(self, field: str) -> str:
         return dict(self.provenance).get(field, "")
@@ -71,12 +201,19 @@ def walther_kinematic_viscosity(temperature, a: float, b: float, c: float = 0.7)
     67.38
     """
     t = check_temperature("temperature", temperature)
-    nu_cst = 10.0 ** (10.0 ** (a - b * np.log10(t))) - c
-    return nu_cst * CST
+    return _walther_cst(np.log10(t), a, b, c) * CST
 
 
 def walther_from_two_points(
-    t1: float, nu1: float, t2: float, nu2: float, c: float = 0.7, key: str = "", name: str = ""
+    t1: float,
+    nu1: float,
+    t2: float,
+    nu2: float,
+    c: float = 0.7,
+    key: str = "",
+    name: str = "",
+    lower_limit: float = 0.0,
+    upper_limit: float = math.inf,
 ) -> WaltherViscosity:
     """Walther/ASTM D341 fit through two measured viscosities.
 
@@ -86,6 +223,7 @@ def walther_from_two_points(
     nu1, nu2 : kinematic viscosities [m²/s] at t1, t2; ν + c must exceed 1 cSt so that
         lg lg(ν + c) is defined
     c : additive constant [cSt] (ASTM D341: 0.7)
+    lower_limit, upper_limit : the lubricant's range [K] (:class:`ViscosityRange`)
 
     Returns the :class:`WaltherViscosity` with b = (Y1 − Y2)/(lg T2 − lg T1), a = Y1 + b·lg T1,
     Y = lg lg(ν[cSt] + c).
@@ -116,19 +254,30 @@ def walther_from_two_points(
             f"nu2 = {nu2!r} at t2 = {t2!r} K give b = {b:g} <= 0"
         )
     prov = (("a", "derived: ASTM D341 two-point fit"), ("b", "derived: ASTM D341 two-point fit"))
-    return WaltherViscosity(key=key, name=name, a=float(a), b=float(b), c=c, provenance=prov)
-
-
-#: The reference temperatures of ν40 and ν100 (ISO 3448, ASTM D341) [K].
-T40, T100 = 313.15, 373.15
+    return WaltherViscosity(
+        key=key,
+        name=name,
+        a=float(a),
+        b=float(b),
+        c=c,
+        provenance=prov,
+        lower_limit=lower_limit,
+        upper_limit=upper_limit,
+    )
 
 
 def walther_from_reference(
-    viscosity_40: float, viscosity_100: float, c: float = 0.7, key: str = "", name: str = ""
+    viscosity_40: float,
+    viscosity_100: float,
+    c: float = 0.7,
+    key: str = "",
+    name: str = "",
+    lower_limit: float = 0.0,
+    upper_limit: float = math.inf,
 ) -> WaltherViscosity:
     """Walther/ASTM D341 model through the kinematic viscosities at 40 and 100 °C, the two
     numbers of every lubricant datasheet (:func:`walther_from_two_points` at 313.15 and
-    373.15 K). Every fluid lubricant of servofmu is this model: catalogue entries that give
+    373.15 K): the model of a lubricant with two known viscosities. Catalogue entries that give
     a, b (and c) are turned into ν40 and ν100 first, so that the FMU parameters
     ``lubricant_viscosity_40``/``_100`` reproduce them exactly.
 
@@ -136,6 +285,7 @@ def walther_from_reference(
     ----------
     viscosity_40, viscosity_100 : ν at 40 and 100 °C [m²/s], ν100 < ν40
     c : Walther's additive constant [cSt] (ASTM D341: 0.7)
+    lower_limit, upper_limit : the lubricant's range [K] (:class:`ViscosityRange`)
 
     Returns
     -------
@@ -154,4 +304,186 @@ def walther_from_reference(
             f"viscosity_100 = {nu100!r} m²/s must be below viscosity_40 = {nu40!r} m²/s "
             "(a lubricant thins on heating)"
         )
-    return walther_from_two_points(T40, nu40, T100, nu100, c=c, key=key, name=name)
+    return walther_from_two_points(
+        T40, nu40, T100, nu100, c=c, key=key, name=name,
+        lower_limit=lower_limit, upper_limit=upper_limit,
+    )  # fmt: skip
+
+
+@dataclass(frozen=True, kw_only=True)
+class VogelViscosity(ViscosityRange):
+    """Kinematic viscosity model ln ν = a + b/(T − T∞) (Vogel 1921), ν in m²/s, T in K.
+
+    Attributes
+    ----------
+    key, name : catalogue key and name
+    a : ln ν at infinite temperature [ln(m²/s)]
+    b : [K], > 0
+    t_inf : Vogel temperature T∞ [K], where the law diverges; below ``lower_limit`` (and below
+        every point it was fitted through)
+    points : the (T [K], ν [m²/s]) points the law was fitted through
+    provenance : ((field, source), ...)
+    lower_limit, upper_limit : the lubricant's range [K] (:class:`ViscosityRange`)
+    """
+
+    key: str
+    name: str
+    a: float
+    b: float
+    t_inf: float
+    points: tuple[tuple[float, float], ...] = ()
+    provenance: tuple[tuple[str, str], ...] = ()
+
+    def __post_init__(self):
+        check_range("a", self.a)
+        check_positive("b", self.b, "K")
+        check_range("t_inf", self.t_inf, unit="K")
+        self._check_range()
+        coldest = min([t for t, _ in self.points] + [self.lower_limit or math.inf])
+        if not self.t_inf < coldest:
+            raise ValueError(
+                f"Vogel's T∞ = {self.t_inf:.6g} K must lie below the lowest temperature the "
+                f"law is used at ({coldest:.6g} K: the lower limit or the coldest point), "
+                "where it diverges"
+            )
+        self._check_held()
+
+    def kinematic_viscosity(self, temperature):
+        """ν(T) [m²/s] of the law for ``temperature`` [K] (scalar or array), Vogel 1921."""
+        t = check_temperature("temperature", temperature)
+        if np.any(np.asarray(t) <= self.t_inf):
+            raise ValueError(
+                f"temperature = {float(np.min(t))!r} K is at or below Vogel's T∞ = "
+                f"{self.t_inf:.6g} K, where the fit diverges"
+            )
+        return np.exp(_vogel_exponent(t, self.a, self.b, self.t_inf))
+
+    def viscosity_at(self, t: float) -> float:
+        """The law at one float temperature [K] (above T∞) → ν [m²/s]."""
+        return math.exp(_vogel_exponent(t, self.a, self.b, self.t_inf))
+
+    def source(self, field: str) -> str:
+        return dict(self.provenance).get(field, "")
+
+
+def _vogel_three(points) -> tuple[float, float, float]:
+    """(a, b, T∞) of Vogel's law through three (T [K], ln ν) points, in closed form: the ratio
+    of the two differences of ln ν fixes T∞ (linear in it), then b and a follow."""
+    (u1, y1), (u2, y2), (u3, y3) = sorted(points)
+    r = (y1 - y2) / (y2 - y3)
+    den = r * (u3 - u2) - (u2 - u1)
+    if den == 0.0:
+        raise ValueError("the three points lie on an Arrhenius line (T∞ → −inf)")
+    t_inf = (r * (u3 - u2) * u1 - (u2 - u1) * u3) / den
+    b = (y1 - y2) * (u1 - t_inf) * (u2 - t_inf) / (u2 - u1)
+    return y1 - b / (u1 - t_inf), b, t_inf
+
+
+def vogel_from_points(
+    points,
+    key: str = "",
+    name: str = "",
+    lower_limit: float = 0.0,
+    upper_limit: float = math.inf,
+) -> VogelViscosity:
+    """Vogel's law ln ν = a + b/(T − T∞) through ≥ 3 (T [K], ν [m²/s]) points: through three
+    exactly (closed form), through more by least squares in ln ν (scipy.optimize
+    .least_squares, from the closed form through the coldest, a middle and the warmest point).
+
+    Parameters
+    ----------
+    points : sequence of (temperature [K], kinematic viscosity [m²/s]), at three or more
+        different temperatures, the viscosity falling as the temperature rises
+    lower_limit, upper_limit : the lubricant's range [K] (:class:`ViscosityRange`); T∞ must lie
+        below the lower limit
+
+    Returns
+    -------
+    VogelViscosity
+
+    Examples
+    --------
+    Pennzane SHF X-2000 (Bessette 1997: 80 500, 107 and 14.3 cSt at −40, 40 and 100 °C):
+
+    >>> pts = [(233.15, 80500e-6), (313.15, 107e-6), (373.15, 14.3e-6)]
+    >>> v = vogel_from_points(pts)
+    >>> [round(float(v.kinematic_viscosity(t)) / nu, 12) for t, nu in pts]  # through each
+    [1.0, 1.0, 1.0]
+    >>> round(v.t_inf, 1)  # K, where the law diverges
+    137.8
+    """
+    pts = sorted((check_temperature("points temperature", t),
+                  check_positive("points viscosity", nu, "m²/s")) for t, nu in points)  # fmt: skip
+    temps = [t for t, _ in pts]
+    if len(pts) < 3 or len(set(temps)) != len(temps):
+        raise ValueError(f"Vogel's law needs three or more points at different temperatures: {pts}")
+    if any(n2 >= n1 for (_, n1), (_, n2) in itertools.pairwise(pts)):
+        raise ValueError(f"viscosity must fall as the temperature rises: points {pts}")
+    logs = [(t, math.log(nu)) for t, nu in pts]
+    a, b, t_inf = _vogel_three([logs[0], logs[len(logs) // 2], logs[-1]])
+    if len(pts) > 3:
+        from scipy.optimize import least_squares
+
+        u = np.array(temps)
+        y = np.array([ln for _, ln in logs])
+        fit = least_squares(
+            lambda x: _vogel_exponent(u, x[0], x[1], x[2]) - y,
+            (a, b, t_inf),
+            bounds=((-np.inf, 0.0, -np.inf), (np.inf, np.inf, temps[0])),
+            xtol=1e-15,
+            ftol=1e-15,
+        )
+        a, b, t_inf = (float(v) for v in fit.x)
+    if not (b > 0.0 and t_inf < temps[0]):
+        raise ValueError(
+            f"no Vogel law falls through the points {pts}: b = {b:g} K, T∞ = {t_inf:g} K "
+            "(needs b > 0 and T∞ below the coldest point)"
+        )
+    src = f"derived: Vogel's law through {len(pts)} points" + (
+        " (least squares in ln ν)" if len(pts) > 3 else ""
+    )
+    return VogelViscosity(
+        key=key, name=name, a=float(a), b=float(b), t_inf=float(t_inf), points=tuple(pts),
+        provenance=(("a", src), ("b", src), ("t_inf", src)),
+        lower_limit=lower_limit, upper_limit=upper_limit,
+    )  # fmt: skip
+
+
+def viscosity_model(
+    viscosity_40: float,
+    viscosity_100: float,
+    walther_c: float = 0.7,
+    cold_point: tuple[float, float] | None = None,
+    key: str = "",
+    name: str = "",
+    lower_limit: float = 0.0,
+    upper_limit: float = math.inf,
+) -> ViscosityRange:
+    """The model of a lubricant known by its ν40, ν100 and optionally one more point (the
+    FMU's parameters): the ASTM D341 line through ν40 and ν100 (Walther's ``walther_c``
+    [cSt]) without ``cold_point``, else Vogel's law through the three points.
+
+    Parameters
+    ----------
+    viscosity_40, viscosity_100 : ν at 40 and 100 °C [m²/s], ν100 < ν40
+    walther_c : Walther's c [cSt] (used without a cold point)
+    cold_point : (T [K], ν [m²/s]) or None
+    lower_limit, upper_limit : the lubricant's range [K]
+
+    Returns
+    -------
+    WaltherViscosity or VogelViscosity
+
+    Examples
+    --------
+    >>> v = viscosity_model(107e-6, 14.3e-6, cold_point=(233.15, 80500e-6))
+    >>> type(v).__name__, round(float(v.kinematic_viscosity(233.15)) * 1e6)  # cSt at −40 °C
+    ('VogelViscosity', 80500)
+    """
+    if cold_point is None:
+        return walther_from_reference(
+            viscosity_40, viscosity_100, c=walther_c, key=key, name=name,
+            lower_limit=lower_limit, upper_limit=upper_limit,
+        )  # fmt: skip
+    pts = [cold_point, (T40, viscosity_40), (T100, viscosity_100)]
+    return vogel_from_points(pts, key, name, lower_limit, upper_limit)

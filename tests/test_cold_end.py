@@ -1,0 +1,187 @@
+"""The cold end: BearingFriction outside the range of its lubricant's data sets
+``outside_lubricant_range``, logs one warning naming the temperature and the limit, holds the
+viscosity at its value at the limit and steps on; its optional third viscosity point makes the
+viscosity Vogel's law through the three points (physics/viscosity.py)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from fmpy.fmi1 import FMICallException
+from fmu_helpers import Fmu
+from pythonfmu.enums import Fmi2Status
+
+from servofmu.physics import catalog
+from servofmu.physics.bearing import BearingModel
+from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
+from servofmu.physics.units import CST
+from servofmu.physics.viscosity import (
+    VogelViscosity,
+    viscosity_model,
+    vogel_from_points,
+    walther_from_reference,
+)
+
+KRYTOX_LOWER = 233.15  # K: -40 °C, the lower end of Yu's use of his fit (lubricants.toml)
+
+
+def _warnings(fmu):
+    return [text for status, text in fmu.log if status == Fmi2Status.warning.value]
+
+
+def _run(fmu, temperature, steps=5, speed=0.17):
+    """``steps`` steps at ``temperature`` [K] and ``speed`` [rad/s] (fmpy raises on a status
+    worse than warning)."""
+    fmu.set(temperature=temperature, speed=speed)
+    for k in range(steps):
+        fmu.slave.doStep(k * 1e-3, 1e-3)
+    return fmu
+
+
+def test_krytox_at_173_k_steps_with_the_flag_and_one_warning(fmus):
+    fmu = Fmu(fmus["BearingFriction"], "gimbal_bearing").init(temperature=173.15, speed=0.17)
+    try:
+        _run(fmu, 173.15, steps=20)
+        assert fmu.get("outside_lubricant_range") is True
+        (warning,) = _warnings(fmu)  # one, however many steps
+        assert "gimbal_bearing" in warning and "173.15 K" in warning
+        assert "lubricant_minimum_temperature = 233.15 K" in warning and "-40.0 °C" in warning
+        nu, torque = fmu.get("kinematic_viscosity", "running_torque")
+        held = catalog.lubricant("krytox_143aa").kinematic_viscosity(KRYTOX_LOWER)
+        assert nu == pytest.approx(float(held), rel=1e-12)  # held at its value at -40 °C
+        assert math.isfinite(torque) and torque < 0.1  # N·m (the unheld law gave 5.3 kN·m)
+        # the fastest input the FMU takes: Palmgren's (ν·n)^(2/3) of the held -40 °C oil,
+        # about 3.4 N·m and 34 kW (the unheld law gave 8e6 N·m and 8e10 W)
+        _run(fmu, 173.15, steps=2, speed=1.0e4)
+        power = fmu.get("power_loss")
+        assert math.isfinite(power) and 1.0e4 < power < 1.0e5  # W
+        assert len(_warnings(fmu)) == 1
+    finally:
+        fmu.close()
+
+
+def test_krytox_at_253_k_has_the_flag_clear_and_no_warning(fmus):
+    fmu = Fmu(fmus["BearingFriction"], "b").init(temperature=253.15, speed=0.17)
+    try:
+        _run(fmu, 253.15)
+        assert fmu.get("outside_lubricant_range") is False
+        assert _warnings(fmu) == []
+    finally:
+        fmu.close()
+
+
+def test_leaving_the_range_again_warns_again_and_the_return_clears_the_flag(fmus):
+    fmu = Fmu(fmus["BearingFriction"], "b").init(temperature=293.15)
+    try:
+        for t, flag, count in ((293.15, False, 0), (350.0, True, 1), (340.0, True, 1),
+                               (300.0, False, 1), (200.0, True, 2)):  # fmt: skip
+            _run(fmu, t, steps=2)
+            assert (fmu.get("outside_lubricant_range"), len(_warnings(fmu))) == (flag, count), t
+        assert "above the upper end" in _warnings(fmu)[0]
+        assert "lubricant_maximum_temperature = 333.15 K" in _warnings(fmu)[0]
+    finally:
+        fmu.close()
+
+
+def test_the_cold_point_parameters_give_the_published_cold_viscosity(fmus):
+    """Pennzane SHF X-2000 by its numbers: ν40 = 107, ν100 = 14.3 and 80 500 cSt at -40 °C
+    (Bessette 1997): the FMU's viscosity at -40 °C is the published one, where the ASTM D341
+    line through ν40/ν100 alone (lubricant_viscosity_cold = 0) gives +57 %."""
+    numbers = {
+        "lubricant_viscosity_40": 107 * CST,
+        "lubricant_viscosity_100": 14.3 * CST,
+        "lubricant_walther_c": 0.7 * CST,
+        "lubricant_minimum_temperature": 218.15,
+        "lubricant_maximum_temperature": 373.15,
+    }
+    cold = {"lubricant_viscosity_cold": 80500 * CST, "lubricant_cold_temperature": 233.15}
+    got = {}
+    for label, extra in (("three points", cold), ("two points", {})):
+        fmu = Fmu(fmus["BearingFriction"], "b").init(temperature=233.15, **numbers, **extra)
+        try:
+            _run(fmu, 233.15, steps=1)
+            got[label] = fmu.get("kinematic_viscosity") / CST
+            assert fmu.get("outside_lubricant_range") is False
+        finally:
+            fmu.close()
+    assert got["three points"] == pytest.approx(80500, rel=1e-9)
+    assert got["two points"] / 80500 - 1 == pytest.approx(0.569, abs=0.002)
+
+
+@pytest.mark.parametrize(
+    "extra, text",
+    [
+        ({"lubricant_viscosity_cold": 1e-3, "lubricant_cold_temperature": 313.15},
+         "at least 1 K from 313.15"),
+        ({"lubricant_viscosity_cold": 1e-6, "lubricant_cold_temperature": 233.15},
+         "must fall as the temperature rises"),
+        ({"lubricant_viscosity_cold": 1e-2, "lubricant_cold_temperature": 273.15,
+          "lubricant_minimum_temperature": 233.15}, "T∞"),  # T∞ = 246 K
+        ({"lubricant_minimum_temperature": 400.0}, "must lie above lubricant_minimum"),
+        ({"lubricant_minimum_temperature": 1.0},
+         "lubricant_minimum_temperature = 1.0 K: the viscosity at lower_limit"),
+    ],
+)  # fmt: skip
+def test_an_impossible_lubricant_is_refused_naming_the_values(fmus, extra, text):
+    fmu = Fmu(fmus["BearingFriction"], "b").init(**extra)
+    try:
+        with pytest.raises(FMICallException, match="status 2"):
+            fmu.slave.doStep(0.0, 1e-3)
+        errors = " ".join(t for s, t in fmu.log if s >= Fmi2Status.error.value)
+        assert text in errors and "lubricant_" in errors, fmu.log
+    finally:
+        fmu.close()
+
+
+# ------------------------------------------------------------------------------ library
+def test_the_range_holds_the_viscosity_below_and_extrapolates_above():
+    v = walther_from_reference(32e-6, 5.4e-6, lower_limit=253.15, upper_limit=373.15)
+    t = np.array([173.15, 253.15, 300.0, 373.15, 450.0])
+    assert list(v.outside(t)) == [True, False, False, False, True]
+    got = v.operating_viscosity(t)
+    law = v.kinematic_viscosity(t)
+    assert got[0] == law[1] and list(got[1:]) == list(law[1:])  # held below, the law above
+    assert [v.operating_viscosity_at(float(x)) for x in t] == pytest.approx(list(got), rel=1e-13)
+
+
+def test_the_pair_holds_the_viscosity_on_both_paths():
+    pair = pair_from_parameters(default_parameters())
+    out = BearingModel(pair).evaluate(173.15, 0.17)
+    exact = BearingModel(pair).curves(np.array([173.15, KRYTOX_LOWER]), 0.17)
+    held = float(catalog.lubricant("krytox_143aa").kinematic_viscosity(KRYTOX_LOWER))
+    assert out.kinematic_viscosity == pytest.approx(held, rel=1e-12)
+    assert list(exact.kinematic_viscosity) == pytest.approx([held, held], rel=1e-12)
+    assert out.outside_lubricant_range and list(exact.outside_lubricant_range) == [True, False]
+
+
+def test_vogel_through_three_points_by_hand():
+    """ln ν = a + b/(T − T∞) through (250, e^2), (300, e^1), (400, e^0) [K, m²/s]: the
+    differences 1 = b·(1/(250 − T∞) − 1/(300 − T∞)) and 1 = b·(1/(300 − T∞) − 1/(400 − T∞))
+    give 100·(250 − T∞) = 50·(400 − T∞), T∞ = 100 K, b = 1/(1/150 − 1/200) = 600 K,
+    a = 2 − 600/150 = −2."""
+    v = vogel_from_points([(300.0, math.e), (250.0, math.e**2), (400.0, 1.0)])
+    assert (v.a, v.b, v.t_inf) == pytest.approx((-2.0, 600.0, 100.0), rel=1e-12)
+    assert isinstance(viscosity_model(107e-6, 14.3e-6, cold_point=(233.15, 0.08)), VogelViscosity)
+
+
+@pytest.mark.parametrize(
+    "points, text",
+    [
+        ([(250.0, 1.0), (300.0, 0.5)], "three or more points"),
+        ([(250.0, 1.0), (250.0, 0.9), (300.0, 0.5)], "different temperatures"),
+        ([(250.0, 1.0), (300.0, 2.0), (350.0, 0.5)], "must fall"),
+        ([(-1.0, 1.0), (300.0, 0.5), (350.0, 0.4)], "points temperature = -1.0"),
+    ],
+)
+def test_vogel_refuses_points_it_cannot_pass_through(points, text):
+    with pytest.raises(ValueError, match=text):
+        vogel_from_points(points)
+
+
+def test_a_law_without_a_finite_value_at_the_lower_limit_is_refused():
+    with pytest.raises(ValueError, match=r"lower_limit = 1\.0 K is inf"):
+        walther_from_reference(32e-6, 5.4e-6, lower_limit=1.0)
+    with pytest.raises(ValueError, match="must lie below the lowest temperature"):
+        vogel_from_points([(250.0, 1.0), (300.0, 0.01), (350.0, 0.005)], lower_limit=150.0)
