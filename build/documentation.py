@@ -132,9 +132,9 @@ def _bearing_curve() -> Curve:
         "fall below 0.01 N·mm (the axis' end), and SKF's replenishment factor cuts its rolling "
         "torque as the base oil thickens. Outside the range of the lubricant's data "
         "(lubricant_minimum_temperature … lubricant_maximum_temperature; the default Krytox "
-        "143AA: −40…+60 °C, Yu's) the output outside_lubricant_range is set, and below it the "
-        "viscosity is held at its value at −40 °C: the torque there follows the fits and the "
-        "preload only. "
+        "143AA: −40…+60 °C, Yu's) the output outside_lubricant_range is set, and below its "
+        "flow limit (the default's −40 °C) the viscosity is held at its value there: the "
+        "torque there follows the fits and the preload only. "
         + (
             "The start values are this build's preset (see the parameters' provenance)."
             if _build_start("BearingFriction")

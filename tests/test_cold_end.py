@@ -156,6 +156,45 @@ def test_the_pair_holds_the_viscosity_on_both_paths():
     assert out.outside_lubricant_range and list(exact.outside_lubricant_range) == [True, False]
 
 
+def _d341_cst(t, nu40_cst, nu100_cst, c=0.7):
+    """ASTM D341's line through ν40 and ν100 at t [K], written out here [cSt]."""
+    y40, y100 = (math.log10(math.log10(n + c)) for n in (nu40_cst, nu100_cst))
+    b = (y40 - y100) / (math.log10(373.15) - math.log10(313.15))
+    a = y40 + b * math.log10(313.15)
+    return 10.0 ** (10.0 ** (a - b * math.log10(t))) - c
+
+
+def test_a_lubricant_without_a_flow_limit_extrapolates_its_d341_line_below_40_c():
+    """ISO VG 32 is known at 40 and 100 °C only (no pour point): below 40 °C it is outside its
+    data and flagged, and its viscosity is the ASTM D341 line's, not the 40 °C value; the
+    preset says so (lubricant_minimum_temperature 0) and the parameter path agrees."""
+    rec = catalog.lubricant_record("iso_vg32")
+    v = rec.viscosity
+    nu40, nu100 = rec.viscosity_40 * 1e6, rec.viscosity_100 * 1e6
+    assert v.extrapolate_below and v.lower_limit == pytest.approx(313.15)
+    for t in (293.15, 253.15, 233.15):
+        assert v.outside(t)
+        expected = _d341_cst(t, nu40, nu100) * 1e-6
+        assert float(v.operating_viscosity(t)) == pytest.approx(expected, rel=1e-9)
+        assert v.operating_viscosity_at(t) == pytest.approx(expected, rel=1e-9)
+    # what holding the 40 °C value would miss: about 70 times the viscosity at −40 °C
+    assert _d341_cst(233.15, nu40, nu100) > 50 * nu40
+    params = default_parameters(lubricant="iso_vg32")
+    assert params["lubricant_minimum_temperature"] == 0.0
+    pair = pair_from_parameters(params)
+    assert pair.lubricant.extrapolate_below and pair.lubricant.lower_limit == pytest.approx(313.15)
+    assert float(pair.lubricant.operating_viscosity(233.15)) == pytest.approx(
+        _d341_cst(233.15, nu40, nu100) * 1e-6, rel=1e-9
+    )
+
+
+def test_a_flow_limit_given_as_a_parameter_holds_the_viscosity_below_it():
+    params = default_parameters(lubricant="iso_vg32") | {"lubricant_minimum_temperature": 263.15}
+    visc = pair_from_parameters(params).lubricant
+    assert not visc.extrapolate_below and visc.lower_limit == 263.15
+    assert float(visc.operating_viscosity(233.15)) == float(visc.kinematic_viscosity(263.15))
+
+
 def test_vogel_through_three_points_by_hand():
     """ln ν = a + b/(T − T∞) through (250, e^2), (300, e^1), (400, e^0) [K, m²/s]: the
     differences 1 = b·(1/(250 − T∞) − 1/(300 − T∞)) and 1 = b·(1/(300 − T∞) − 1/(400 − T∞))

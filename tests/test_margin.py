@@ -301,11 +301,12 @@ def test_factors_of_another_standard_from_the_input_file(tmp_path, capsys):
 
 # ------------------------------------------------------------------------------ the examples
 def _check_outputs(out: Path, text: str, code: int) -> None:
+    """The table, the CSVs with units, the plot, and the exit code of a margin run."""
     rows = _csv(out / "margin.csv")
     header = list(rows[0])
     assert "temperature [degC]" in header and "margin T/T_min-1 [-]" in header
-    assert all("[" in h for h in header if h not in ("life", "case", *("overloaded",
-               "unloaded", "locked")))  # fmt: skip
+    flags = ("overloaded", "unloaded", "locked", "outside_lubricant_range")
+    assert all("[" in h for h in header if h not in ("life", "case", *flags))
     assert (out / "margin.png").stat().st_size > 20000
     margins = [float(r["margin T/T_min-1 [-]"]) for r in rows]
     for extra in ("margin_draws.csv", "margin_transient.csv"):
@@ -337,6 +338,12 @@ def test_the_example_user_catalogue(tmp_path, capsys):
     assert "mechanism: my_gimbal" in text
     assert "no tolerance bands for mounting 'my_gimbal'" in text  # said, not silently skipped
     assert code == 0
+    # the example grease is known at 40 and 100 °C only: every colder row is marked outside
+    # the lubricant's data (its viscosity extrapolated), every row from 40 °C on is not
+    rows = _csv(out / "margin.csv")
+    for r in rows:
+        outside = r["outside_lubricant_range"] == "1"
+        assert outside == (float(r["temperature [degC]"]) < 40.0), r
 
 
 def test_a_torque_speed_curve_a_temperature_coefficient_and_drawn_bands(tmp_path):

@@ -349,8 +349,8 @@ def _notes(coarse: bool) -> list[str]:
         "min); 'never': not within the run. torque after 30 min: its deviation then.",
         "flags [min]: time the transient bearing was unloaded (preload lost), locked (no "
         "radial clearance left), overloaded (4200 MPa) or outside the range of its "
-        "lubricant's data (the viscosity held at its lower end below it); qs unloaded: the "
-        "same quasi-statically.",
+        "lubricant's data (its viscosity held below a flow limit, else extrapolated); qs "
+        "unloaded: the same quasi-statically.",
         "Steps: gimbal loop 10 ms, its network 1 s; Ning's system 1 s (ssp/README.md); rows "
         f"every {ROW:g} s; {SOAK / 60:g} min soak with the loop running before the chamber "
         "moves."

@@ -28,7 +28,7 @@ from .common import ScenarioResult, Table, plateau_mean, system_path
 TEMPS_C = (-40.0, -20.0, 0.0, 20.0, 40.0, 60.0)  # Yu §3 chamber temperatures
 SPEED = 10.0 * DEG  # rad/s, the assumed test speed of the Yu reproduction
 #: BearingFriction's flags, each a column of the rows (outside_lubricant_range: the chamber
-#: left the range of the lubricant's data, the viscosity held at its lower end below it)
+#: left the range of the lubricant's data: held below a flow limit, else extrapolated)
 FLAGS = ("overloaded", "locked", "unloaded", "outside_lubricant_range")
 #: The gimbal's mounting variants (ssp/seeker_gimbal/variants: each a catalogue preset bound in
 #: full), after the system's own default, the yoke: what the design choice of the frame does.

@@ -30,8 +30,10 @@ Vogel's law through them and ``lubricant_viscosity_cold`` at ``lubricant_cold_te
 (:mod:`servofmu.physics.viscosity`). Outside ``lubricant_minimum_temperature`` …
 ``lubricant_maximum_temperature`` (the range of the lubricant's data) the output
 ``outside_lubricant_range`` is set and one warning naming the temperature and the limit is
-logged each time the lubricant's temperature leaves the range; below it the viscosity is held
-at its value at the lower end. ``preload`` is never negative, ``axial_play`` is the gap of an
+logged each time the lubricant's temperature leaves the range; below a flow limit
+(``lubricant_minimum_temperature`` > 0) the viscosity is held at its value there, and a
+lubricant without one (0) has its ASTM D341 line extrapolated below its coldest point.
+``preload`` is never negative, ``axial_play`` is the gap of an
 unloaded pair, ``reverse_loaded`` says a bearing is loaded on the other flanks of its grooves
 (:func:`servofmu.physics.pair_state.preload_force`, :func:`~servofmu.physics.pair_state.axial_play`,
 :func:`~servofmu.physics.pair_state.state_flags`).
@@ -288,9 +290,11 @@ class BearingFriction(ServoSlave):
         # appended after the parameters, so that earlier value references stay
         _flag(
             "outside_lubricant_range",
-            "The lubricant's temperature lies outside the range of its data "
-            "(lubricant_minimum_temperature, lubricant_maximum_temperature): below it the "
-            "viscosity is held at its value at the lower end, above it extrapolated",
+            "The lubricant's temperature lies outside the range of its data (from "
+            "lubricant_minimum_temperature, or the coldest viscosity point, to "
+            "lubricant_maximum_temperature): below a flow limit the viscosity is held at its "
+            "value there, below the coldest point of a lubricant without one and above the "
+            "range the viscosity law is extrapolated",
             ("lubrication", "lubricant"),
             _TEMPS,
         ),
@@ -347,20 +351,26 @@ class BearingFriction(ServoSlave):
     def _warn_lubricant_range(self, temps):
         """One warning each time the lubricant's temperature leaves the range of its data."""
         t = temps if type(temps) is float else 0.5 * (temps[2] + temps[3])  # the rings' mean
-        lo, hi = self.lubricant_minimum_temperature, self.lubricant_maximum_temperature
-        below = t < lo
-        limit, what = (lo, "lower") if below else (hi, "upper")
-        then = (
-            "the viscosity is held at its value there"
-            if below
-            else "the viscosity law is extrapolated"
-        )
+        visc = self.model.pair.lubricant
+        below = t < visc.lower_limit
+        limit = visc.lower_limit if below else visc.upper_limit
+        if not below:
+            name = "lubricant_maximum_temperature"
+        elif visc.lower_limit == self.lubricant_minimum_temperature:
+            name = "lubricant_minimum_temperature"
+        else:
+            name = "the coldest viscosity point"
+        if below and not visc.extrapolate_below:
+            then = "the viscosity is held at its value there"
+        elif below:
+            then = "no flow limit is known, so the ASTM D341 line is extrapolated"
+        else:
+            then = "the viscosity law is extrapolated"
         self.log(
             f"{self.instance_name}: the lubricant's temperature {t:.2f} K ({t - 273.15:.1f} °C) "
-            f"is {'below' if below else 'above'} the {what} end of its data, "
-            f"lubricant_{'minimum' if below else 'maximum'}_temperature = {limit:.2f} K "
-            f"({limit - 273.15:.1f} °C); {then}, and outside_lubricant_range is set until it "
-            "returns",
+            f"is {'below' if below else 'above'} the {'lower' if below else 'upper'} end of its "
+            f"data, {name} = {limit:.2f} K ({limit - 273.15:.1f} °C); {then}, and "
+            "outside_lubricant_range is set until it returns",
             status=Fmi2Status.warning,
         )
 

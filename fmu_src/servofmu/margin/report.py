@@ -113,7 +113,7 @@ def _fmt(v):
 
 
 def _flags(row) -> str:
-    return "".join(f[0].upper() for f in FLAGS if row.get(f))
+    return "".join(letter for f, letter in FLAGS.items() if row.get(f))
 
 
 def _draw_stats(result: MarginResult) -> dict:
@@ -270,7 +270,9 @@ def _table(result: MarginResult) -> list[str]:
         lines.append(line + f" {_flags(r)}")
     lines.append(
         "flags: O overloaded (contact pressure above ISO 76's limit), U unloaded "
-        "(preload lost), L locked (no operating clearance)"
+        "(preload lost), L locked (no operating clearance), X outside the range of the "
+        "lubricant's data (its viscosity extrapolated or held: the bearing torque there is "
+        "not backed by data)"
     )
     return lines
 

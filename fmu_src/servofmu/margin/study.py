@@ -32,7 +32,8 @@ BEARING_TERMS = (
     "viscous_torque",
     "grease_torque",
 )
-FLAGS = ("overloaded", "unloaded", "locked")
+#: The bearing's flags a margin row carries, with the letter the table shows for each.
+FLAGS = {"overloaded": "O", "unloaded": "U", "locked": "L", "outside_lubricant_range": "X"}
 
 
 def available_torque(motor: Motor, temperature, speed):

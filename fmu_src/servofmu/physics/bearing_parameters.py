@@ -295,16 +295,23 @@ def _lubricant_problems(p: Mapping[str, object]) -> list[str]:
 
 
 def _viscosity(p: Mapping[str, object]):
-    """The viscosity model of parameter set ``p`` (:func:`.viscosity.viscosity_model`)."""
-    nu_cold = p["lubricant_viscosity_cold"]
+    """The viscosity model of parameter set ``p`` (:func:`.viscosity.viscosity_model`): its
+    range runs from ``lubricant_minimum_temperature`` (a flow limit: pour point or minimum
+    temperature), or the coldest viscosity point if lower or when none is given (0), to
+    ``lubricant_maximum_temperature``; without a flow limit the ASTM D341 line is extrapolated
+    below its coldest point (:mod:`.viscosity`)."""
+    nu_cold, t_cold = p["lubricant_viscosity_cold"], p["lubricant_cold_temperature"]
+    flow = p["lubricant_minimum_temperature"]
+    coldest = min(T40, t_cold) if nu_cold > 0.0 else T40
     return viscosity_model(
         p["lubricant_viscosity_40"],
         p["lubricant_viscosity_100"],
         p["lubricant_walther_c"] / CST,
-        (p["lubricant_cold_temperature"], nu_cold) if nu_cold > 0.0 else None,
+        (t_cold, nu_cold) if nu_cold > 0.0 else None,
         key="parameters",
-        lower_limit=p["lubricant_minimum_temperature"],
+        lower_limit=min(flow, coldest) if flow > 0.0 else coldest,
         upper_limit=p["lubricant_maximum_temperature"],
+        flow_limit=flow > 0.0,
     )
 
 

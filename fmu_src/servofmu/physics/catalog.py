@@ -395,7 +395,10 @@ def _viscosity_model(walther: WaltherViscosity, v: dict, prov: dict, nu: dict, p
     limits = {"lower_limit": lower, "upper_limit": upper}
     range_prov = (("lower_limit", lo_src), ("upper_limit", hi_src))
     if not points:
-        return dataclasses.replace(walther, provenance=walther.provenance + range_prov, **limits)
+        no_flow_limit = not any(f in v for f in ("pour_point", "minimum_temperature"))
+        return dataclasses.replace(
+            walther, provenance=walther.provenance + range_prov, **limits
+        ).extrapolating(no_flow_limit)
     model = vogel_from_points(all_points, walther.key, walther.name, **limits)
     return dataclasses.replace(model, provenance=model.provenance + range_prov)
 

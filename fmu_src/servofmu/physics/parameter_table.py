@@ -542,9 +542,11 @@ def _lubricant_range_specs() -> tuple[ParameterSpec, ...]:
     return (
         _real(
             "lubricant_minimum_temperature",
-            "Lower end of the lubricant's data: its pour point, or its lowest published "
-            "viscosity if lower (below it: outside_lubricant_range, the viscosity held at its "
-            "value there; 0: no lower end)",
+            "The lubricant's flow limit: its pour point or the maker's minimum temperature; the "
+            "range of its data starts there, or at its coldest viscosity point if lower (below "
+            "it: outside_lubricant_range, the viscosity held at its value there). 0: none "
+            "known: the range starts at the coldest viscosity point, below which the ASTM D341 "
+            "line is extrapolated",
             "lubricant",
             "K",
             "degC",

@@ -143,13 +143,21 @@ def viscosity_values(rec) -> tuple[dict, dict]:
     values = {
         "lubricant_viscosity_40": float(rec.viscosity_40),
         "lubricant_viscosity_100": float(rec.viscosity_100),
-        "lubricant_minimum_temperature": float(model.lower_limit),
+        # a flow limit only: without one the FMU starts the range at the coldest point itself
+        "lubricant_minimum_temperature": 0.0
+        if model.extrapolate_below
+        else float(model.lower_limit),
         "lubricant_maximum_temperature": float(model.upper_limit),
     }
     sources = {
         "lubricant_viscosity_40": f"{rec.source('viscosity_40')} ({key})",
         "lubricant_viscosity_100": f"{rec.source('viscosity_100')} ({key})",
-        "lubricant_minimum_temperature": f"{model.source('lower_limit')} ({key})",
+        "lubricant_minimum_temperature": (
+            f"no pour point or minimum temperature published: the range starts at the coldest "
+            f"viscosity point, and the ASTM D341 line is extrapolated below it ({key})"
+            if model.extrapolate_below
+            else f"{model.source('lower_limit')} ({key})"
+        ),
         "lubricant_maximum_temperature": f"{model.source('upper_limit')} ({key})",
     }
     if not isinstance(model, VogelViscosity):

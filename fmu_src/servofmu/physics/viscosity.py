@@ -30,16 +30,27 @@ is used at), and through the four points of X/C 5606J it misses none by more tha
 is lower) to an upper limit the catalogue states (the maker's upper operating temperature,
 else the highest published viscosity). ASTM D341-20 §3.1 limits its charts to temperatures
 where the oil is a homogeneous liquid, above its cloud point; the pour point, a few kelvin
-below the cloud point, is what lubricant datasheets publish. Below the lower limit the
-lubricant no longer flows as the law says (a gel, then a solid), and no number is known:
-:meth:`ViscosityRange.operating_viscosity` holds the viscosity at its value at the lower limit
-there, keeping the torques finite, and :meth:`ViscosityRange.outside` flags the point. Above
-the upper limit the law is extrapolated (D341 §1.2: the lines stay straight to about 340 °C;
-the viscosity keeps falling and the viscous torque with it), and flagged too.
+below the cloud point, is what lubricant datasheets publish. Outside the range
+:meth:`ViscosityRange.outside` flags the point, and :meth:`ViscosityRange.operating_viscosity`
+gives what a bearing model uses there:
+
+- below a lower limit that is a *flow limit* (a pour point, a maker's minimum temperature, or
+  the coldest temperature a law was fitted over: the record vouches that the liquid law ends
+  there), the lubricant no longer flows as the law says (a gel, then a solid) and no number is
+  known: the viscosity is held at its value at the limit, keeping the torques finite;
+- below a lower limit that is only the lubricant's coldest published viscosity (no flow limit
+  known, ``extrapolate_below``: a datasheet's ν40 and ν100 alone), the lubricant is still a
+  liquid for all the record says, and the ASTM D341 line is extrapolated: it is the usual
+  estimate of a cold oil's viscosity (§1.2), finite at every temperature, and holding the
+  40 °C value would understate a cold bearing's torque many times over. (Vogel's law, fitted
+  through a cold point, diverges at T∞ and is held below its lower limit.)
+- above the upper limit the law is extrapolated (D341 §1.2: the lines stay straight to about
+  340 °C; the viscosity keeps falling and the viscous torque with it).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 from dataclasses import dataclass
@@ -73,10 +84,13 @@ class ViscosityRange:
     ----------
     lower_limit : its pour point, or its lowest published viscosity if lower [K] (0: none)
     upper_limit : the upper limit its catalogue entry states [K] (inf: none)
+    extrapolate_below : True when ``lower_limit`` is only the coldest published viscosity (no
+        flow limit known): the law is extrapolated below it; False: held at its value there
     """
 
     lower_limit: float = 0.0
     upper_limit: float = math.inf
+    extrapolate_below: bool = False
 
     def _check_range(self):
         lo = check_range("lower_limit", self.lower_limit, 0.0, None, unit="K")
@@ -87,7 +101,7 @@ class ViscosityRange:
 
     def _check_held(self):
         """The viscosity held below ``lower_limit`` must be a number: the law there, finite."""
-        if self.lower_limit > 0.0:
+        if self.lower_limit > 0.0 and not self.extrapolate_below:
             try:
                 nu = self.viscosity_at(self.lower_limit)
             except (OverflowError, ZeroDivisionError):
@@ -103,6 +117,24 @@ class ViscosityRange:
 
     def viscosity_at(self, t: float) -> float:  # the law on one float (subclasses)
         raise NotImplementedError
+
+    def extrapolating(self, below: bool = True):
+        """This model with ``extrapolate_below`` set to ``below`` where its law allows it (the
+        ASTM D341 line, finite everywhere; Vogel's law diverges at T∞ and stays held).
+
+        Returns
+        -------
+        ViscosityRange
+
+        Examples
+        --------
+        >>> v = walther_from_reference(32e-6, 5.4e-6, lower_limit=313.15)
+        >>> v.extrapolating().extrapolate_below, v.extrapolate_below
+        (True, False)
+        """
+        if isinstance(self, VogelViscosity) or below == self.extrapolate_below:
+            return self
+        return dataclasses.replace(self, extrapolate_below=below)
 
     def outside(self, temperature):
         """True where ``temperature`` [K] (float or array) lies outside
@@ -123,20 +155,34 @@ class ViscosityRange:
 
     def operating_viscosity(self, temperature):
         """The viscosity a bearing model uses at ``temperature`` [K] (float or array): the
-        law's, held at its value at ``lower_limit`` below it (module docstring) [m²/s].
+        law's; below ``lower_limit`` held at its value there, or the law extrapolated when
+        ``extrapolate_below`` (module docstring) [m²/s].
+
+        Returns
+        -------
+        float or ndarray
+            Kinematic viscosity [m²/s].
 
         Examples
         --------
-        >>> v = walther_from_reference(32e-6, 5.4e-6, lower_limit=253.15)
-        >>> bool(v.operating_viscosity(173.15) == v.kinematic_viscosity(253.15))
+        >>> held = walther_from_reference(32e-6, 5.4e-6, lower_limit=253.15)
+        >>> bool(held.operating_viscosity(173.15) == held.kinematic_viscosity(253.15))
+        True
+        >>> import dataclasses
+        >>> free = dataclasses.replace(held, lower_limit=313.15, extrapolate_below=True)
+        >>> bool(free.operating_viscosity(253.15) == free.kinematic_viscosity(253.15))
         True
         """
         t = check_temperature("temperature", temperature)
+        if self.extrapolate_below:
+            return self.kinematic_viscosity(t)
         return self.kinematic_viscosity(np.maximum(t, self.lower_limit))
 
     def operating_viscosity_at(self, t: float) -> float:
         """:meth:`operating_viscosity` on one float [K] → [m²/s] (the per-step path)."""
-        return self.viscosity_at(t if t > self.lower_limit else self.lower_limit)
+        if self.extrapolate_below or t > self.lower_limit:
+            return self.viscosity_at(t)
+        return self.viscosity_at(self.lower_limit)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -458,6 +504,7 @@ def viscosity_model(
     name: str = "",
     lower_limit: float = 0.0,
     upper_limit: float = math.inf,
+    flow_limit: bool = True,
 ) -> ViscosityRange:
     """The model of a lubricant known by its ν40, ν100 and optionally one more point (the
     FMU's parameters): the ASTM D341 line through ν40 and ν100 (Walther's ``walther_c``
@@ -469,6 +516,9 @@ def viscosity_model(
     walther_c : Walther's c [cSt] (used without a cold point)
     cold_point : (T [K], ν [m²/s]) or None
     lower_limit, upper_limit : the lubricant's range [K]
+    flow_limit : whether ``lower_limit`` is a flow limit (pour point, minimum temperature):
+        False makes the ASTM D341 line extrapolated below it (``extrapolate_below``; module
+        docstring)
 
     Returns
     -------
@@ -484,6 +534,6 @@ def viscosity_model(
         return walther_from_reference(
             viscosity_40, viscosity_100, c=walther_c, key=key, name=name,
             lower_limit=lower_limit, upper_limit=upper_limit,
-        )  # fmt: skip
+        ).extrapolating(not flow_limit)  # fmt: skip
     pts = [cold_point, (T40, viscosity_40), (T100, viscosity_100)]
     return vogel_from_points(pts, key, name, lower_limit, upper_limit)
