@@ -41,15 +41,18 @@ lint: $(STAMP)
 	$(BIN)/ruff check .
 	$(BIN)/ruff format --check .
 
-## benchmarks (not part of the test run)
+## benchmarks (not part of the test run): each prints its table and saves its figures with
+## the run's context to benchmarks/results/NAME.json, which the documentation's Performance
+## page reads (commit them after a run)
+RESULTS = benchmarks/results
 bench: $(STAMP)
-	$(BIN)/python benchmarks/bench_bearing.py --models
-	$(BIN)/python benchmarks/bench_actuator.py
-	$(BIN)/python benchmarks/bench_fmus.py --models
-	$(BIN)/python benchmarks/bench_harness.py
-	$(BIN)/python benchmarks/bench_sweep.py
-	$(BIN)/python benchmarks/bench_thermal_network.py
-	$(BIN)/python benchmarks/bench_calibration.py
+	$(BIN)/python benchmarks/bench_bearing.py --models --save $(RESULTS)/bench_bearing.json
+	$(BIN)/python benchmarks/bench_actuator.py --save $(RESULTS)/bench_actuator.json
+	$(BIN)/python benchmarks/bench_fmus.py --models --save $(RESULTS)/bench_fmus.json
+	$(BIN)/python benchmarks/bench_harness.py --save $(RESULTS)/bench_harness.json
+	$(BIN)/python benchmarks/bench_sweep.py --save $(RESULTS)/bench_sweep.json
+	$(BIN)/python benchmarks/bench_thermal_network.py --save $(RESULTS)/bench_thermal_network.json
+	$(BIN)/python benchmarks/bench_calibration.py --save $(RESULTS)/bench_calibration.json
 
 clean:
 	rm -rf $(VENV) $(OUT) .pytest_cache .ruff_cache .setuptools-build dist servofmu.egg-info
