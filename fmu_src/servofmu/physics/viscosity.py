@@ -1,9 +1,14 @@
-"""Lubricant viscosity versus temperature: the Walther equation (ASTM D341).
+r"""Lubricant viscosity versus temperature: the Walther equation (ASTM D341).
 
-Yu 2017 eq 18:  lg lg(ν + c) = a − b·lg T,  ν in cSt, T in K, lg = log10.
-For Krytox 143AA Yu fits a = 9.597, b = 3.773, c = 0.932 (catalogue key ``krytox_143aa``).
-ASTM D341 uses the same form with c = 0.7 and builds (a, b) from two measured viscosities:
-:func:`walther_from_two_points`.
+Yu 2017 eq 18:
+
+.. math::
+
+   \lg\lg(\nu + c) = a - b\lg T
+
+with ν in cSt, T in K and lg = log10. For Krytox 143AA Yu fits a = 9.597, b = 3.773,
+c = 0.932 (catalogue key ``krytox_143aa``). ASTM D341 uses the same form with c = 0.7 and
+builds (a, b) from two measured viscosities: :func:`walther_from_two_points`.
 """
 
 from __future__ import annotations
