@@ -5,7 +5,7 @@ BIN     = $(VENV)/bin
 STAMP   = $(VENV)/.installed-stamp
 OUT    ?= out
 
-.PHONY: run test test-long bench lint clean system-deps
+.PHONY: run test test-long bench lint docs clean system-deps
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -29,9 +29,15 @@ system-deps:
 	    || echo "libtbb12 could not be installed: the ecos tests will be skipped"; \
 	else echo "libtbb12 is missing (install it as root: apt-get install libtbb12): the ecos tests will be skipped"; fi
 
-## tests: lint, format check, test suite
-test: $(STAMP) system-deps lint
+## tests: lint, format check, the documentation, test suite
+test: $(STAMP) system-deps lint docs
 	$(BIN)/python -m pytest
+
+## documentation site into docs/_build/html, offline, warnings as errors; the examples gallery
+## runs its scripts (SERVOFMU_GALLERY=coarse: a few points per curve; full: as a user runs them)
+SERVOFMU_GALLERY ?= coarse
+docs: $(STAMP)
+	SERVOFMU_GALLERY=$(SERVOFMU_GALLERY) $(BIN)/sphinx-build -W --keep-going -q -b html docs docs/_build/html
 
 ## long mode: full-size fuzzing (10,000 cases per FMU) and soaks (1,000,000 steps); ~1 h
 test-long: $(STAMP) system-deps lint
@@ -56,3 +62,4 @@ bench: $(STAMP)
 
 clean:
 	rm -rf $(VENV) $(OUT) .pytest_cache .ruff_cache .setuptools-build dist servofmu.egg-info
+	rm -rf docs/_build docs/_generated docs/auto_examples docs/api/generated

@@ -11,7 +11,7 @@ the servofmu package that the FMU carries, so documentation changes leave the pa
 
 from __future__ import annotations
 
-import functools
+import contextlib
 import importlib
 import math
 import platform
@@ -320,11 +320,13 @@ _SETTINGS = {
 }
 
 
-@functools.lru_cache(maxsize=1)
+@contextlib.contextmanager
 def _docutils():
-    """docutils' publisher with the Sphinx cross-reference roles (``:func:`x```…) rendered as
-    code and Sphinx's ``currentmodule`` directive accepted (it only sets the scope of those
-    references in Sphinx)."""
+    """docutils' publisher with its own directives and roles only (a Sphinx build running in
+    the same process, as the examples gallery does, registers patched ones that need Sphinx),
+    the Sphinx cross-reference roles of the docstrings (``:func:`x```…) rendered as code and
+    Sphinx's ``currentmodule`` directive accepted (it only sets the scope of those references
+    in Sphinx)."""
     from docutils import nodes
     from docutils.core import publish_parts
     from docutils.parsers.rst import Directive, directives, roles
@@ -339,10 +341,15 @@ def _docutils():
         def run(self):
             return []
 
-    for role in XREF_ROLES:
-        roles.register_local_role(role, code)
-    directives.register_directive("currentmodule", CurrentModule)
-    return publish_parts
+    saved = directives._directives, roles._roles
+    directives._directives, roles._roles = {}, {}
+    try:
+        for role in XREF_ROLES:
+            roles.register_local_role(role, code)
+        directives.register_directive("currentmodule", CurrentModule)
+        yield publish_parts
+    finally:
+        directives._directives, roles._roles = saved
 
 
 def escape_bars(text: str) -> str:
@@ -414,11 +421,12 @@ def rst_to_html(text: str, strict: bool = False) -> str:
     if not text:
         return ""
     level = 2 if strict else 5
-    parts = _docutils()(
-        text,
-        writer="html5",
-        settings_overrides=_SETTINGS | {"report_level": level, "halt_level": level},
-    )
+    with _docutils() as publish_parts:
+        parts = publish_parts(
+            text,
+            writer="html5",
+            settings_overrides=_SETTINGS | {"report_level": level, "halt_level": level},
+        )
     return parts["html_title"] + parts["body"]
 
 
