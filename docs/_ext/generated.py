@@ -229,9 +229,9 @@ def _value(v) -> str:
 def _benchmark_rst(record: dict, title: str, doc: str) -> str:
     m = record["machine"]
     head = (
-        f"``{record['command']}``, {record['date']}, servofmu {record['servofmu']}, "
-        f"Python {record['python']}, {m['cpus']} cores, load average "
-        f"{m['load_average_1min']:.1f} at the end of the run"
+        f"Measured with ``{record['command']}`` on {record['date']}: servofmu "
+        f"{record['servofmu']}, Python {record['python']}, {m['cpus']} cores, load average "
+        f"{m['load_average_1min']:.1f} at the end of the run."
     )
     figures = record["figures"]
     tables = []
@@ -243,7 +243,15 @@ def _benchmark_rst(record: dict, title: str, doc: str) -> str:
     scalars = [(k, _value(v)) for k, v in _flatten(figures) if not isinstance(v, list)]
     if scalars:
         tables.insert(0, _table("figures", ("quantity", "value"), scalars, "80 20"))
-    return f"{title}\n{'-' * len(title)}\n\n{doc}\n\n{_escape(head)}.\n\n" + "\n".join(tables)
+    if m["load_average_1min"] > m["cpus"]:
+        tables.insert(
+            0,
+            f".. warning::\n\n   The machine was shared during this run (load average "
+            f"{m['load_average_1min']:.1f} on {m['cpus']} cores): absolute times are inflated, "
+            "and ratios less trustworthy than on a quiet machine. ``make bench`` measures "
+            "again.\n",
+        )
+    return f"{title}\n{'-' * len(title)}\n\n{doc}\n\n{head}\n\n" + "\n".join(tables)
 
 
 def performance_page() -> str:
@@ -264,8 +272,10 @@ def performance_page() -> str:
 def _first_paragraph(script: Path) -> str:
     import ast
 
+    from servofmu.build.documentation import escape_bars
+
     doc = ast.get_docstring(ast.parse(script.read_text(encoding="utf-8"))) or ""
-    return _escape(doc.split("\n\n")[0])
+    return escape_bars(doc.split("\n\n")[0])
 
 
 def generate(app) -> None:
