@@ -87,7 +87,8 @@ html_theme_options = {
     "navigation_with_keys": False,
     "show_toc_level": 2,
     "header_links_before_dropdown": 8,
-    "secondary_sidebar_items": ["page-toc"],
+    # the wide tables of the generated pages (reports, variables) get the page's width
+    "secondary_sidebar_items": {"**": ["page-toc"], "_generated/**": []},
     "footer_start": ["copyright"],
     "footer_end": [],
 }

@@ -4,7 +4,7 @@ Yu 2017 eq 18:
 
 .. math::
 
-   \lg\lg(\nu + c) = a - b\lg T
+   \lg\,\lg(\nu + c) = a - b\,\lg T
 
 with ν in cSt, T in K and lg = log10. For Krytox 143AA Yu fits a = 9.597, b = 3.773,
 c = 0.932 (catalogue key ``krytox_143aa``). ASTM D341 uses the same form with c = 0.7 and
