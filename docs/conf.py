@@ -87,8 +87,7 @@ html_theme_options = {
     "navigation_with_keys": False,
     "show_toc_level": 2,
     "header_links_before_dropdown": 8,
-    # the wide tables of the generated pages (reports, variables) get the page's width
-    "secondary_sidebar_items": {"**": ["page-toc"], "_generated/**": []},
+    "secondary_sidebar_items": ["page-toc"],
     "footer_start": ["copyright"],
     "footer_end": [],
 }

@@ -12,16 +12,20 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "fmu_src" / "servofmu" / "physics" / "data"
 
-#: Files checked, relative to the repository root. The catalogue data, but the two tables still
-#: being rewritten elsewhere (lubricants.toml, grease_torques.toml), which join once cleaned.
-FILES = [
-    *sorted(
-        p.relative_to(ROOT).as_posix()
-        for p in DATA.glob("*.toml")
-        if p.name not in ("lubricants.toml", "grease_torques.toml")
-    ),
-    "docs/README_next.md",
-]
+#: Files checked, relative to the repository root: the catalogue data (but the two tables still
+#: being rewritten elsewhere, lubricants.toml and grease_torques.toml, which join once cleaned),
+#: the documentation's pages and examples, and the next README.
+FILES = sorted(
+    p.relative_to(ROOT).as_posix()
+    for p in (
+        *DATA.glob("*.toml"),
+        *(ROOT / "docs").glob("*.md"),
+        *(ROOT / "docs").glob("*.rst"),
+        *(ROOT / "docs" / "guide").glob("*.md"),
+        *(ROOT / "docs" / "gallery").glob("*.py"),
+    )
+    if p.name not in ("lubricants.toml", "grease_torques.toml")
+)
 
 #: What history looks like: an issue of this project by number, or a commit hash (7 to 40 hex
 #: digits with at least one digit and one letter, not part of a number such as 6.248662e7).

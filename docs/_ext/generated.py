@@ -32,6 +32,9 @@ DOCS = Path(__file__).resolve().parents[1]
 ROOT = DOCS.parent
 OUT = DOCS / "_generated"
 RESULTS = ROOT / "benchmarks" / "results"
+#: First lines of a generated page with wide tables (reports, variables): no page-toc sidebar,
+#: so that the tables get the page's width.
+WIDE = ":html_theme.sidebar_secondary.remove: true\n\n"
 ROW_WIDTHS = "6 14 6 6 6 4 7 8 43"  # columns of a report's rows
 TITLES = {
     "yu2017": "Yu 2017: seeker-gimbal bearings",
@@ -77,7 +80,7 @@ def fmu_pages() -> list[str]:
         curve = doc.CURVES[name]()
         png = folder / f"{name}.png"
         doc.plot_curve(curve, png)
-        _write(folder / f"{name}.rst", doc.page_rst(name, png.name, curve.caption))
+        _write(folder / f"{name}.rst", WIDE + doc.page_rst(name, png.name, curve.caption))
     return list(FMUS)
 
 
@@ -145,7 +148,7 @@ def _paper_rst(paper: str, report: dict, folder: Path) -> str:
         for f in report["files"]
         if f.endswith(".png")
     )
-    return f"""{title}
+    return f"""{WIDE}{title}
 {"=" * len(title)}
 
 *{_escape(report["title"])}*: computed by ``servofmu paper {paper}`` when this page was
