@@ -112,8 +112,24 @@ def build_all(
 
 
 def build_info(fmu: Path) -> dict | None:
-    """The build record (``resources/servofmu_build.json``) of a built FMU, or None when
-    ``fmu`` is missing or not readable as one."""
+    """The build record (``resources/servofmu_build.json``) of a built FMU.
+
+    Parameters
+    ----------
+    fmu : str or pathlib.Path
+        The FMU archive.
+
+    Returns
+    -------
+    dict or None
+        The record (the package hash, the build's start values, …), or None when ``fmu`` is
+        missing or not readable as a servofmu FMU.
+
+    Examples
+    --------
+    >>> build_info(Path("no_such.fmu")) is None
+    True
+    """
     import zipfile
 
     try:

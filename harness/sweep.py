@@ -492,9 +492,32 @@ SWEEP_PACKAGES = ("dask", "distributed")
 
 
 def require_sweep_extra(packages=SWEEP_PACKAGES) -> None:
-    """:class:`~servofmu.harness.errors.MissingExtra` naming the extra to install when one of
-    ``packages`` is missing (sweeps and Monte-Carlo studies run on Dask, which a base install
-    of servofmu leaves out)."""
+    """Check that the packages of the ``sweep`` extra are installed (sweeps and Monte-Carlo
+    studies run on Dask, which a base install of servofmu leaves out).
+
+    Parameters
+    ----------
+    packages : sequence of str, optional
+        Import names to look for (default: those of the extra).
+
+    Returns
+    -------
+    None
+        When every package is importable.
+
+    Raises
+    ------
+    servofmu.harness.errors.MissingExtra
+        Naming the missing packages and the extra to install.
+
+    Examples
+    --------
+    >>> require_sweep_extra(("json", "csv"))  # present: nothing happens
+    >>> require_sweep_extra(("no_such_package_xyz",))
+    Traceback (most recent call last):
+    ...
+    servofmu.harness.errors.MissingExtra: no_such_package_xyz not installed: sweeps and ...
+    """
     import importlib.util
 
     from .errors import MissingExtra

@@ -57,7 +57,8 @@ def _escape(text) -> str:
 
 
 def _table(title: str, header, rows, widths: str | None = None) -> str:
-    lines = [f".. list-table:: {title}", "   :header-rows: 1", "   :class: variables"]
+    css = "variables report" if widths else "variables"  # report: the widths are kept
+    lines = [f".. list-table:: {title}", "   :header-rows: 1", f"   :class: {css}"]
     if widths:
         lines.append(f"   :widths: {widths}")
     lines.append("")

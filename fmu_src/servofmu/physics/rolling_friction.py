@@ -78,7 +78,7 @@ BEARING_TYPES = ("deep_groove", "angular_contact")
 REPLENISHMENT_KRS = {"oil_bath": 3.0e-8, "oil_jet": 3.0e-8, "grease": 6.0e-8, "oil_air": 6.0e-8}
 
 #: μbl, the boundary (additive-dependent) sliding coefficient, "generally ≈ 0,15" (SKF 10000 EN
-#: p. 103, stored copy p. 105).
+#: p. 103).
 MU_BOUNDARY = 0.15
 #: μEHL, the full-film sliding coefficient of ball bearings (SKF 10000 EN p. 103): mineral
 #: oils 0.05, synthetic oils 0.04, transmission fluids 0.1.
@@ -779,8 +779,8 @@ def series_constants(designation: str, contact_angle: float) -> SkfConstants:
     -------
     :class:`SkfConstants` with per-value provenance
 
-    >>> series_constants("7205B", math.radians(40.0)).source("r1")[:32]
-    'catalogue: SKF 10000 EN Table 2b'
+    >>> series_constants("7205B", math.radians(40.0)).source("r1")[:40]
+    'catalogue: SKF, Rolling bearings, PUB BU'
     >>> series_constants("71803", math.radians(15.0)).source("r1")[:20]
     'fallback (assumed): '
     """
