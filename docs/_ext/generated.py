@@ -35,7 +35,7 @@ RESULTS = ROOT / "benchmarks" / "results"
 #: First lines of a generated page with wide tables (reports, variables): no page-toc sidebar,
 #: so that the tables get the page's width.
 WIDE = ":html_theme.sidebar_secondary.remove: true\n\n"
-ROW_WIDTHS = "6 14 6 6 6 4 7 8 43"  # columns of a report's rows
+ROW_WIDTHS = "10 13 8 8 8 6 9 10 28"  # columns of a report's rows
 TITLES = {
     "yu2017": "Yu 2017: seeker-gimbal bearings",
     "ning": "Ning: space bearing under alternating temperature",
