@@ -25,6 +25,7 @@ from pathlib import Path
 
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Slave
+from results import save  # benchmarks/ is the script's folder
 from trajectories import BEARING_LOOPS  # benchmarks/ is the script's folder
 
 from servofmu.build.fmu import FMUS, build_all
@@ -148,6 +149,11 @@ def main() -> None:
     parser.add_argument("--steps", type=int, default=20000)
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--json", action="store_true")
+    parser.add_argument(
+        "--save",
+        metavar="FILE.json",
+        help="also write the figures and the run's context to this JSON file (docs: Performance)",
+    )
     parser.add_argument("--clock", choices=("cpu", "wall"), default="cpu")
     parser.add_argument(
         "--models",
@@ -177,12 +183,11 @@ def main() -> None:
             loop.close()
         figures = {label: statistics.median(r) for label, r in runs.items()}
     empty = figures["Empty"]
+    table = {k: {"us": v * 1e6, "ratio": v / empty} for k, v in figures.items()}
+    if args.save:
+        save(args.save, table)
     if args.json:
-        print(
-            json.dumps(
-                {k: {"us": v * 1e6, "ratio": v / empty} for k, v in figures.items()}, indent=2
-            )
-        )
+        print(json.dumps(table, indent=2))
         return
     for label, secs in figures.items():
         print(f"{label:60s} {secs * 1e6:8.2f} µs/step   {secs / empty:5.2f} × empty")

@@ -1,7 +1,8 @@
 """Calibration of a bearing pair's unknown coefficients from measured friction torque
-(``servofmu calibrate``): :mod:`.measurements` reads the data, :mod:`.fit` fits with
-``scipy.optimize.least_squares`` and checks identifiability, :mod:`.report` writes the report,
-the plot and the ``.ssv`` parameter set."""
+(``servofmu calibrate``): :mod:`servofmu.calibration.measurements` reads the data,
+:mod:`servofmu.calibration.fit` fits with ``scipy.optimize.least_squares`` and checks
+identifiability, :mod:`servofmu.calibration.report` writes the report, the plot and the
+``.ssv`` parameter set."""
 
 from .fit import UNKNOWNS, Calibration, calibrate, running_torque
 from .measurements import DataError, FrictionMeasurements, parse_quantity, read_measurements

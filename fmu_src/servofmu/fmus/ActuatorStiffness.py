@@ -10,13 +10,13 @@ motor to the actuator directly, without a LinearTransformation, which can only b
 
 The support-bearing pair is given by numbers, like BearingFriction's pair: the parameters
 ``support_<name>`` for every ``name`` of the pair's state (bearing geometry, materials, seats,
-loop, preload; :data:`servofmu.physics.bearing_parameters.STATE_PARAMETERS`), defaults the
-support mounting of Liu's actuator record (a preset, ``data/mountings.toml``);
+loop, preload), with the defaults of the support mounting of Liu's actuator record (a preset).
 ``support_bearings`` false leaves the pair out (a rigid support). The support bearings carry
 a thermal preload: with ``temperature_mode`` ``parts`` (or ``housing_shaft``) their housing,
 shaft and rings take their own temperatures (``housing_temperature`` …
-``inner_ring_temperature``, e.g. from a ThermalNetwork), as in BearingFriction
-(:mod:`servofmu.fmus.part_temperatures`); the default ``uniform`` reads ``temperature``."""
+``inner_ring_temperature``, e.g. from a ThermalNetwork), as in BearingFriction; the default
+``uniform`` reads ``temperature``.
+"""
 
 from __future__ import annotations
 

@@ -117,7 +117,7 @@ class Var:
 
     Attributes
     ----------
-    name : FMI name (public API: DESIGN §3)
+    name : FMI name (public API: tests, SSPs and users depend on it)
     type : "Real", "Integer", "Boolean" or "Enumeration" (a choice: an integer 1…n naming one
         of ``items``)
     causality : "input", "output" or "parameter"

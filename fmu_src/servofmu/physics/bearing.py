@@ -2,20 +2,18 @@
 
 Where each part lives (Yu 2017 §1–3; Ning §1–2):
 
-- :mod:`.pair` — the configuration: :class:`BearingPair` (bearing, mounting, lubrication,
+- :mod:`.pair`: the configuration, :class:`BearingPair` (bearing, mounting, lubrication,
   coefficients) and :func:`with_mounting`;
-- :mod:`.pair_state` — the exact state, vectorised over operating points:
+- :mod:`.pair_state`: the exact state, vectorised over operating points:
   :func:`thermal_state` (Yu eq 10–18), :func:`load_state` (Jones; eq 1–7, Ning),
   :func:`bearing_outputs` (eq 8–9, breakaway, regularised sign) and
   :func:`operating_outputs` (all three);
-- :mod:`.continuation` — the same equations solved per step from the previous step's
+- :mod:`.continuation`: the same equations solved per step from the previous step's
   solution, on floats;
 - here, :class:`BearingModel`: the per-step evaluation an FMU calls, continuation first and
   a cold start on the same floats when the warm start fails, and the exact path when that
   fails too.
 
-The names of :mod:`.pair` and :mod:`.pair_state` are re-exported here, so that
-``from servofmu.physics.bearing import BearingPair, thermal_state`` keeps working.
 """
 
 from __future__ import annotations
@@ -24,6 +22,8 @@ import math
 
 from .continuation import PairSolver, thermal_floats
 from .mounting import Mounting
+
+# the public names of .pair and .pair_state are importable from here as well
 from .pair import (
     DEFAULT_COEFFICIENTS,
     LUBRICATIONS,
