@@ -235,9 +235,14 @@ def _thermal_curve() -> Curve:
         "temperature [°C]",
         t / 60.0,
         tuple((n.replace("_", " "), celsius[:, i]) for i, n in enumerate(names)),
-        "Default parameters (Yu's seeker gimbal in chamber air, preset yu2017_gimbal_chamber), "
-        "no bearing loss: the frame follows the air first, the shaft and the inner rings lag "
-        "behind the balls' small conductance. The FMU integrates exactly over each step.",
+        (
+            "This build's parameters (the network of its mechanism's parts in chamber air), "
+            if _build_start("ThermalNetwork")
+            else "Default parameters (Yu's seeker gimbal in chamber air, preset "
+            "yu2017_gimbal_chamber), "
+        )
+        + "no bearing loss: the frame follows the air first, the shaft and the inner rings "
+        "lag behind the balls' small conductance. The FMU integrates exactly over each step.",
     )
 
 
@@ -489,7 +494,47 @@ own numbers.</p>
 <ul>{rows}</ul>"""
 
 
-def render(name: str, curve: Curve | None = None) -> str:
+def _build_defaults(name: str, mechanism) -> str:
+    """What this build's start values are: the mechanism's mounting, bearing, lubricant and
+    coefficient set (BearingFriction), its network (ThermalNetwork), the support pair
+    (ActuatorStiffness)."""
+    if mechanism is None or name not in ("BearingFriction", "ThermalNetwork", "ActuatorStiffness"):
+        return ""
+    from servofmu.physics import catalog
+
+    m = mechanism
+    where = ", ".join(f for f, _ in m.catalogue_hashes) or "the package's catalogue"
+    if name == "BearingFriction":
+        text = (
+            f"The start values are the preset of mounting <code>{html.escape(m.mounting)}"
+            f"</code> ({html.escape(m.name)}; bearing <code>{html.escape(m.bearing)}</code>, "
+            f"lubricant <code>{html.escape(m.lubricant)}</code>), from "
+            f"{html.escape(catalog.origin('mountings', m.mounting))} ({html.escape(where)}). "
+            f"Friction coefficients: {html.escape(m.coefficients.label)}."
+        )
+    elif name == "ThermalNetwork":
+        text = (
+            "The start values are the network of the parts of mounting "
+            f"<code>{html.escape(m.mounting)}</code> in the air of a climatic chamber, derived "
+            "when the FMU was built (the provenance of each value says which rest on assumed "
+            "values)."
+            if _build_start(name)
+            else "The start values are the preset <code>yu2017_gimbal_chamber</code>: Yu "
+            "2017's seeker gimbal in the air of a climatic chamber."
+        )
+    else:
+        support = m.defaults.support_mounting
+        text = (
+            f"The support pair's start values are the preset of mounting <code>"
+            f"{html.escape(support)}</code> ({html.escape(where)})."
+            if support
+            else "The start values are Liu 2014's actuator with its screw's support pair "
+            "(preset <code>liu2014_screw_support</code>)."
+        )
+    return f"<h2>Defaults of this build</h2>\n<p>{text}</p>"
+
+
+def render(name: str, curve: Curve | None = None, mechanism=None) -> str:
     """The HTML page of FMU ``name``; with ``curve``, it shows :data:`IMAGE` and its caption.
 
     Parameters
@@ -498,6 +543,8 @@ def render(name: str, curve: Curve | None = None) -> str:
         The FMU's model identifier, e.g. "DCMotor".
     curve : Curve, optional
         Its characteristic curve (:data:`CURVES`); without it the page has no figure.
+    mechanism : Mechanism, optional
+        The build's mechanism (:mod:`.mechanism`): the page says what its start values are.
 
     Returns
     -------
@@ -538,6 +585,7 @@ padding:0.3em 1em}}figure img{{max-width:100%}}code{{background:#f2f2f2}}</style
 <p>servofmu {servofmu.__version__}: FMI 2.0 co-simulation FMU, model identifier
 <code>{name}</code>.</p>
 {rst_to_html(module.__doc__)}
+{_build_defaults(name, mechanism)}
 {figure}
 <h2>Variables</h2>
 <p>SI units; display units are declared in the modelDescription.</p>
@@ -550,7 +598,7 @@ padding:0.3em 1em}}figure img{{max-width:100%}}code{{background:#f2f2f2}}</style
 """
 
 
-def write_documentation(name: str, folder: Path) -> Path:
+def write_documentation(name: str, folder: Path, mechanism=None) -> Path:
     """Write ``index.html`` and :data:`IMAGE` (the characteristic curve) of FMU ``name`` into
     ``folder``; returns the page's path.
 
@@ -560,6 +608,8 @@ def write_documentation(name: str, folder: Path) -> Path:
         The FMU's model identifier, one of :data:`CURVES`.
     folder : str or pathlib.Path
         The folder to write into (created with its parents if missing).
+    mechanism : Mechanism, optional
+        The build's mechanism (the page says what its start values are).
 
     Returns
     -------
@@ -582,5 +632,5 @@ def write_documentation(name: str, folder: Path) -> Path:
     curve = CURVES[name]()
     plot_curve(curve, folder / IMAGE)
     path = folder / "index.html"
-    path.write_text(render(name, curve), encoding="utf-8")
+    path.write_text(render(name, curve, mechanism), encoding="utf-8")
     return path

@@ -8,8 +8,8 @@ provenance): every physical input is a number — the bearing's internal geometr
 ``nominal_contact_angle``, ``inner_curvature``, ``outer_curvature``), the materials of rings,
 balls, housing, shaft and spacer, the seats, the loop geometry, the preload, the lubricant's
 ν40/ν100 — and the model uses exactly these numbers. The defaults are a catalogue preset filled
-in at build time: Yu 2017's seeker gimbal (71803 pair, Krytox 143AA, cast-aluminium yoke,
-45-steel shaft) with the coefficients calibrated in ``servofmu paper yu2017``; the presets the
+in at build time (its mounting, bearing, lubricant and friction coefficients: the FMU's
+documentation names them; the standard build's is Yu 2017's seeker gimbal); the presets the
 FMU was built with are in ``resources/presets/`` as SSP parameter sets. An inconsistent set (a
 geometry that cannot be a bearing, ν100 ≥ ν40, a spring preload without a stiffness, …) is
 refused at fmi2ExitInitializationMode with a logged error naming the values, and every step is
