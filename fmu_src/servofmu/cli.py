@@ -446,7 +446,7 @@ def _calibrate_data(args, mechanism) -> int:
         )
         files.append(write_coefficients(cal, toml, mounting, args.data, sources))
     text = to_text(cal)
-    text = f"mounting {mounting}; friction coefficients before: {before}\n\n{text}"
+    text += f"\n\nmounting {mounting}; friction coefficients before this fit: {before}"
     (out / "report.txt").write_text(text + "\n")
     if args.json:
         import json
