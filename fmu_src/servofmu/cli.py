@@ -43,8 +43,7 @@ def _build(args) -> int:
     with _mechanism(args) as mechanism:
         out = Path(args.out) if args.out else mechanism.build_dir
         refuse_other_mechanism(out, mechanism)
-        print(f"mechanism {mechanism.describe()}; friction coefficients "
-              f"{mechanism.coefficients.label}", file=sys.stderr)  # fmt: skip
+        _say_mechanism(mechanism)
         for path in build_all(out, args.names or FMUS, defaults=mechanism.defaults):
             print(path)
     return 0
@@ -219,7 +218,19 @@ def _signals(items: list[str]) -> dict:
 def _run(args) -> int:
     with _mechanism(args) as mechanism:
         path, fmu_dir = _system_path(args.system, mechanism)
+        _say_mechanism(mechanism)
         return _run_system(args, path, fmu_dir)
+
+
+def _say_mechanism(mechanism) -> None:
+    """One line on a mechanism other than the standard one: what it is, and its friction
+    coefficients (uncalibrated until calibrated)."""
+    if not mechanism.standard:
+        print(
+            f"mechanism {mechanism.describe()}; friction coefficients "
+            f"{mechanism.coefficients.label}",
+            flush=True,
+        )
 
 
 def _run_system(args, path, fmu_dir) -> int:
@@ -535,6 +546,7 @@ def _sweep_mechanism(args, mechanism) -> int:
 
     out = Path(args.out or "out/sweep/results.csv")
     check_table_path(out)
+    _say_mechanism(mechanism)
     axes = dict(_axis(g) for g in args.grid)
     dists = dict(_distribution(s) for s in args.sample)
     samples = sample_points(dists, args.samples, args.seed) if dists else []

@@ -31,6 +31,7 @@ in vacuum at 10 K/min.
 
 from __future__ import annotations
 
+import textwrap
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -427,11 +428,11 @@ def plot(traces, path: Path, name: str = "") -> Path:
         _plot_pair(axes[2, col], runs, "torque", 1.0 / NMM, "friction torque [N·mm]")
         axes[0, col].set_title(title, fontsize=10)
         axes[2, col].set_xlabel("time from the chamber's start [min]")
-    fig.suptitle(
+    title = (
         "Chamber transients: solid = part temperatures through the ThermalNetwork, "
-        "dashed = quasi-static (every part at the chamber temperature)",
-        fontsize=10,
+        "dashed = quasi-static (every part at the chamber temperature)"
     )
+    fig.suptitle(textwrap.fill(title, 60 * len(groups)), fontsize=10)
     fig.tight_layout()
     fig.savefig(path)
     plt.close(fig)
