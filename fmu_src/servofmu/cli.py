@@ -467,11 +467,10 @@ def _calibrate_data(args, mechanism) -> int:
         print(text)
         print("\n".join(f"file: {f}" for f in [out / "report.txt", *files]))
         if toml in files:
-            catalogues = " ".join(f"--catalog {f}" for f in args.catalog)
-            print(
-                f"next: servofmu build {catalogues} --catalog {toml}".replace("  ", " ")
-                + f" (the FMUs and systems of {mounting} with these coefficients)"
-            )
+            build = " ".join(["servofmu build", *(f"--catalog {f}" for f in [*args.catalog, toml])])
+            if args.mounting or not mechanism.chosen:  # no catalogue's [defaults] names it
+                build += f" --mounting {mounting}"
+            print(f"next: {build} (the FMUs and systems of {mounting} with these coefficients)")
     if cal.poor:
         what = f"{cal.problems[0]}" + (
             f" (and {len(cal.problems) - 1} more)" if len(cal.problems) > 1 else ""
