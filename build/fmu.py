@@ -129,8 +129,9 @@ def build_info(fmu: Path) -> dict | None:
     Returns
     -------
     dict or None
-        ``model``, ``version``, ``package_hash`` and, for a user build, the ``start`` values
-        ``catalogues`` it was built with, and the ``mechanism`` it stands for; None without a readable record.
+        ``model``, ``version``, ``package_hash``, the ``mechanism`` it stands for and, for
+        a user build, the ``start`` values and ``catalogues`` it was built with; None
+        without a readable record.
 
     Examples
     --------
