@@ -90,7 +90,7 @@ STILL_LACKING = {
     "servofmu.harness.scenarios.stiffness_test": 1,
     "servofmu.harness.scenarios.thermal_cycle": 1,
     "servofmu.harness.signals": 2,
-    "servofmu.harness.sweep": 7,
+    "servofmu.harness.sweep": 6,
     "servofmu.harness.system": 4,
     "servofmu.harness.tolerance": 2,
     "servofmu.harness.units": 5,
