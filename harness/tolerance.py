@@ -196,7 +196,8 @@ def run(
     result = ScenarioResult(
         "montecarlo",
         f"Monte-Carlo tolerance study, {mounting}: {samples} draws of "
-        f"{' and '.join(drawn)}, running torque at "
+        f"{', '.join(drawn[:-1]) + ' and ' if len(drawn) > 1 else ''}{drawn[-1]}, running "
+        "torque at "
         f"{SPEED / DEG:g} °/s and the probabilities of an overload and of a lost preload versus "
         "temperature",
         list(rows[0]),
