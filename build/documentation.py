@@ -235,9 +235,14 @@ def _thermal_curve() -> Curve:
         "temperature [°C]",
         t / 60.0,
         tuple((n.replace("_", " "), celsius[:, i]) for i, n in enumerate(names)),
-        "Default parameters (Yu's seeker gimbal in chamber air, preset yu2017_gimbal_chamber), "
-        "no bearing loss: the frame follows the air first, the shaft and the inner rings lag "
-        "behind the balls' small conductance. The FMU integrates exactly over each step.",
+        (
+            "This build's parameters (the network of its mechanism's parts in chamber air), "
+            if _build_start("ThermalNetwork")
+            else "Default parameters (Yu's seeker gimbal in chamber air, preset "
+            "yu2017_gimbal_chamber), "
+        )
+        + "no bearing loss: the frame follows the air first, the shaft and the inner rings "
+        "lag behind the balls' small conductance. The FMU integrates exactly over each step.",
     )
 
 
@@ -595,7 +600,45 @@ def _docstring(obj) -> str:
     return escape_bars(inspect.cleandoc(obj.__doc__ or ""))
 
 
-def page_rst(name: str, figure: str | None = None, caption: str = "") -> str:
+def _build_defaults_rst(name: str, mechanism) -> str:
+    """What this build's start values are: the mechanism's mounting, bearing, lubricant and
+    coefficient set (BearingFriction), its network (ThermalNetwork), the support pair
+    (ActuatorStiffness); "" for the other FMUs or without a mechanism."""
+    if mechanism is None or name not in ("BearingFriction", "ThermalNetwork", "ActuatorStiffness"):
+        return ""
+    from servofmu.physics import catalog
+
+    m = mechanism
+    where = ", ".join(f for f, _ in m.catalogue_hashes) or "the package's catalogue"
+    if name == "BearingFriction":
+        text = (
+            f"The start values are the preset of mounting ``{m.mounting}`` ({_escape(m.name)}; "
+            f"bearing ``{m.bearing}``, lubricant ``{m.lubricant}``), from "
+            f"{_escape(catalog.origin('mountings', m.mounting))} ({_escape(where)}). Friction "
+            f"coefficients: {_escape(m.coefficients.label)}."
+        )
+    elif name == "ThermalNetwork":
+        text = (
+            f"The start values are the network of the parts of mounting ``{m.mounting}`` in "
+            "the air of a climatic chamber, derived when the FMU was built (the provenance of "
+            "each value says which rest on assumed values)."
+            if _build_start(name)
+            else "The start values are the preset ``yu2017_gimbal_chamber``: Yu 2017's seeker "
+            "gimbal in the air of a climatic chamber."
+        )
+    else:
+        support = m.defaults.support_mounting
+        text = (
+            f"The support pair's start values are the preset of mounting ``{support}`` "
+            f"({_escape(where)})."
+            if support
+            else "The start values are Liu 2014's actuator with its screw's support pair "
+            "(preset ``liu2014_screw_support``)."
+        )
+    return f"Defaults of this build\n----------------------\n\n{text}\n"
+
+
+def page_rst(name: str, figure: str | None = None, caption: str = "", mechanism=None) -> str:
     """The documentation of FMU ``name`` as reStructuredText: the source of both its
     ``documentation/index.html`` and its page in the documentation site's FMU reference.
 
@@ -608,6 +651,8 @@ def page_rst(name: str, figure: str | None = None, caption: str = "") -> str:
         has no figure.
     caption : str, optional
         The figure's caption (plain text).
+    mechanism : Mechanism, optional
+        The build's mechanism (:mod:`.mechanism`): the page says what its start values are.
 
     Returns
     -------
@@ -632,6 +677,7 @@ def page_rst(name: str, figure: str | None = None, caption: str = "") -> str:
         f"servofmu {servofmu.__version__}: FMI 2.0 co-simulation FMU, model identifier "
         f"``{name}``.\n",
         (body[1] + "\n") if len(body) > 1 else "",
+        _build_defaults_rst(name, mechanism),
     ]
     if figure is not None:
         parts.append(
@@ -661,7 +707,7 @@ font-size:90%;vertical-align:top}figure img{max-width:100%}code,.literal{backgro
 math[display=block]{margin:0.6em 0;overflow-x:auto}caption{text-align:left;font-weight:bold}"""
 
 
-def render(name: str, curve: Curve | None = None, strict: bool = False) -> str:
+def render(name: str, curve: Curve | None = None, strict: bool = False, mechanism=None) -> str:
     """The HTML page of FMU ``name`` (:func:`page_rst` through docutils, equations as
     MathML); with ``curve``, it shows :data:`IMAGE` and its caption.
 
@@ -673,6 +719,8 @@ def render(name: str, curve: Curve | None = None, strict: bool = False) -> str:
         Its characteristic curve (:data:`CURVES`); without it the page has no figure.
     strict : bool, optional
         Raise on any docutils warning (the tests render every page so).
+    mechanism : Mechanism, optional
+        The build's mechanism (the page says what its start values are).
 
     Returns
     -------
@@ -688,7 +736,7 @@ def render(name: str, curve: Curve | None = None, strict: bool = False) -> str:
     >>> IMAGE in render("DCMotor", CURVES["DCMotor"]())
     True
     """
-    text = page_rst(name, IMAGE if curve else None, curve.caption if curve else "")
+    text = page_rst(name, IMAGE if curve else None, curve.caption if curve else "", mechanism)
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>{name}</title>
 <style>{_STYLE}</style></head><body>
@@ -697,7 +745,7 @@ def render(name: str, curve: Curve | None = None, strict: bool = False) -> str:
 """
 
 
-def write_documentation(name: str, folder: Path) -> Path:
+def write_documentation(name: str, folder: Path, mechanism=None) -> Path:
     """Write ``index.html`` and :data:`IMAGE` (the characteristic curve) of FMU ``name`` into
     ``folder``; returns the page's path.
 
@@ -707,6 +755,8 @@ def write_documentation(name: str, folder: Path) -> Path:
         The FMU's model identifier, one of :data:`CURVES`.
     folder : str or pathlib.Path
         The folder to write into (created with its parents if missing).
+    mechanism : Mechanism, optional
+        The build's mechanism (the page says what its start values are).
 
     Returns
     -------
@@ -729,5 +779,5 @@ def write_documentation(name: str, folder: Path) -> Path:
     curve = CURVES[name]()
     plot_curve(curve, folder / IMAGE)
     path = folder / "index.html"
-    path.write_text(render(name, curve), encoding="utf-8")
+    path.write_text(render(name, curve, mechanism=mechanism), encoding="utf-8")
     return path

@@ -49,7 +49,8 @@ def start_values(name: str, defaults: Defaults) -> dict[str, tuple[object, str]]
 
     Parameters
     ----------
-    name : the FMU (BearingFriction and ActuatorStiffness take presets)
+    name : the FMU (BearingFriction and ActuatorStiffness take presets; ThermalNetwork the
+        network of the chosen mounting's parts in chamber air: :mod:`.mechanism`)
     defaults : the chosen presets (:class:`catalogs.Defaults`)
 
     Returns
@@ -62,6 +63,18 @@ def start_values(name: str, defaults: Defaults) -> dict[str, tuple[object, str]]
         kw = {"lubricant": defaults.lubricant}
         values, sources = default_parameters(*args, **kw), default_sources(*args, **kw)
         return {p.name: (_fmu_value(p, values[p.name]), sources[p.name]) for p in PARAMETERS}
+    if name == "ThermalNetwork" and (defaults.mounting or DEFAULT_MOUNTING) != DEFAULT_MOUNTING:
+        from servofmu.physics.thermal_network import ENVIRONMENTS
+
+        from .mechanism import resolve, thermal_parameters
+
+        p = thermal_parameters(resolve(defaults))
+        start = {f: (float(v), p.source(f)) for f, v in p.as_dict().items() if f != "environment"}
+        start["environment"] = (
+            ENVIRONMENTS.index(p.environment) + 1,
+            "assumed: the mechanism in the air of a climatic chamber",
+        )
+        return start
     if name == "ActuatorStiffness" and defaults.support_mounting:
         key = defaults.support_mounting
         specs = prefixed_specs(

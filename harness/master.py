@@ -34,6 +34,8 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.physics._checks import suggest
+
 from .errors import ArgumentError, HarnessError, Interrupted, ParameterError
 from .interrupt import interruptible
 from .progress import progress_bar
@@ -460,6 +462,7 @@ def _overrides(system: System, parameters, connected=None) -> dict[str, object]:
             if item not in system.variants:
                 raise ParameterError(
                     f"parameter set {item!r} is not one of the variants {sorted(system.variants)}"
+                    f"{suggest(item, system.variants)} (or give an .ssv file)"
                 )
             out.update({k: v for k, (_, v) in system.variants[item].items()})
         else:

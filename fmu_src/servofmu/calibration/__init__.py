@@ -6,7 +6,7 @@ identifiability, :mod:`servofmu.calibration.report` writes the report, the plot 
 
 from .fit import UNKNOWNS, Calibration, calibrate, running_torque
 from .measurements import DataError, FrictionMeasurements, parse_quantity, read_measurements
-from .report import plot, to_text, write_residuals, write_ssv
+from .report import plot, to_text, write_coefficients, write_residuals, write_ssv
 
 __all__ = [
     "UNKNOWNS",
@@ -19,6 +19,7 @@ __all__ = [
     "read_measurements",
     "running_torque",
     "to_text",
+    "write_coefficients",
     "write_residuals",
     "write_ssv",
 ]

@@ -8,9 +8,11 @@ bearing's internal geometry (``bore``, ``outer_diameter``, ``width``, ``ball_dia
 ``n_balls``, ``pitch_diameter``, ``nominal_contact_angle``, ``inner_curvature``,
 ``outer_curvature``), the materials of rings, balls, housing, shaft and spacer, the seats, the
 loop geometry, the preload and the lubricant's ν40/ν100. The defaults are a catalogue preset
-filled in at build time: Yu 2017's seeker gimbal (71803 pair, Krytox 143AA, cast-aluminium
-yoke, 45-steel shaft) with the coefficients calibrated in ``servofmu paper yu2017``; the
-presets the FMU was built with are in ``resources/presets/`` as SSP parameter sets. An
+filled in at build time: its mounting, bearing, lubricant and friction coefficients (the FMU's
+documentation names them under "Defaults of this build"; the standard build's is Yu 2017's
+seeker gimbal, a 71803 pair with Krytox 143AA in a cast-aluminium yoke on a 45-steel shaft,
+with the coefficients calibrated in ``servofmu paper yu2017``); the presets the FMU was built
+with are in ``resources/presets/`` as SSP parameter sets. An
 inconsistent set (a geometry that cannot be a bearing, ν100 ≥ ν40, a spring preload without a
 stiffness, …) is refused at fmi2ExitInitializationMode with a logged error naming the values,
 and every step is discarded until it is fixed.

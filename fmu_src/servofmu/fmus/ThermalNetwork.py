@@ -2,10 +2,11 @@
 rings) from the ambient and sink temperatures and the bearing's power loss, integrated exactly
 over each communication step (:mod:`servofmu.physics.thermal_network`).
 
-Defaults: Yu 2017's seeker gimbal (71803 pair, cast-aluminium frame, 45-steel shaft) in the air
-of a climatic chamber (preset ``yu2017_gimbal_chamber``); the preset ``ning_space_vacuum`` and
-any mounting give their values through :func:`thermal_network.preset` /
-:func:`thermal_network.mechanism_parameters` and ``ThermalParameters.as_dict()``.
+Defaults: a network filled in at build time (the FMU's documentation names it): the standard
+build's is the preset ``yu2017_gimbal_chamber``, a build for another mounting that mounting's
+parts in chamber air. The preset ``ning_space_vacuum`` and any mounting give their values
+through :func:`thermal_network.preset` / :func:`thermal_network.mechanism_parameters` and
+``ThermalParameters.as_dict()``.
 
 The choice ``environment`` (air / vacuum) removes convection and the gas gap in vacuum.
 """

@@ -87,7 +87,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_finite, check_positive, check_range, check_temperature
+from ._checks import (
+    check_finite,
+    check_operating_temperature,
+    check_positive,
+    check_range,
+)
 from .temperatures import PartTemperatures
 from .units import DEG
 
@@ -691,7 +696,7 @@ def stiffness_breakdown(
     delta, m, t = np.broadcast_arrays(
         np.asarray(check_finite("output_angle", output_angle, "rad"), dtype=float),
         np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float),
-        np.asarray(check_temperature("temperature", temperature), dtype=float),
+        np.asarray(check_operating_temperature("temperature", temperature), dtype=float),
     )
     kin = kinematics(act, delta)
     lever2 = kin.lever**2
@@ -782,7 +787,7 @@ def support_axial_stiffness(act: Actuator, screw_force, temperature):
     """
     f3, t = np.broadcast_arrays(
         np.asarray(check_finite("screw_force", screw_force, "N"), dtype=float),
-        np.asarray(check_temperature("temperature", temperature), dtype=float),
+        np.asarray(check_operating_temperature("temperature", temperature), dtype=float),
     )
     if not act.support_mounting:
         return np.full(f3.shape, np.inf)

@@ -20,6 +20,8 @@ from __future__ import annotations
 
 import math
 
+from ._checks import TEMPERATURE_RANGE as _TEMPERATURE_RANGE
+from ._checks import check_operating_temperature
 from .continuation import PairSolver, thermal_floats
 from .mounting import Mounting
 
@@ -79,20 +81,21 @@ __all__ = [
     "with_mounting",
 ]
 
-#: Valid range of a part temperature [K] on the per-step path.
-TEMPERATURE_RANGE = (0.0, math.inf)
+#: Valid range of a part temperature [K]: the FMUs' (:data:`._checks.TEMPERATURE_RANGE`).
+TEMPERATURE_RANGE = _TEMPERATURE_RANGE
+_LO, _HI = TEMPERATURE_RANGE
 
 
 def _temperatures(temperature) -> tuple[float, float, float, float]:
     """(housing, shaft, outer ring, inner ring) [K] as floats from a uniform temperature, a
-    :class:`PartTemperatures` or a 4-tuple; ValueError naming a non-finite or non-positive
-    one."""
-    if type(temperature) is float and 0.0 < temperature < math.inf:  # the per-step cases
+    :class:`PartTemperatures` or a 4-tuple; ValueError naming one outside
+    :data:`TEMPERATURE_RANGE` (with a hint when it looks like °C)."""
+    if type(temperature) is float and _LO <= temperature <= _HI:  # the per-step cases
         return (temperature, temperature, temperature, temperature)
     if type(temperature) is tuple and len(temperature) == 4:
         h, s, o, i = temperature
         if type(h) is type(s) is type(o) is type(i) is float and (
-            0.0 < h < math.inf and 0.0 < s < math.inf and 0.0 < o < math.inf and 0.0 < i < math.inf
+            _LO <= h <= _HI and _LO <= s <= _HI and _LO <= o <= _HI and _LO <= i <= _HI
         ):
             return temperature
     if isinstance(temperature, PartTemperatures):
@@ -103,9 +106,9 @@ def _temperatures(temperature) -> tuple[float, float, float, float]:
         t = float(temperature)
         temps = (t, t, t, t)
     for name, t in zip(PARTS, temps, strict=True):
-        if not (0.0 < t < math.inf):
+        if not (_LO <= t <= _HI):
             label = "temperature" if temps.count(t) == 4 else f"{name}_temperature"
-            raise ValueError(f"{label} = {t!r} K is outside the valid range (0, inf) K")
+            check_operating_temperature(label, t)
     return temps
 
 
