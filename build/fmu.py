@@ -13,6 +13,7 @@ from servofmu.fmus.slave import BUILD_INFO, SHIPPED, package_hash
 
 from .catalogs import Defaults
 from .documentation import write_documentation
+from .exportlib import compiled_export, export_used, put_export
 from .presets import start_values, write_presets
 
 FMUS = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
@@ -30,7 +31,9 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
     the build's start values when ``defaults`` name presets), ``resources/presets/`` (the
     catalogue's presets as SSP parameter sets, BearingFriction and ActuatorStiffness) and
     ``documentation/index.html``. State handling and serialisation are declared
-    (``canGetAndSetFMUstate``, ``canSerializeFMUstate``).
+    (``canGetAndSetFMUstate``, ``canSerializeFMUstate``). Its Linux binary is servofmu's
+    export library where it was compiled at install time, else pythonfmu's (:mod:`.exportlib`;
+    ``servofmu_build.json`` says which).
 
     ``defaults`` (:func:`catalogs.load`: user catalogues merged, presets chosen) fill the
     start values: the package stays the same (its hash too), the start values travel in
@@ -51,10 +54,12 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
             tmp = Path(tmp)
             package = stage_package(tmp / "package")
             info = tmp / BUILD_INFO
+            library = compiled_export()
             record = {
                 "model": name,
                 "version": servofmu.__version__,
                 "package_hash": package_hash(package),
+                "export": export_used(),
             }
             if start:
                 record["start"] = {k: v for k, (v, _) in start.items()}
@@ -73,6 +78,8 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
                 canGetAndSetFMUstate=True,
                 canSerializeFMUstate=True,
             )
+            if library is not None:
+                put_export(Path(path), name, library)
     finally:
         slave.BUILD_START.clear()
     return Path(path)
@@ -125,6 +132,8 @@ def is_current(out_dir: Path = DEFAULT_OUT) -> bool:
         with zipfile.ZipFile(fmu) as zf:
             info = json.loads(zf.read(f"resources/{BUILD_INFO}"))
             if info["package_hash"] != current or "start" in info:  # a user build is not ours
+                return False
+            if info.get("export") != export_used():  # servofmu's export compiled since
                 return False
     for system in systems():
         archive = Path(out_dir) / f"{system.name}.ssp"

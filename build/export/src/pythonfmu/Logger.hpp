@@ -33,6 +33,13 @@ public:
 
     void log(fmi2Status s, const std::string& category, const std::string& message)
     {
+        // servofmu: FMI 2.0 (section 2.1.3) has the logger called for fmi2Warning, fmi2Error and
+        // fmi2Fatal and the host show the message; loggingOn and the categories switch the
+        // debug messages (fmi2OK, fmi2Discard) only
+        if (s == fmi2Warning || s == fmi2Error || s == fmi2Fatal) {
+            debugLog(s, category, message);
+            return;
+        }
         if (debugLogging_) {
             if (categories_.empty() || std::find(categories_.begin(), categories_.end(), category) != categories_.end()) {
                 debugLog(s, category, message);

@@ -5,6 +5,7 @@
 #include "pythonfmu/PyState.hpp"
 #include "pythonfmu/SlaveInstance.hpp"
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -62,12 +63,10 @@ PyObject* findClass(const std::string& resources, const std::string& moduleName)
         PyObject* pResult = PyEval_EvalCode(pCode, pGlobals, pLocals);
         Py_XDECREF(pResult);
     } else {
-        PyErr_Print(); // Handle compilation error
-        Py_Finalize();
-        Py_DECREF(pGlobals);
+        // servofmu: the compilation error stays set for the caller to report; the host's
+        // interpreter is not finalised and the borrowed module dict not released
         Py_DECREF(pyModule);
         Py_DECREF(pLocals);
-        Py_DECREF(pCode);
         file.close();
         return nullptr;
     }
@@ -112,8 +111,7 @@ PyObject* findClass(const std::string& resources, const std::string& moduleName)
     // Clean up Python objects
     Py_DECREF(pCode);
     Py_DECREF(pLocals);
-    Py_DECREF(pyModule);
-    Py_DECREF(pGlobals);
+    Py_DECREF(pyModule); // servofmu: pGlobals is borrowed (PyModule_GetDict): not released
     file.close();
     Py_DECREF(pyClassName);
     return pyClass;
@@ -180,21 +178,33 @@ public:
                 const auto categoryAttr = PyObject_GetAttr(msg, categoryField);
                 const auto statusAttr = PyObject_GetAttr(msg, statusField);
 
-                const auto statusValue = static_cast<fmi2Status>(PyLong_AsLong(statusAttr));
-
-                PyObject* msgValue = PyUnicode_AsEncodedString(msgAttr, "utf-8", nullptr);
-                char* msgStr = PyBytes_AsString(msgValue);
+                // servofmu: a message that is not text, or a category that is not, is skipped
+                // or dropped instead of dereferencing NULL; no reference is leaked
+                PyObject* msgValue = (msgAttr != nullptr && PyUnicode_Check(msgAttr))
+                    ? PyUnicode_AsEncodedString(msgAttr, "utf-8", "backslashreplace")
+                    : nullptr;
+                PyObject* categoryValue = (categoryAttr != nullptr && PyUnicode_Check(categoryAttr))
+                    ? PyUnicode_AsEncodedString(categoryAttr, "utf-8", "backslashreplace")
+                    : nullptr;
+                const auto statusValue = statusAttr != nullptr
+                    ? static_cast<fmi2Status>(PyLong_AsLong(statusAttr))
+                    : fmi2Error;
+                PyErr_Clear();
+                Py_XDECREF(msgAttr);
+                Py_XDECREF(categoryAttr);
+                Py_XDECREF(statusAttr);
+                if (msgValue == nullptr) {
+                    Py_XDECREF(categoryValue);
+                    continue;
+                }
                 logStrBuffer.emplace_back(msgValue);
-
                 const char* categoryStr = "";
-                if (categoryAttr != Py_None) {
-                    PyObject* categoryValue = PyUnicode_AsEncodedString(categoryAttr, "utf-8", nullptr);
-                    categoryStr = PyBytes_AsString(categoryValue);
+                if (categoryValue != nullptr) {
                     logStrBuffer.emplace_back(categoryValue);
+                    categoryStr = PyBytes_AsString(categoryValue);
                 }
 
-
-                log(statusValue, categoryStr, msgStr);
+                log(statusValue, categoryStr, PyBytes_AsString(msgValue));
             }
             PyList_SetSlice(pMessages_, 0, size, nullptr);
         }
@@ -206,8 +216,14 @@ public:
 
     void initialize(PyGILState_STATE gilState)
     {
+        if (pClass_ == nullptr) { // servofmu: lost with a fatal error; no call through NULL
+            PyGILState_Release(gilState);
+            throw fatal_error("the slave class was released after a fatal error: free this instance");
+        }
         Py_XDECREF(pInstance_);
+        pInstance_ = nullptr;
         Py_XDECREF(pMessages_);
+        pMessages_ = nullptr;
 
         PyObject* args = PyTuple_New(0);
         PyObject* kwargs = Py_BuildValue("{ss,ss,sn,si}",
@@ -304,6 +320,7 @@ public:
 
     void SetReal(const fmi2ValueReference* vr, std::size_t nvr, const fmi2Real* values) override
     {
+        requireArrays("fmi2SetReal", vr, values, nvr);
         py_safe_run([this, &vr, nvr, &values](PyGILState_STATE gilState) {
             PyObject* vrs = PyList_New(nvr);
             PyObject* refs = PyList_New(nvr);
@@ -325,6 +342,7 @@ public:
 
     void SetInteger(const fmi2ValueReference* vr, std::size_t nvr, const fmi2Integer* values) override
     {
+        requireArrays("fmi2SetInteger", vr, values, nvr);
         py_safe_run([this, &vr, nvr, &values](PyGILState_STATE gilState) {
             PyObject* vrs = PyList_New(nvr);
             PyObject* refs = PyList_New(nvr);
@@ -346,6 +364,7 @@ public:
 
     void SetBoolean(const fmi2ValueReference* vr, std::size_t nvr, const fmi2Boolean* values) override
     {
+        requireArrays("fmi2SetBoolean", vr, values, nvr);
         py_safe_run([this, &vr, nvr, &values](PyGILState_STATE gilState) {
             PyObject* vrs = PyList_New(nvr);
             PyObject* refs = PyList_New(nvr);
@@ -367,12 +386,17 @@ public:
 
     void SetString(const fmi2ValueReference* vr, std::size_t nvr, fmi2String const* values) override
     {
+        requireArrays("fmi2SetString", vr, values, nvr);
         py_safe_run([this, &vr, nvr, &values](PyGILState_STATE gilState) {
             PyObject* vrs = PyList_New(nvr);
             PyObject* refs = PyList_New(nvr);
             for (int i = 0; i < nvr; i++) {
                 PyList_SetItem(vrs, i, Py_BuildValue("i", vr[i]));
-                PyList_SetItem(refs, i, Py_BuildValue("s", values[i]));
+                // servofmu: NULL as None, bytes that are not UTF-8 replaced (never a NULL item)
+                PyObject* text = values[i] == nullptr
+                    ? (Py_INCREF(Py_None), Py_None)
+                    : PyUnicode_DecodeUTF8(values[i], static_cast<Py_ssize_t>(std::strlen(values[i])), "replace");
+                PyList_SetItem(refs, i, text);
             }
 
             auto f = PyObject_CallMethod(pInstance_, "set_string", "(OO)", vrs, refs);
@@ -388,6 +412,7 @@ public:
 
     void GetReal(const fmi2ValueReference* vr, std::size_t nvr, fmi2Real* values) const override
     {
+        requireArrays("fmi2GetReal", vr, values, nvr);
         py_safe_run([this, &vr, nvr, &values](PyGILState_STATE gilState) {
             PyObject* vrs = PyList_New(nvr);
             for (int i = 0; i < nvr; i++) {
@@ -399,6 +424,7 @@ public:
             if (refs == nullptr) {
                 handle_py_exception("[getReal] PyObject_CallMethod", gilState);
             }
+            requireList(refs, nvr, "get_real", gilState);
 
             for (int i = 0; i < nvr; i++) {
                 PyObject* value = PyList_GetItem(refs, i);
@@ -411,6 +437,7 @@ public:
 
     void GetInteger(const fmi2ValueReference* vr, std::size_t nvr, fmi2Integer* values) const override
     {
+        requireArrays("fmi2GetInteger", vr, values, nvr);
         py_safe_run([this, &vr, nvr, &values](PyGILState_STATE gilState) {
             PyObject* vrs = PyList_New(nvr);
             for (int i = 0; i < nvr; i++) {
@@ -421,6 +448,7 @@ public:
             if (refs == nullptr) {
                 handle_py_exception("[getInteger] PyObject_CallMethod", gilState);
             }
+            requireList(refs, nvr, "get_integer", gilState);
 
             for (int i = 0; i < nvr; i++) {
                 PyObject* value = PyList_GetItem(refs, i);
@@ -433,6 +461,7 @@ public:
 
     void GetBoolean(const fmi2ValueReference* vr, std::size_t nvr, fmi2Boolean* values) const override
     {
+        requireArrays("fmi2GetBoolean", vr, values, nvr);
         py_safe_run([this, &vr, nvr, &values](PyGILState_STATE gilState) {
             PyObject* vrs = PyList_New(nvr);
             for (int i = 0; i < nvr; i++) {
@@ -443,6 +472,7 @@ public:
             if (refs == nullptr) {
                 handle_py_exception("[getBoolean] PyObject_CallMethod", gilState);
             }
+            requireList(refs, nvr, "get_boolean", gilState);
 
             for (int i = 0; i < nvr; i++) {
                 PyObject* value = PyList_GetItem(refs, i);
@@ -455,6 +485,7 @@ public:
 
     void GetString(const fmi2ValueReference* vr, std::size_t nvr, fmi2String* values) const override
     {
+        requireArrays("fmi2GetString", vr, values, nvr);
         py_safe_run([this, &vr, nvr, &values](PyGILState_STATE gilState) {
             clearStrBuffer();
             PyObject* vrs = PyList_New(nvr);
@@ -466,9 +497,18 @@ public:
             if (refs == nullptr) {
                 handle_py_exception("[getString] PyObject_CallMethod", gilState);
             }
+            requireList(refs, nvr, "get_string", gilState);
 
             for (int i = 0; i < nvr; i++) {
-                PyObject* value = PyUnicode_AsEncodedString(PyList_GetItem(refs, i), "utf-8", nullptr);
+                PyObject* item = PyList_GetItem(refs, i);
+                PyObject* value = PyUnicode_Check(item)
+                    ? PyUnicode_AsEncodedString(item, "utf-8", "backslashreplace")
+                    : nullptr;
+                if (value == nullptr) { // servofmu: not text: an error, not a NULL dereference
+                    PyErr_Clear();
+                    Py_DECREF(refs);
+                    fail("get_string returned a value that is not text", gilState);
+                }
                 values[i] = PyBytes_AsString(value);
                 strBuffer.emplace_back(value);
             }
@@ -491,12 +531,14 @@ public:
 
     void SetFMUstate(const fmi2FMUstate& state) override
     {
+        requireState("fmi2SetFMUstate", state);
         py_safe_run([this, &state](PyGILState_STATE gilState) {
             auto pyState = reinterpret_cast<PyObject*>(state);
             auto f = PyObject_CallMethod(pInstance_, "_set_fmu_state", "(O)", pyState);
             if (f == nullptr) {
                 handle_py_exception("[_set_fmu_state] PyObject_CallMethod", gilState);
             }
+            Py_DECREF(f);
             clearLogBuffer();
         });
     }
@@ -506,12 +548,14 @@ public:
         py_safe_run([this, &state](PyGILState_STATE gilState) {
             auto f = reinterpret_cast<PyObject*>(state);
             Py_XDECREF(f);
+            state = nullptr; // servofmu: FMI 2.0 sets the host's pointer to NULL
         });
     }
 
     size_t SerializedFMUstateSize(const fmi2FMUstate& state) override
     {
         size_t size;
+        requireState("fmi2SerializedFMUstateSize", state);
         py_safe_run([this, &state, &size](PyGILState_STATE gilState) {
             auto pyState = reinterpret_cast<PyObject*>(state);
             PyObject* pyStateBytes = PyObject_CallMethod(pClass_, "_fmu_state_to_bytes", "(O)", pyState);
@@ -527,6 +571,10 @@ public:
 
     void SerializeFMUstate(const fmi2FMUstate& state, fmi2Byte* bytes, size_t size) override
     {
+        requireState("fmi2SerializeFMUstate", state);
+        if (size > 0 && bytes == nullptr) {
+            throw std::invalid_argument("fmi2SerializeFMUstate: serializedState is NULL");
+        }
         py_safe_run([this, &state, &bytes, size](PyGILState_STATE gilState) {
             auto pyState = reinterpret_cast<PyObject*>(state);
             PyObject* pyStateBytes = PyObject_CallMethod(pClass_, "_fmu_state_to_bytes", "(O)", pyState);
@@ -537,7 +585,13 @@ public:
             if (c == nullptr) {
                 handle_py_exception("[SerializeFMUstate] PyBytes_AsString", gilState);
             }
-            for (int i = 0; i < size; i++) {
+            const auto actual = static_cast<size_t>(PyBytes_Size(pyStateBytes));
+            if (size != actual) { // servofmu: never read or write past either buffer
+                Py_DECREF(pyStateBytes);
+                fail("fmi2SerializeFMUstate: size = " + std::to_string(size) + " is not the "
+                     "state's size " + std::to_string(actual) + " (fmi2SerializedFMUstateSize)", gilState);
+            }
+            for (size_t i = 0; i < size; i++) {
                 bytes[i] = c[i];
             }
             Py_DECREF(pyStateBytes);
@@ -547,10 +601,14 @@ public:
 
     void DeSerializeFMUstate(const fmi2Byte bytes[], size_t size, fmi2FMUstate& state) override
     {
+        if (size > 0 && bytes == nullptr) {
+            throw std::invalid_argument("fmi2DeSerializeFMUstate: serializedState is NULL");
+        }
         py_safe_run([this, &bytes, size, &state](PyGILState_STATE gilState) {
-            PyObject* pyStateBytes = PyBytes_FromStringAndSize(bytes, size);
-            if (pyStateBytes == nullptr) {
-                handle_py_exception("[DeSerializeFMUstate] PyBytes_FromStringAndSize", gilState);
+            PyObject* pyStateBytes = PyBytes_FromStringAndSize(bytes, static_cast<Py_ssize_t>(size));
+            if (pyStateBytes == nullptr) { // servofmu: e.g. no memory for a wrong size: an error
+                PyErr_Clear();
+                fail("fmi2DeSerializeFMUstate: size = " + std::to_string(size) + " cannot be copied", gilState);
             }
             PyObject* pyState = PyObject_CallMethod(pClass_, "_fmu_state_from_bytes", "(O)", pyStateBytes);
             if (pyState == nullptr) {
@@ -572,9 +630,9 @@ public:
 private:
     fmu_data data_;
 
-    PyObject* pClass_;
-    PyObject* pInstance_{};
-    PyObject* pMessages_{};
+    mutable PyObject* pClass_{};
+    mutable PyObject* pInstance_{};
+    mutable PyObject* pMessages_{};
 
     mutable std::vector<PyObject*> strBuffer;
     mutable std::vector<PyObject*> logStrBuffer;
@@ -619,9 +677,73 @@ private:
         clearLogBuffer();
         clearLogStrBuffer();
         clearStrBuffer();
+        // servofmu: forgotten once released: a later call or the destructor never releases
+        // them again (that double release crashed hosts after a fatal error)
         Py_XDECREF(pClass_);
+        pClass_ = nullptr;
         Py_XDECREF(pInstance_);
+        pInstance_ = nullptr;
         Py_XDECREF(pMessages_);
+        pMessages_ = nullptr;
+    }
+
+    // servofmu: an error status for a host's mistake, raised with the GIL released
+    [[noreturn]] static void fail(const std::string& message, PyGILState_STATE gilState)
+    {
+        PyGILState_Release(gilState);
+        throw std::runtime_error(message);
+    }
+
+    template<typename T, typename V>
+    static void requireArrays(const char* function, const T* vr, const V* values, std::size_t nvr)
+    {
+        if (nvr > 0 && (vr == nullptr || values == nullptr)) {
+            throw std::invalid_argument(std::string(function) + ": vr[] or value[] is NULL with nvr = " + std::to_string(nvr));
+        }
+    }
+
+    static void requireState(const char* function, const fmi2FMUstate& state)
+    {
+        if (state == nullptr) {
+            throw std::invalid_argument(std::string(function) + ": the FMU state is NULL");
+        }
+    }
+
+    // the Python getter answered a list of nvr values (else an error, nothing read)
+    static void requireList(PyObject* refs, std::size_t nvr, const char* method, PyGILState_STATE gilState)
+    {
+        if (!PyList_Check(refs) || static_cast<std::size_t>(PyList_Size(refs)) != nvr) {
+            Py_DECREF(refs);
+            fail(std::string(method) + " did not return one value per value reference", gilState);
+        }
+    }
+
+    // The FMI status a Python exception asks for (attribute fmi2_status: fmi2Discard or
+    // fmi2Error), or -1 for any other exception.
+    static int reportedStatus(PyObject* exception)
+    {
+        if (exception == nullptr) return -1;
+        PyObject* attr = PyObject_GetAttrString(exception, "fmi2_status");
+        if (attr == nullptr) {
+            PyErr_Clear();
+            return -1;
+        }
+        const long value = PyLong_Check(attr) ? PyLong_AsLong(attr) : -1;
+        Py_DECREF(attr);
+        PyErr_Clear();
+        return (value == fmi2Discard || value == fmi2Error) ? static_cast<int>(value) : -1;
+    }
+
+    static std::string text(PyObject* object)
+    {
+        std::string out = "unknown error";
+        PyObject* str = object != nullptr ? PyObject_Str(object) : nullptr;
+        PyObject* bytes = str != nullptr ? PyUnicode_AsEncodedString(str, "utf-8", "backslashreplace") : nullptr;
+        if (bytes != nullptr) out = PyBytes_AsString(bytes);
+        Py_XDECREF(bytes);
+        Py_XDECREF(str);
+        PyErr_Clear();
+        return out;
     }
 
 
@@ -629,17 +751,31 @@ private:
     {
         const auto err = PyErr_Occurred();
         if (err != nullptr) {
-            cleanPyObject();
-
             PyObject *pExcType, *pExcValue, *pExcTraceback;
             PyErr_Fetch(&pExcType, &pExcValue, &pExcTraceback);
+            PyErr_NormalizeException(&pExcType, &pExcValue, &pExcTraceback);
+
+            // servofmu: an exception carrying an FMI status is the slave's answer to a host's
+            // mistake: that status, its message logged, the instance kept
+            const int status = reportedStatus(pExcValue);
+            if (status >= 0) {
+                const std::string message = text(pExcValue);
+                Py_XDECREF(pExcType);
+                Py_XDECREF(pExcValue);
+                Py_XDECREF(pExcTraceback);
+                clearLogBuffer();
+                PyGILState_Release(gilState);
+                throw status_error(static_cast<fmi2Status>(status), message);
+            }
+
+            cleanPyObject();
 
             std::ostringstream oss;
             oss << "Fatal py exception encountered: ";
             oss << what << "\n";
             if (pExcValue != nullptr) {
                 PyObject* pRepr = PyObject_Repr(pExcValue);
-                PyObject* pyStr = PyUnicode_AsEncodedString(pRepr, "utf-8", nullptr);
+                PyObject* pyStr = PyUnicode_AsEncodedString(pRepr, "utf-8", "backslashreplace");
                 oss << PyBytes_AsString(pyStr);
                 Py_DECREF(pyStr);
                 Py_DECREF(pRepr);

@@ -4,8 +4,11 @@
 #include "fmi/fmi2Functions.h"
 #include "fmu_except.hpp"
 
+#include <cctype>
 #include <exception>
+#include <fstream>
 #include <limits>
+#include <sstream>
 #include <memory>
 #include <optional>
 #include <regex>
@@ -33,6 +36,50 @@ private:
     const fmi2CallbackFunctions* f_;
 };
 
+// servofmu: the folder of a file URI ("file:///a%20b", "file:/a%20b", "file://localhost/a") or
+// of a plain path; percent escapes decoded
+std::string resourcePath(const std::string& uri)
+{
+    std::string path = uri;
+    if (path.rfind("file://localhost/", 0) == 0) {
+        path = path.substr(16);
+    } else if (path.rfind("file:///", 0) == 0) {
+        path = path.substr(7);
+    } else if (path.rfind("file:/", 0) == 0) {
+        path = path.substr(5);
+    }
+#ifdef _MSC_VER
+    if (path.size() > 2 && path[0] == '/' && path[2] == ':') path = path.substr(1);
+#endif
+    std::string out;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        if (path[i] == '%' && i + 2 < path.size() && std::isxdigit(static_cast<unsigned char>(path[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(path[i + 2]))) {
+            out += static_cast<char>(std::stoi(path.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            out += path[i];
+        }
+    }
+    while (out.size() > 1 && out.back() == '/') out.pop_back();
+    return out;
+}
+
+// servofmu: the guid attribute of <resources>/../modelDescription.xml, or "" when unreadable
+std::string modelGuid(const std::string& resources)
+{
+    std::ifstream file(resources + "/../modelDescription.xml");
+    if (!file.is_open()) return "";
+    std::stringstream text;
+    text << file.rdbuf();
+    std::smatch match;
+    const auto xml = text.str();
+    if (std::regex_search(xml, match, std::regex("\\sguid\\s*=\\s*\"([^\"]*)\""))) {
+        return match[1];
+    }
+    return "";
+}
+
 // A struct that holds all the data for one model instance.
 struct Fmi2Component
 {
@@ -42,6 +89,13 @@ struct Fmi2Component
         , slave(std::move(slave))
         , logger(std::move(logger))
     { }
+
+    // servofmu: the slave goes first: its destructor logs the messages still queued, through
+    // the logger (members are destroyed in reverse order, which freed the logger first)
+    ~Fmi2Component()
+    {
+        slave.reset();
+    }
 
     double lastSuccessfulTime{0};
     bool wantsToTerminate{false};
@@ -59,6 +113,15 @@ extern "C" {
 // =============================================================================
 // FMI 2.0 functions
 // =============================================================================
+
+// servofmu: identifies this export and its protocol to the Python slave: a Python exception
+// with an attribute fmi2_status (fmi2Discard or fmi2Error) is answered with that status and
+// its message, and the instance stays alive; fmi2Warning, fmi2Error and fmi2Fatal messages
+// reach the host's logger whatever loggingOn says.
+const char* servofmuExport()
+{
+    return "servofmu-export 1 (pythonfmu 0.7.0, patched)";
+}
 
 
 const char* fmi2GetTypesPlatform()
@@ -81,21 +144,38 @@ fmi2Component fmi2Instantiate(fmi2String instanceName,
     fmi2Boolean visible,
     fmi2Boolean loggingOn)
 {
-
-    // Convert URI %20 to space
-    auto resources = std::regex_replace(std::string(fmuResourceLocation), std::regex("%20"), " ");
-    const auto find = resources.find("file://");
-
-    if (find != std::string::npos) {
-#ifdef _MSC_VER
-        resources.replace(find, 8, "");
-#else
-        resources.replace(find, 7, "");
-#endif
+    // servofmu: every argument checked before it is used; a refusal is logged (when there is a
+    // logger) and answered with NULL
+    if (functions == nullptr || functions->logger == nullptr) {
+        return nullptr;
+    }
+    auto logger = std::make_unique<Fmi2Logger>(instanceName != nullptr ? instanceName : "", functions);
+    logger->setDebugLogging(loggingOn);
+    const auto refuse = [&logger](const std::string& message) -> fmi2Component {
+        logger->log(fmi2Error, "fmi2Instantiate: " + message);
+        return nullptr;
+    };
+    if (instanceName == nullptr || std::string(instanceName).empty()) {
+        return refuse("instanceName is NULL or empty");
+    }
+    if (fmuType != fmi2CoSimulation) {
+        return refuse("fmuType = " + std::to_string(static_cast<int>(fmuType)) + ": this FMU supports co-simulation (fmi2CoSimulation = 1) only");
+    }
+    if (fmuResourceLocation == nullptr) {
+        return refuse("fmuResourceLocation is NULL");
     }
 
-    auto logger = std::make_unique<Fmi2Logger>(instanceName, functions);
-    logger->setDebugLogging(loggingOn);
+    std::string resources;
+    try {
+        resources = resourcePath(fmuResourceLocation);
+    } catch (const std::exception& e) {
+        return refuse(e.what());
+    }
+    const auto expected = modelGuid(resources);
+    if (!expected.empty() && (fmuGUID == nullptr || expected != fmuGUID)) {
+        return refuse(std::string("fmuGUID = ") + (fmuGUID != nullptr ? fmuGUID : "NULL") +
+                      " is not this FMU's guid " + expected + " (modelDescription.xml)");
+    }
 
     try {
 
@@ -131,13 +211,18 @@ fmi2Status fmi2SetDebugLogging(
     const fmi2String categories[])
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
 
     std::vector<std::string> categoriesVec;
     if (nCategories > 0) {
+        if (categories == nullptr) { // servofmu: no read through NULL
+            component->logger->log(fmi2Error, "fmi2SetDebugLogging: categories is NULL with nCategories = " + std::to_string(nCategories));
+            return fmi2Error;
+        }
         // Convert categories to std::vector<std::string>
         categoriesVec.reserve(nCategories);
         for (size_t i = 0; i < nCategories; ++i) {
-            categoriesVec.emplace_back(categories[i]);
+            if (categories[i] != nullptr) categoriesVec.emplace_back(categories[i]);
         }
     }
 
@@ -156,6 +241,7 @@ fmi2Status fmi2SetupExperiment(
     fmi2Real stopTime)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->SetupExperiment(
             startTime,
@@ -165,6 +251,9 @@ fmi2Status fmi2SetupExperiment(
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -175,12 +264,16 @@ fmi2Status fmi2SetupExperiment(
 fmi2Status fmi2EnterInitializationMode(fmi2Component c)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->EnterInitializationMode();
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -191,12 +284,16 @@ fmi2Status fmi2EnterInitializationMode(fmi2Component c)
 fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->ExitInitializationMode();
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -207,12 +304,16 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 fmi2Status fmi2Terminate(fmi2Component c)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->Terminate();
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -223,12 +324,16 @@ fmi2Status fmi2Terminate(fmi2Component c)
 fmi2Status fmi2Reset(fmi2Component c)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->Reset();
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -243,12 +348,16 @@ fmi2Status fmi2GetReal(
     fmi2Real value[])
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->GetReal(vr, nvr, value);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -262,12 +371,16 @@ fmi2Status fmi2GetInteger(
     fmi2Integer value[])
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->GetInteger(vr, nvr, value);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -281,12 +394,16 @@ fmi2Status fmi2GetBoolean(
     fmi2Boolean value[])
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->GetBoolean(vr, nvr, value);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -300,12 +417,16 @@ fmi2Status fmi2GetString(
     fmi2String value[])
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->GetString(vr, nvr, value);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -320,12 +441,16 @@ fmi2Status fmi2SetReal(
     const fmi2Real value[])
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->SetReal(vr, nvr, value);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -339,12 +464,16 @@ fmi2Status fmi2SetInteger(
     const fmi2Integer value[])
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->SetInteger(vr, nvr, value);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -358,12 +487,16 @@ fmi2Status fmi2SetBoolean(
     const fmi2Boolean value[])
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->SetBoolean(vr, nvr, value);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -377,12 +510,16 @@ fmi2Status fmi2SetString(
     const fmi2String value[])
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->SetString(vr, nvr, value);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -395,12 +532,20 @@ fmi2Status fmi2GetFMUstate(
     fmi2FMUstate* state)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
+    if (state == nullptr) { // servofmu: no write through NULL
+        component->logger->log(fmi2Error, "fmi2GetFMUstate: FMUstate is NULL");
+        return fmi2Error;
+    }
     try {
         component->slave->GetFMUstate(*state);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -412,12 +557,16 @@ fmi2Status fmi2SetFMUstate(
     fmi2FMUstate state)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->SetFMUstate(state);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -429,12 +578,20 @@ fmi2Status fmi2FreeFMUstate(
     fmi2FMUstate* state)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
+    if (state == nullptr) { // servofmu: no write through NULL
+        component->logger->log(fmi2Error, "fmi2FreeFMUstate: FMUstate is NULL");
+        return fmi2Error;
+    }
     try {
         component->slave->FreeFMUstate(*state);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -447,12 +604,20 @@ fmi2Status fmi2SerializedFMUstateSize(
     size_t* size)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
+    if (size == nullptr) { // servofmu: no write through NULL
+        component->logger->log(fmi2Error, "fmi2SerializedFMUstateSize: size is NULL");
+        return fmi2Error;
+    }
     try {
         *size = component->slave->SerializedFMUstateSize(state);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -466,12 +631,16 @@ fmi2Status fmi2SerializeFMUstate(
     size_t size)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         component->slave->SerializeFMUstate(state, bytes, size);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -485,12 +654,20 @@ fmi2Status fmi2DeSerializeFMUstate(
     fmi2FMUstate* state)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
+    if (state == nullptr) { // servofmu: no write through NULL
+        component->logger->log(fmi2Error, "fmi2DeSerializeFMUstate: FMUstate is NULL");
+        return fmi2Error;
+    }
     try {
         component->slave->DeSerializeFMUstate(bytes, size, *state);
         return fmi2OK;
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -507,6 +684,7 @@ fmi2Status fmi2GetDirectionalDerivative(
     const fmi2Real[],
     fmi2Real[])
 {
+    if (c == nullptr) return fmi2Error;
     static_cast<Fmi2Component*>(c)->logger->log(
         fmi2Error,
         "cppfmu",
@@ -521,6 +699,7 @@ fmi2Status fmi2SetRealInputDerivatives(
     const fmi2Integer[],
     const fmi2Real[])
 {
+    if (c == nullptr) return fmi2Error;
     static_cast<Fmi2Component*>(c)->logger->log(
         fmi2Error,
         "cppfmu",
@@ -535,6 +714,7 @@ fmi2Status fmi2GetRealOutputDerivatives(
     const fmi2Integer[],
     fmi2Real[])
 {
+    if (c == nullptr) return fmi2Error;
     static_cast<Fmi2Component*>(c)->logger->log(
         fmi2Error,
         "cppfmu",
@@ -549,6 +729,7 @@ fmi2Status fmi2DoStep(
     fmi2Boolean /*noSetFMUStatePriorToCurrentPoint*/)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
     try {
         double endTime = currentCommunicationPoint;
         const auto ok = component->slave->DoStep(
@@ -566,6 +747,9 @@ fmi2Status fmi2DoStep(
     } catch (const pythonfmu::fatal_error& e) {
         component->logger->log(fmi2Fatal, e.what());
         return fmi2Fatal;
+    } catch (const pythonfmu::status_error& e) {
+        component->logger->log(e.status, e.what());
+        return e.status;
     } catch (const std::exception& e) {
         component->logger->log(fmi2Error, e.what());
         return fmi2Error;
@@ -574,6 +758,7 @@ fmi2Status fmi2DoStep(
 
 fmi2Status fmi2CancelStep(fmi2Component c)
 {
+    if (c == nullptr) return fmi2Error;
     static_cast<Fmi2Component*>(c)->logger->log(
         fmi2Error,
         "FMI function not supported: fmi2CancelStep");
@@ -587,6 +772,7 @@ fmi2Status fmi2GetStatus(
     const fmi2StatusKind,
     fmi2Status*)
 {
+    if (c == nullptr) return fmi2Error;
     static_cast<Fmi2Component*>(c)->logger->log(
         fmi2Error,
         "FMI function not supported: fmi2GetStatus");
@@ -599,6 +785,11 @@ fmi2Status fmi2GetRealStatus(
     fmi2Real* value)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
+    if (value == nullptr) { // servofmu: no write through NULL
+        component->logger->log(fmi2Error, "fmi2GetRealStatus: value is NULL");
+        return fmi2Error;
+    }
     if (s == fmi2LastSuccessfulTime) {
         *value = component->lastSuccessfulTime;
         return fmi2OK;
@@ -615,6 +806,7 @@ fmi2Status fmi2GetIntegerStatus(
     const fmi2StatusKind,
     fmi2Integer*)
 {
+    if (c == nullptr) return fmi2Error;
     static_cast<Fmi2Component*>(c)->logger->log(
         fmi2Discard,
         "FMI function not supported: fmi2GetIntegerStatus");
@@ -627,6 +819,11 @@ fmi2Status fmi2GetBooleanStatus(
     fmi2Boolean* value)
 {
     const auto component = static_cast<Fmi2Component*>(c);
+    if (component == nullptr) return fmi2Error;
+    if (value == nullptr) { // servofmu: no write through NULL
+        component->logger->log(fmi2Error, "fmi2GetBooleanStatus: value is NULL");
+        return fmi2Error;
+    }
     if (s == fmi2Terminated) {
         *value = component->wantsToTerminate ? fmi2True : fmi2False;
         return fmi2OK;
@@ -641,6 +838,7 @@ fmi2Status fmi2GetStringStatus(
     const fmi2StatusKind,
     fmi2String*)
 {
+    if (c == nullptr) return fmi2Error;
     static_cast<Fmi2Component*>(c)->logger->log(
         fmi2Discard, "FMI function not supported: fmi2GetStringStatus");
     return fmi2Discard;
