@@ -28,16 +28,22 @@ grease.
 
 from __future__ import annotations
 
-from servofmu.fmus.part_temperatures import (
+from pathlib import Path
+
+import servofmu
+
+servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
+
+from servofmu.fmus.part_temperatures import (  # noqa: E402
     TEMPERATURE_INPUTS,
     part_inputs,
     temperature_mode_parameter,
     temperatures,
 )
-from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter
-from servofmu.physics.bearing import BearingModel
-from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in
-from servofmu.physics.pair_state import PointState
+from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter  # noqa: E402
+from servofmu.physics.bearing import BearingModel  # noqa: E402
+from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in  # noqa: E402
+from servofmu.physics.pair_state import PointState  # noqa: E402
 
 _TEMPS = TEMPERATURE_INPUTS
 _ALL = (*_TEMPS, "speed", "axial_load", "radial_load")
