@@ -370,8 +370,12 @@ def test_failing_fmu_stops_the_run_and_keeps_the_results(tmp_path, out):
             progress=False,
         )
     err = info.value
-    assert "'bearing'" in str(err) and "fmi2Discard" in str(err)
-    assert "temperature = 47" in str(err) and "[173.15, 473.15]" in str(err)
+    # the headline names the component, the status and who logged what (quoted)
+    assert "component 'bearing' (BearingFriction) returned fmi2Error" in str(err)
+    assert 'bearing (BearingFriction) logged Error: "bearing: fmi2DoStep: temperature = 47' in str(
+        err
+    )
+    assert "[173.15, 473.15]" in str(err)
     t_fail = err.result.data["time"][-1]
     assert 0.08 < t_fail < 0.1  # rows up to the step before the failing one
     on_disk, _ = read_results(tmp_path / "results.csv")
