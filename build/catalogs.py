@@ -14,6 +14,7 @@ built: an error names the file, the entry and the field.
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -21,6 +22,7 @@ from pathlib import Path
 from servofmu.physics import catalog
 
 DEFAULT_KEYS = ("mounting", "lubricant", "support_mounting")
+KEY = re.compile(r"[A-Za-z0-9_]+")  # a catalogue key: letters, digits, underscores (ASCII)
 
 
 @dataclass(frozen=True)
@@ -90,10 +92,19 @@ def read(path) -> tuple[dict, dict]:
         raise ValueError(f"{path}: cannot be read ({exc.strerror})") from None
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path}: not valid TOML ({exc})") from None
+    except RecursionError:
+        raise ValueError(f"{path}: not a catalogue (tables or arrays nested too deeply)") from None
     defaults = data.pop("defaults", {})
     extra = sorted(set(defaults) - set(DEFAULT_KEYS)) if isinstance(defaults, dict) else defaults
     if extra:
         raise ValueError(f"{path}: [defaults] may name {list(DEFAULT_KEYS)}, not {extra}")
+    for table, entries in data.items():
+        for key in entries if isinstance(entries, dict) else ():
+            if not KEY.fullmatch(key):
+                raise ValueError(
+                    f"{path}: [{table}] entry {key!r}: a catalogue key is letters, digits and "
+                    "underscores (it names files and appears in XML)"
+                )
     return data, defaults
 
 

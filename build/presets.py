@@ -31,7 +31,7 @@ from servofmu.physics.bearing_parameters import (
     prefixed_specs,
 )
 
-from .catalogs import Defaults
+from .catalogs import KEY, Defaults
 
 SUPPORT_LUBRICANT = "mos2_film"  # the support pair's lubricant plays no part in stiffness
 
@@ -98,6 +98,8 @@ def write_presets(folder: Path, name: str) -> Path:
 
 
 def _write(path, values, prefix, what, support, only=None):
+    if not KEY.fullmatch(Path(path).stem):  # a file name only from a valid catalogue key
+        raise ValueError(f"{what}: {Path(path).stem!r} is not a catalogue key (letters, digits, _)")
     names = STATE_PARAMETERS if support else [p.name for p in PARAMETERS]
     if only is not None:
         names = [n for n in names if n in only]
