@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import signal
 import threading
+import time
 from contextlib import contextmanager
 
 SIGNALS = (signal.SIGINT, signal.SIGTERM)
@@ -33,6 +34,11 @@ class StopRequest:
     def __init__(self):
         self.count = 0
         self.signum = signal.SIGINT
+        self.received_at = 0.0  # time.perf_counter() at the first signal
+
+    def delay(self) -> float:
+        """Seconds since the first signal."""
+        return time.perf_counter() - self.received_at
 
     @property
     def requested(self) -> bool:
@@ -42,6 +48,7 @@ class StopRequest:
         global _RECEIVED
         if not self.count:
             self.signum = _RECEIVED = signum
+            self.received_at = time.perf_counter()
         self.count += 1
 
 

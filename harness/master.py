@@ -555,6 +555,7 @@ def _run(system, plan: RunPlan, signals, settings: _Settings, stop_request):
     t0_wall = _time.perf_counter()
     try:
         for comp in system.components.values():  # FMUs unpacked once per loaded system
+            _stop_if_requested(stop_request, f"before instantiating {comp.name!r}")
             units[comp.name] = _Unit(comp, system.unpacked(comp.fmu), journal)
         wiring = _wire(system, units, order, plan.record, signals)
         cosim = _Cosimulation(system, units, order, wiring, plan, settings, t0_wall)
@@ -563,6 +564,15 @@ def _run(system, plan: RunPlan, signals, settings: _Settings, stop_request):
     finally:
         for u in units.values():
             u.close()
+
+
+def _stop_if_requested(stop_request, where: str) -> None:
+    """Ctrl-C or SIGTERM before the first row: stop now, nothing computed to keep."""
+    if stop_request is not None and stop_request.requested:
+        raise Interrupted(
+            f"interrupted {where}, {1e3 * stop_request.delay():.3g} ms after the signal",
+            signum=stop_request.signum,
+        )
 
 
 @dataclass
@@ -876,7 +886,8 @@ class _Cosimulation:
                 t = start + k * h
                 if stop_request is not None and stop_request.requested:  # Ctrl-C: stop here
                     self.stop(
-                        f"interrupted at t = {t:.6g} s",
+                        f"interrupted at t = {t:.6g} s, "
+                        f"{1e3 * stop_request.delay():.3g} ms after the signal",
                         Interrupted,
                         time=t,
                         signum=stop_request.signum,

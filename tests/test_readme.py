@@ -16,9 +16,14 @@ README = Path(__file__).resolve().parents[1] / "README.md"
 
 @pytest.fixture(scope="module")
 def examples():
-    """Each Python block of the README run in its own namespace, keyed by a name of its own."""
+    """Each Python block of the README run in its own namespace, keyed by a name of its own
+    (the FMUs built first into build/out, where the README's plain-fmpy example reads them)."""
+    from servofmu.build.fmu import ensure_built
+
+    ensure_built()
     blocks = re.findall(r"```python\n(.*?)```", README.read_text(), flags=re.S)
     keys = {
+        "simulate_fmu(": "plain",
         "BearingModel(pair)": "bearing",
         "stiffness_breakdown(": "actuator",
         "run(": "harness",
@@ -129,3 +134,14 @@ def test_friction_model_example_adds_up(examples):
     parts += cold.viscous_torque + cold.grease_torque
     assert cold.running_torque == pytest.approx(parts, rel=1e-12)
     assert f"{cold.viscous_torque} {cold.grease_torque}" in ns["__printed__"]
+
+
+def test_plain_fmpy_example_shows_the_error_and_the_discarded_step(examples):
+    from servofmu.build.exportlib import compiled_export
+
+    ns = examples["plain"]
+    discards = [m for s, m in ns["messages"] if s == 2]
+    assert set(ns["result"]["time"]) == {0.0}  # the rows end where the discarded step began
+    assert discards and "one step takes at most 100000" in discards[-1], ns["messages"]
+    if compiled_export() is not None:  # servofmu's export: the error raised (and printed)
+        assert "fmi2ExitInitializationMode failed with status 3" in ns["__printed__"]
