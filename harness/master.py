@@ -159,16 +159,13 @@ class _Unit:
             self.log.append(f"[{STATUS[status] if 0 <= status < 6 else status}] {text}")
             self.journal.append((self.name, status, text))
 
+        # each unit's own logger, called with the message as the FMU passes it: fmpy's
+        # printf-formatting proxy (fmpy.logging.addLoggerProxy) keeps one logger for the whole
+        # process, the last one added, and sent every FMU's messages to the last component
         cb = fmi2CallbackFunctions()
         cb.logger = fmi2CallbackLoggerTYPE(logger)
         cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
         cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        try:
-            from fmpy.logging import addLoggerProxy
-
-            addLoggerProxy(ctypes.byref(cb))
-        except Exception:  # pragma: no cover - the proxy only formats printf-style messages
-            pass
         self._keep = (cb, logger)
         self.slave = FMU2Slave(
             guid=comp.guid,

@@ -54,11 +54,13 @@ def test_a_valid_key_is_taken(tmp_path):
     assert list(tables["materials"]) == ["my_7075_T6"]
 
 
-def test_preset_files_are_named_only_by_valid_keys(tmp_path):
-    from servofmu.build.presets import _write
+@pytest.mark.parametrize("key", ["../x", "/abs", "a.b", ""])
+def test_preset_files_are_named_only_by_valid_keys(tmp_path, key):
+    from servofmu.build.presets import _file
 
     with pytest.raises(ValueError, match="not a catalogue key"):
-        _write(tmp_path / "mountings" / "../x.ssv", {}, "", "mounting ../x", False)
+        _file(tmp_path, "mountings", key)
+    assert _file(tmp_path, "mountings", "yu2017_gimbal") == tmp_path / "mountings/yu2017_gimbal.ssv"
 
 
 def test_too_deeply_nested_toml_is_bad_input(tmp_path, capsys):
@@ -91,15 +93,20 @@ def test_internal_errors_go_to_a_fresh_private_log(tmp_path, monkeypatch, capsys
         assert stat.S_IMODE(log.stat().st_mode) == 0o600 and not log.is_symlink()
 
 
-def test_a_step_too_long_for_the_motor_fails_at_once_naming_the_limit(ssp, tmp_path):
+def test_a_step_too_long_fails_at_once_naming_the_limit(ssp, tmp_path):
     proc = subprocess.run(
         [*CLI, "run", ssp, "--stop", "1e5", "--step", "1e5", "--out", str(tmp_path / "run")],
         capture_output=True,
         text=True,
         timeout=300,
     )
+    # the controller steps first (Gauss-Seidel order) and refuses 1e8 samples in one step; the
+    # headline names it and quotes its own message
     assert proc.returncode == 1, proc.stderr
-    assert "'motor' (DCMotor) returned fmi2Discard" in proc.stderr
+    assert "'controller' (ServoController) returned fmi2Discard" in proc.stderr
+    assert 'controller (ServoController) logged Discard: "controller: communicationStepSize' in (
+        proc.stderr
+    )
     assert "one step takes at most 100000" in proc.stderr, proc.stderr
 
 

@@ -12,8 +12,7 @@ in at build time: Yu 2017's seeker gimbal (71803 pair, Krytox 143AA, cast-alumin
 45-steel shaft) with the coefficients calibrated in ``servofmu paper yu2017``; the presets the
 FMU was built with are in ``resources/presets/`` as SSP parameter sets. An inconsistent set (a
 geometry that cannot be a bearing, ν100 ≥ ν40, a spring preload without a stiffness, …) is
-refused at fmi2ExitInitializationMode with a logged error naming the values, and every step is
-discarded until it is fixed.
+refused at fmi2ExitInitializationMode with fmi2Error and a logged error naming the values.
 
 ``friction_model`` chooses the torque (:mod:`servofmu.physics.friction_models`): ``yu2017``
 (default: Yu's hysteresis and spin per contact + Palmgren's viscous term), ``skf2004`` (the SKF
