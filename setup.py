@@ -1,8 +1,9 @@
 """The FMU export library, compiled at install time (the project's metadata is in
 pyproject.toml; this file only declares the compiled part).
 
-``servofmu.build._export`` is pythonfmu 0.7.0's FMI 2.0 export library with servofmu's changes
-(``build/export/README.md``). It is a shared library, not an importable module: ``servofmu
+``servofmu.build.export.servofmu_export`` is pythonfmu 0.7.0's FMI 2.0 export library with
+servofmu's changes (``build/export/README.md``), compiled into that folder, which is not a
+Python package: a shared library, not an importable module. ``servofmu
 build`` puts it into every FMU as ``binaries/linux64/<modelIdentifier>.so``. Like pythonfmu's
 own binary it is compiled against the stable ABI (``Py_LIMITED_API``) and does not link
 libpython: the hosting interpreter provides the Python symbols. The extension is optional:
@@ -21,7 +22,7 @@ def export_library() -> list[Extension]:
         return []
     return [
         Extension(
-            "servofmu.build._export",
+            "servofmu.build.export.servofmu_export",
             sources=[f"{EXPORT}/pythonfmu/fmi2.cpp", f"{EXPORT}/pythonfmu/PySlaveInstance.cpp"],
             include_dirs=[EXPORT],
             define_macros=[("Py_LIMITED_API", "0x030B0000")],

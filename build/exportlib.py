@@ -1,8 +1,8 @@
 """The FMI export library in each built FMU (``binaries/linux64/<modelIdentifier>.so``).
 
 servofmu's export (pythonfmu 0.7.0's C++ layer with servofmu's changes: ``export/README.md``)
-is compiled when servofmu is installed, where a C++17 compiler is found, into this package as
-``_export.abi3.so``; the build then puts it into every FMU in place of pythonfmu's binary.
+is compiled when servofmu is installed, where a C++17 compiler is found, into ``export/`` as
+``servofmu_export.abi3.so``; the build then puts it into every FMU in place of pythonfmu's binary.
 Without it the FMUs carry pythonfmu's binary, and a host's mistake shows only as a discarded
 step (``servofmu.fmus.binary``). The FMU records which one it carries in
 ``resources/servofmu_build.json`` (``"export"``); the slave finds out by itself at run time.
@@ -31,17 +31,22 @@ def compiled_export() -> Path | None:
     Examples
     --------
     >>> lib = compiled_export()
-    >>> lib is None or lib.name.startswith("_export")
+    >>> lib is None or lib.name.startswith("servofmu_export")
     True
     """
     if not sys.platform.startswith("linux"):
         return None
-    found = sorted(Path(__file__).resolve().parent.glob("_export*.so"))
+    found = sorted((Path(__file__).resolve().parent / "export").glob("servofmu_export*.so"))
     return found[0] if found else None
 
 
 def export_used() -> str:
-    """Which export a build puts into the FMUs now: :data:`SERVOFMU` or :data:`PYTHONFMU`.
+    """Which export a build puts into the FMUs now.
+
+    Returns
+    -------
+    str
+        :data:`SERVOFMU` when servofmu's export was compiled, else :data:`PYTHONFMU`.
 
     Examples
     --------

@@ -56,8 +56,18 @@ _RECEIVED = signal.SIGINT  # the signal that stopped the work (SIGINT unless SIG
 
 
 def received() -> int:
-    """The number of the signal that stopped the work: SIGTERM once it was received by the
-    handlers of this module, else SIGINT (exit status 128 + it)."""
+    """The number of the signal that stopped the work (the exit status is 128 + it).
+
+    Returns
+    -------
+    int
+        SIGTERM's number once the handlers of this module received it, else SIGINT's.
+
+    Examples
+    --------
+    >>> received() in (signal.SIGINT, signal.SIGTERM)
+    True
+    """
     return int(_RECEIVED)
 
 
@@ -69,7 +79,20 @@ def _raise_terminated(signum, frame):
 
 def terminate_as_interrupt() -> None:
     """From now on SIGTERM raises :class:`Terminated` (a KeyboardInterrupt) in the main thread
-    (elsewhere nothing changes)."""
+    (elsewhere nothing changes).
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> previous = signal.getsignal(signal.SIGTERM)
+    >>> terminate_as_interrupt()
+    >>> signal.getsignal(signal.SIGTERM) is _raise_terminated
+    True
+    >>> _ = signal.signal(signal.SIGTERM, previous)
+    """
     if threading.current_thread() is threading.main_thread():
         signal.signal(signal.SIGTERM, _raise_terminated)
 

@@ -30,8 +30,8 @@ def different_build(model: str, info: dict, imported: str = "") -> str:
 
     Examples
     --------
-    >>> different_build("DCMotor", {"version": "0.0.9", "package_hash": "ab" * 32}, "cd" * 32)[:58]
-    'DCMotor: this FMU was built with servofmu 0.0.9 (abababab'
+    >>> different_build("DCMotor", {"version": "0.0.9", "package_hash": "ab" * 32}, "cd" * 32)[:62]
+    'DCMotor: this FMU was built with servofmu 0.0.9 (abababababab)'
     """
     return (
         f"{model}: this FMU was built with servofmu {info['version']} "

@@ -104,8 +104,16 @@ def export_of(resources, model_identifier: str) -> str:
 
 
 def reports_statuses(export: str) -> bool:
-    """True when ``export`` (from :func:`export_of`) turns :class:`.calls.FMIError` into a
-    status.
+    """Whether an export library turns :class:`.calls.FMIError` into a status.
+
+    Parameters
+    ----------
+    export : what :func:`export_of` answered
+
+    Returns
+    -------
+    bool
+        True for servofmu's export.
 
     Examples
     --------
