@@ -32,7 +32,22 @@ def _build(args) -> int:
             print(path)
     finally:
         catalogs.unload()
+    _note_export()
     return 0
+
+
+def _note_export() -> None:
+    """Say on stderr when the FMUs carry pythonfmu's binary (no compiled servofmu export)."""
+    from servofmu.build.exportlib import PYTHONFMU, export_used
+
+    if export_used() == PYTHONFMU:
+        print(
+            "servofmu: note: servofmu's export library was not compiled when servofmu was "
+            "installed (it needs a C++17 compiler): the FMUs carry pythonfmu's binary, under "
+            "which a host's mistake is logged and discards the next step instead of getting "
+            "fmi2Error (README, 'Bad input and careless hosts')",
+            file=sys.stderr,
+        )
 
 
 def _catalog(args) -> int:

@@ -73,9 +73,10 @@ def loaded(resources, model_identifier: str, keep: bool = False):
         return None
 
 
-def export_of(resources, model_identifier: str) -> str:
+def export_of(resources, model_identifier: str) -> str | None:
     """Which export library runs the slave: its ``servofmuExport()`` text for servofmu's
-    export, else :data:`PYTHONFMU`.
+    export, :data:`PYTHONFMU` for pythonfmu's binary, None when no FMU binary is loaded (the
+    slave imported as a library, e.g. by the build).
 
     Parameters
     ----------
@@ -84,19 +85,19 @@ def export_of(resources, model_identifier: str) -> str:
 
     Returns
     -------
-    str
+    str or None
 
     Examples
     --------
-    >>> export_of(None, "DCMotor")
-    'pythonfmu 0.7.0'
+    >>> export_of(None, "DCMotor") is None
+    True
     """
     lib = loaded(resources, model_identifier)
+    if lib is None:
+        return None
     try:
-        marker = lib.servofmuExport if lib is not None else None
+        marker = lib.servofmuExport
     except AttributeError:  # pythonfmu's binary
-        marker = None
-    if marker is None:
         return PYTHONFMU
     marker.restype = ctypes.c_char_p
     marker.argtypes = ()
@@ -108,7 +109,7 @@ def reports_statuses(export: str) -> bool:
 
     Parameters
     ----------
-    export : what :func:`export_of` answered
+    export : what :func:`export_of` answered (None: no FMU binary)
 
     Returns
     -------
@@ -122,4 +123,4 @@ def reports_statuses(export: str) -> bool:
     >>> reports_statuses(PYTHONFMU)
     False
     """
-    return export.startswith("servofmu-export ")
+    return export is not None and export.startswith("servofmu-export ")

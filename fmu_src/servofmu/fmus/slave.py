@@ -338,10 +338,12 @@ class ServoSlave(Fmi2Slave):
         build_start = self._check_build()
         # after every import that loads a C++ extension (servofmu.fmus loads all of them)
         register_interpreter_finaliser(self.resources, type(self).__name__)
-        self._export = export_of(self.resources, type(self).__name__)
-        self._reports = reports_statuses(self._export)
+        export = export_of(self.resources, type(self).__name__)
+        self._export = export or "no FMU binary (imported as a library)"
+        self._reports = reports_statuses(export)
         cls = type(self)
-        cls._class_reports = self._reports and cls._class_reports is not False
+        if export is not None:  # (an instance made by the build says nothing)
+            cls._class_reports = self._reports and cls._class_reports is not False
         start, stop, step = self.DEFAULT_EXPERIMENT
         self.default_experiment = DefaultExperiment(
             start_time=start, stop_time=stop, step_size=step
