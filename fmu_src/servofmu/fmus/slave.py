@@ -128,7 +128,6 @@ _TYPES = {"Real": Real, "Integer": Integer, "Boolean": Boolean, "Enumeration": I
 _FMI_TYPE = {"Real": "Real", "Integer": "Integer", "Boolean": "Boolean", "Enumeration": "Integer"}
 _FMI_TYPES = ("Real", "Integer", "Boolean", "String")
 _DEFAULT = {"Real": 0.0, "Integer": 0, "Boolean": False, "String": ""}
-_NOTHING = {kind: {} for kind in _FMI_TYPES}
 _DESCRIBING = "describing"  # the build writes the modelDescription (reads the start values)
 #: Package parts that run inside an FMU (the build ships and hashes exactly these).
 SHIPPED = ("__init__.py", "physics", "fmus")
@@ -512,30 +511,31 @@ class ServoSlave(Fmi2Slave):
         self._set("fmi2SetString", "String", vrs, values)
 
     def _get(self, call: str, kind: str, vrs):
-        default = [_DEFAULT[kind]] * len(vrs)
         try:
             phase = self._phase
             if phase not in READABLE and phase != _DESCRIBING:
                 return self._refuse(
-                    call, f"values can be read from initialization mode on (now: {phase})", default
+                    call,
+                    f"values can be read from initialization mode on (now: {phase})",
+                    [_DEFAULT[kind]] * len(vrs),
                 )
-            table = self._readable[kind]
-            try:
-                names = [table[vr] for vr in vrs]
-            except (KeyError, TypeError):
-                return self._refuse(call, self._reference_problem(kind, vrs, False), default)
             if self._dirty and (
                 phase == INITIALIZATION or (phase == STEP_COMPLETE and self.FEEDTHROUGH)
             ):
                 self._update_outputs(call)
-            values = [getattr(self, n) for n in names]
+            table = self._readable[kind]
+            try:
+                values = [getattr(self, table[vr]) for vr in vrs]
+            except (KeyError, TypeError):
+                problem = self._reference_problem(kind, vrs, False)
+                return self._refuse(call, problem, [_DEFAULT[kind]] * len(vrs))
             if kind == "Real":
                 total = sum(values)
                 if total - total != 0.0:  # NaN or an infinity among them (or a huge sum)
                     bad = [
-                        f"{n} = {x!r}"
-                        for n, x in zip(names, values, strict=True)
-                        if not (math.isfinite(x) or (x == math.inf and n in self._inf_ok))
+                        f"{table[vr]} = {x!r}"
+                        for vr, x in zip(vrs, values, strict=True)
+                        if not (math.isfinite(x) or (x == math.inf and table[vr] in self._inf_ok))
                     ]
                     if bad:
                         return self._refuse(call, f"not finite: {', '.join(bad)}", values)
@@ -543,11 +543,11 @@ class ServoSlave(Fmi2Slave):
         except FMIError:
             raise
         except (Exception, KeyboardInterrupt) as exc:
-            return self._internal(call, exc, default)
+            return self._internal(call, exc, [_DEFAULT[kind]] * len(vrs))
 
     def _set(self, call: str, kind: str, vrs, values):
         try:
-            table = self._writable.get(self._phase, _NOTHING)[kind]
+            table = self._writable[self._phase][kind]
             try:
                 names = [table[vr] for vr in vrs]
             except (KeyError, TypeError):
@@ -727,7 +727,8 @@ class ServoSlave(Fmi2Slave):
     def do_step(self, current_time: float, step_size: float) -> bool:
         call = "fmi2DoStep"
         try:
-            problem = self._sequence(call) or self._step_problem(current_time, step_size)
+            problem = "" if self._phase == STEP_COMPLETE else self._sequence(call)
+            problem = problem or self._step_problem(current_time, step_size)
             if not problem and not (self._configured or self._ensure_configured()):
                 problem = self._error
             problem = problem or self._bad_input()
@@ -756,7 +757,7 @@ class ServoSlave(Fmi2Slave):
         """Why fmi2DoStep(t, h) cannot be carried out: a point or step size that is not a
         finite number, h ≤ 0 (FMI 2.0: h > 0), or, for a stepped FMU, a point that does not
         continue the last step (or the start time, or the time of a restored state)."""
-        if not (math.isfinite(t) and math.isfinite(h) and h > 0.0):
+        if not (-math.inf < t < math.inf and 0.0 < h < math.inf):
             return (
                 f"currentCommunicationPoint = {t!r}, communicationStepSize = {h!r}: the point "
                 "must be finite and the step size finite and > 0"
