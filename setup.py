@@ -11,6 +11,7 @@ without a C++17 compiler the install succeeds and the FMUs carry pythonfmu's bin
 """
 
 import sys
+from pathlib import Path
 
 from setuptools import Extension, setup
 
@@ -24,6 +25,8 @@ def export_library() -> list[Extension]:
         Extension(
             "servofmu.build.export.servofmu_export",
             sources=[f"{EXPORT}/pythonfmu/fmi2.cpp", f"{EXPORT}/pythonfmu/PySlaveInstance.cpp"],
+            # the headers (and the licence of the sources): in the sdist, and a rebuild on change
+            depends=[*sorted(str(p) for p in Path(EXPORT).rglob("*.h*")), "build/export/LICENSE"],
             include_dirs=[EXPORT],
             define_macros=[("Py_LIMITED_API", "0x030B0000")],
             py_limited_api=True,
