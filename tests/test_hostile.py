@@ -61,6 +61,18 @@ def _run_case(path: Path, case: str, stock: bool):
     return reports[0]["calls"]
 
 
+def test_the_export_library_is_compiled(fmus):
+    """The test suite's FMUs carry servofmu's export (the other FMU tests expect its
+    fmi2Error statuses): without it, reinstall with a C++17 compiler (``make`` does when
+    setup.py or build/export/ changed)."""
+    import zipfile
+
+    assert compiled_export() is not None, "servofmu's export library was not compiled"
+    with zipfile.ZipFile(fmus["DCMotor"]) as zf:
+        assert json.loads(zf.read("resources/servofmu_build.json"))["export"] == "servofmu"
+        assert zf.read("binaries/linux64/DCMotor.so") == compiled_export().read_bytes()
+
+
 @pytest.mark.parametrize("case", CASES)
 @pytest.mark.parametrize("name", NAMES)
 def test_hostile_host_under_servofmus_export(fmus, name, case):
