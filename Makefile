@@ -7,7 +7,8 @@ OUT    ?= out
 
 .PHONY: run test test-long bench lint docs clean system-deps
 
-$(STAMP): pyproject.toml
+# setup.py compiles the FMU export library (build/export/) at install: an edit there reinstalls
+$(STAMP): pyproject.toml setup.py $(wildcard build/export/src/*/*)
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[test]'

@@ -17,6 +17,7 @@ built: an error names the file, the entry and the field.
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -25,6 +26,7 @@ from servofmu.physics import catalog
 from servofmu.physics._checks import suggest
 
 DEFAULT_KEYS = ("mounting", "lubricant", "support_mounting")
+KEY = re.compile(r"[A-Za-z0-9_]+")  # a catalogue key: letters, digits, underscores (ASCII)
 
 
 @dataclass(frozen=True)
@@ -94,10 +96,19 @@ def read(path) -> tuple[dict, dict]:
         raise ValueError(f"{path}: cannot be read ({exc.strerror})") from None
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path}: not valid TOML ({exc})") from None
+    except RecursionError:
+        raise ValueError(f"{path}: not a catalogue (tables or arrays nested too deeply)") from None
     defaults = data.pop("defaults", {})
     extra = sorted(set(defaults) - set(DEFAULT_KEYS)) if isinstance(defaults, dict) else defaults
     if extra:
         raise ValueError(f"{path}: [defaults] may name {list(DEFAULT_KEYS)}, not {extra}")
+    for table, entries in data.items():
+        for key in entries if isinstance(entries, dict) else ():
+            if not KEY.fullmatch(key):
+                raise ValueError(
+                    f"{path}: [{table}] entry {key!r}: a catalogue key is letters, digits and "
+                    "underscores (it names files and appears in XML)"
+                )
     return data, defaults
 
 

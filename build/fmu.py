@@ -14,6 +14,7 @@ from servofmu.fmus.slave import BUILD_INFO, SHIPPED, package_hash
 
 from .catalogs import Defaults
 from .documentation import write_documentation
+from .exportlib import compiled_export, export_used, put_export
 from .presets import start_values, write_presets
 
 FMUS = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
@@ -34,7 +35,9 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
     the build's start values when ``defaults`` name presets), ``resources/presets/`` (the
     catalogue's presets as SSP parameter sets, BearingFriction and ActuatorStiffness) and
     ``documentation/index.html``. State handling and serialisation are declared
-    (``canGetAndSetFMUstate``, ``canSerializeFMUstate``).
+    (``canGetAndSetFMUstate``, ``canSerializeFMUstate``). Its Linux binary is servofmu's
+    export library where it was compiled at install time, else pythonfmu's (:mod:`.exportlib`;
+    ``servofmu_build.json`` says which).
 
     ``defaults`` (:func:`catalogs.load`: user catalogues merged, presets chosen) fill the
     start values: the package stays the same (its hash too), the start values travel in
@@ -58,11 +61,13 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
             tmp = Path(tmp)
             package = stage_package(tmp / "package")
             info = tmp / BUILD_INFO
+            library = compiled_export()
             record = {
                 "model": name,
                 "version": servofmu.__version__,
                 "package_hash": package_hash(package),
                 "mechanism": resolve(defaults or Defaults()).record(),
+                "export": export_used(),
             }
             if start:
                 record["start"] = {k: v for k, (v, _) in start.items()}
@@ -81,6 +86,8 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
                 canGetAndSetFMUstate=True,
                 canSerializeFMUstate=True,
             )
+            if library is not None:
+                put_export(Path(path), name, library)
     finally:
         slave.BUILD_START.clear()
     return Path(path)
@@ -206,6 +213,8 @@ def is_current(out_dir: Path = DEFAULT_OUT, mechanism=None) -> bool:
             return False  # missing or stale
         if recorded_mechanism(info) != expected:
             return False  # another mechanism, or its catalogues changed
+        if info.get("export") != export_used():  # servofmu's export compiled since
+            return False
     for system in systems(names=mechanism.systems):
         archive = Path(out_dir) / f"{system.name}.ssp"
         newest = max(f.stat().st_mtime for f in system.rglob("*") if f.is_file())

@@ -31,7 +31,7 @@ from servofmu.physics.bearing_parameters import (
     prefixed_specs,
 )
 
-from .catalogs import Defaults
+from .catalogs import KEY, Defaults
 
 SUPPORT_LUBRICANT = "mos2_film"  # the support pair's lubricant plays no part in stiffness
 
@@ -97,17 +97,24 @@ def write_presets(folder: Path, name: str) -> Path:
     for key in catalog.keys("mountings"):
         lubricant = SUPPORT_LUBRICANT if support else None
         values = default_parameters(key, lubricant=lubricant)
-        _write(folder / "mountings" / f"{key}.ssv", values, prefix, f"mounting {key}", support)
+        _write(_file(folder, "mountings", key), values, prefix, f"mounting {key}", support)
     for key in catalog.keys("bearings"):
         values, _ = bearing_values(catalog.bearing(key))
-        _write(folder / "bearings" / f"{key}.ssv", values, prefix, f"bearing {key}", support,
+        _write(_file(folder, "bearings", key), values, prefix, f"bearing {key}", support,
                BEARING_FIELDS)  # fmt: skip
     if not support:
         for key in catalog.keys("lubricants"):
             values, _ = lubricant_values(key)
-            _write(folder / "lubricants" / f"{key}.ssv", values, "", f"lubricant {key}", False,
+            _write(_file(folder, "lubricants", key), values, "", f"lubricant {key}", False,
                    tuple(f for f in LUBRICANT_FIELDS if f in values))  # fmt: skip
     return folder
+
+
+def _file(folder: Path, table: str, key: str) -> Path:
+    """``folder/table/key.ssv``: a file name only from a valid catalogue key."""
+    if not KEY.fullmatch(key):
+        raise ValueError(f"{table}.{key!r} is not a catalogue key (letters, digits, underscores)")
+    return folder / table / f"{key}.ssv"
 
 
 def _write(path, values, prefix, what, support, only=None):

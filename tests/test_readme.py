@@ -21,6 +21,7 @@ SOURCES = (
     *sorted((ROOT / "docs" / "snippets").glob("*.py")),
 )
 KEYS = {
+    "simulate_fmu(": "plain",
     "BearingModel(pair)": "bearing",
     "stiffness_breakdown(": "actuator",
     "run(": "harness",
@@ -37,7 +38,11 @@ def _blocks(path: Path) -> list[str]:
 @pytest.fixture(scope="module")
 def runs():
     """Each distinct Python example of :data:`SOURCES` run once in its own namespace: {code:
-    namespace}, and {key: [code, ...]} (the same example in several places runs once)."""
+    namespace}, and {key: [code, ...]} (the same example in several places runs once). The
+    FMUs are built first into build/out, where the plain-fmpy example reads them."""
+    from servofmu.build.fmu import ensure_built
+
+    ensure_built()
     namespaces, by_key = {}, {k: [] for k in KEYS.values()}
     for path in SOURCES:
         for code in _blocks(path):
@@ -157,3 +162,14 @@ def test_friction_model_example_adds_up(examples):
     parts += cold.viscous_torque + cold.grease_torque
     assert cold.running_torque == pytest.approx(parts, rel=1e-12)
     assert f"{cold.viscous_torque} {cold.grease_torque}" in ns["__printed__"]
+
+
+def test_plain_fmpy_example_shows_the_error_and_the_discarded_step(examples):
+    from servofmu.build.exportlib import compiled_export
+
+    ns = examples["plain"]
+    discards = [m for s, m in ns["messages"] if s == 2]
+    assert set(ns["result"]["time"]) == {0.0}  # the rows end where the discarded step began
+    assert discards and "one step takes at most 100000" in discards[-1], ns["messages"]
+    if compiled_export() is not None:  # servofmu's export: the error raised (and printed)
+        assert "fmi2ExitInitializationMode failed with status 3" in ns["__printed__"]

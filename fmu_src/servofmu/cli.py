@@ -46,7 +46,22 @@ def _build(args) -> int:
         _say_mechanism(mechanism)
         for path in build_all(out, args.names or FMUS, defaults=mechanism.defaults):
             print(path)
+    _note_export()
     return 0
+
+
+def _note_export() -> None:
+    """Say on stderr when the FMUs carry pythonfmu's binary (no compiled servofmu export)."""
+    from servofmu.build.exportlib import PYTHONFMU, export_used
+
+    if export_used() == PYTHONFMU:
+        print(
+            "servofmu: note: servofmu's export library was not compiled when servofmu was "
+            "installed (it needs a C++17 compiler): the FMUs carry pythonfmu's binary, under "
+            "which a host's mistake is logged and discards the next step instead of getting "
+            "fmi2Error (README, 'Bad input and careless hosts')",
+            file=sys.stderr,
+        )
 
 
 def _catalog(args) -> int:
@@ -532,6 +547,7 @@ def _sweep(args) -> int:
 
 
 def _sweep_mechanism(args, mechanism) -> int:
+    from servofmu.harness.interrupt import received
     from servofmu.harness.sweep import (
         ModelTask,
         SystemTask,
@@ -583,7 +599,7 @@ def _sweep_mechanism(args, mechanism) -> int:
             f"marked 'interrupted' in {out}",
             file=sys.stderr,
         )
-        return 130
+        return 128 + received()
     print(
         f"{len(result.rows)} runs on {result.workers} worker(s) in {result.wall_time:.3g} s; "
         f"{len(result.failed)} failed; table: {out}"
@@ -992,10 +1008,24 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _error_log() -> Path:
+    """The traceback of the exception being handled, in a new file only the user can read
+    (``mkstemp``: a fresh name, created exclusively, mode 0600); its path."""
+    import os
+    import tempfile
+    import traceback
+
+    fd, name = tempfile.mkstemp(prefix="servofmu-error-", suffix=".log")
+    with os.fdopen(fd, "w", encoding="utf-8") as fh:
+        fh.write(traceback.format_exc())
+    return Path(name)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Exit codes: 0 done, 1 a run failed (partial results kept), 2 bad input (data,
-    arguments, system description), 3 an internal error (traceback in a log file), 130
-    interrupted (Ctrl-C; a run stops at a step boundary and keeps its results)."""
+    arguments, system description), 3 an internal error (traceback in a private log file),
+    130 interrupted by Ctrl-C and 143 by SIGTERM (a run stops at a step boundary and keeps its
+    results either way)."""
     from .harness.errors import (
         ArgumentError,
         HarnessError,
@@ -1003,8 +1033,10 @@ def main(argv: list[str] | None = None) -> int:
         MissingExtra,
         SystemError_,
     )
+    from .harness.interrupt import received, terminate_as_interrupt
 
     args = build_parser().parse_args(argv)
+    terminate_as_interrupt()  # SIGTERM keeps the results so far, as Ctrl-C does
     try:
         return args.func(args)
     except (SystemError_, ArgumentError) as exc:  # bad input, found before any run
@@ -1012,10 +1044,10 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     except Interrupted as exc:
         print(f"servofmu: {exc}", file=sys.stderr)
-        return 130
+        return 128 + exc.signum
     except KeyboardInterrupt as exc:
         print(f"servofmu: interrupted{f'; {exc}' if str(exc) else ''}", file=sys.stderr)
-        return 130
+        return 128 + received()
     except HarnessError as exc:
         print(f"servofmu: run failed: {exc}", file=sys.stderr)
         return 1
@@ -1025,11 +1057,7 @@ def main(argv: list[str] | None = None) -> int:
     except Exception as exc:
         if args.debug:
             raise
-        import tempfile
-        import traceback
-
-        log = Path(tempfile.gettempdir()) / "servofmu-error.log"
-        log.write_text(traceback.format_exc())
+        log = _error_log()
         print(
             f"servofmu: internal error: {type(exc).__name__}: {exc} (traceback in {log}; "
             "run again with --debug to see it here)",

@@ -12,10 +12,9 @@ filled in at build time: its mounting, bearing, lubricant and friction coefficie
 documentation names them under "Defaults of this build"; the standard build's is Yu 2017's
 seeker gimbal, a 71803 pair with Krytox 143AA in a cast-aluminium yoke on a 45-steel shaft,
 with the coefficients calibrated in ``servofmu paper yu2017``); the presets the FMU was built
-with are in ``resources/presets/`` as SSP parameter sets. An
-inconsistent set (a geometry that cannot be a bearing, ν100 ≥ ν40, a spring preload without a
-stiffness, …) is refused at fmi2ExitInitializationMode with a logged error naming the values,
-and every step is discarded until it is fixed.
+with are in ``resources/presets/`` as SSP parameter sets. An inconsistent set (a geometry that
+cannot be a bearing, ν100 ≥ ν40, a spring preload without a stiffness, …) is refused at
+fmi2ExitInitializationMode with fmi2Error and a logged error naming the values.
 
 ``friction_model`` chooses the torque (:mod:`servofmu.physics.friction_models`):
 
@@ -50,18 +49,24 @@ unloaded pair, ``reverse_loaded`` says a bearing is loaded on the other flanks o
 
 from __future__ import annotations
 
-from pythonfmu.enums import Fmi2Status
+from pathlib import Path
 
-from servofmu.fmus.part_temperatures import (
+import servofmu
+
+servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
+
+from pythonfmu.enums import Fmi2Status  # noqa: E402
+
+from servofmu.fmus.part_temperatures import (  # noqa: E402
     TEMPERATURE_INPUTS,
     part_inputs,
     temperature_mode_parameter,
     temperatures,
 )
-from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter
-from servofmu.physics.bearing import BearingModel
-from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in
-from servofmu.physics.pair_state import PointState
+from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter  # noqa: E402
+from servofmu.physics.bearing import BearingModel  # noqa: E402
+from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in  # noqa: E402
+from servofmu.physics.pair_state import PointState  # noqa: E402
 
 _TEMPS = TEMPERATURE_INPUTS
 _ALL = (*_TEMPS, "speed", "axial_load", "radial_load")

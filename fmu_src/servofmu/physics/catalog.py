@@ -1086,21 +1086,9 @@ def thermal(key: str) -> dict:
     }
 
 
-TABLES = (
-    "bearing_rules",
-    "materials",
-    "lubricants",
-    "bearings",
-    "mountings",
-    "actuators",
-    "coefficients",
-    "tolerances",
-    "thermal",
-)
-
-
 def preload() -> None:
-    """Read every data table now (they are cached): see :func:`servofmu.physics.load_all`.
+    """Read every data table now, each ``data/*.toml`` of the package (they are cached): see
+    :func:`servofmu.physics.load_all`.
 
     Returns
     -------
@@ -1109,6 +1097,9 @@ def preload() -> None:
     Examples
     --------
     >>> preload()
+    >>> _package_table.cache_info().currsize >= 12  # the package's twelve tables
+    True
     """
-    for name in TABLES:
-        _package_table(name)
+    for entry in resources.files(__package__).joinpath("data").iterdir():
+        if entry.name.endswith(".toml"):
+            _package_table(entry.name.removesuffix(".toml"))
