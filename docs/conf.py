@@ -35,7 +35,6 @@ extensions = [
 
 exclude_patterns = [
     "_build",
-    "README_next.md",
     "gallery/GALLERY_HEADER.rst",
     "**.ipynb",
     "_generated/performance.rst",  # included by performance.rst
@@ -46,6 +45,7 @@ source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"
 nitpicky = False
 suppress_warnings = ["config.cache"]  # sphinx-gallery's callables in the config
+myst_heading_anchors = 3  # [text](page.md#a-heading) links to headings down to level 3
 
 # --- math: MathML through docutils' converter, the same as inside the FMUs
 html_math_renderer = "mathml"

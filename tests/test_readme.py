@@ -1,6 +1,7 @@
-"""The README's Python examples run as written, and what they compute obeys the equations they
-stand for: Yu eq 8 and eq 9 by hand for the bearing, Liu eq 1 and eq 6 for the actuator, and
-Newton's law for the rotor (the electrical method) in the co-simulation."""
+"""The Python examples of the README and the documentation run as written, and what they
+compute obeys the equations they stand for: Yu eq 8 and eq 9 by hand for the bearing, Liu eq 1
+and eq 6 for the actuator, Newton's law for the rotor (the electrical method) in the
+co-simulation, and the plain-fmpy example shows the FMU's error and its discarded step."""
 
 import contextlib
 import io
@@ -13,13 +14,9 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 README = ROOT / "README.md"
-#: Where the user reads Python examples: the README, the short README to come, and the
-#: documentation's snippets (docs/snippets/*.py, included in its pages).
-SOURCES = (
-    README,
-    ROOT / "docs" / "README_next.md",
-    *sorted((ROOT / "docs" / "snippets").glob("*.py")),
-)
+#: Where the user reads Python examples: the README and the documentation's snippets
+#: (docs/snippets/*.py, included in its pages).
+SOURCES = (README, *sorted((ROOT / "docs" / "snippets").glob("*.py")))
 KEYS = {
     "simulate_fmu(": "plain",
     "BearingModel(pair)": "bearing",
@@ -173,3 +170,15 @@ def test_plain_fmpy_example_shows_the_error_and_the_discarded_step(examples):
     assert discards and "one step takes at most 100000" in discards[-1], ns["messages"]
     if compiled_export() is not None:  # servofmu's export: the error raised (and printed)
         assert "fmi2ExitInitializationMode failed with status 3" in ns["__printed__"]
+
+
+def test_every_snippet_is_shown_in_a_page():
+    # the snippets run above are the ones a reader sees: each is included by a docs page
+    pages = [*ROOT.joinpath("docs").glob("*.md"), *ROOT.joinpath("docs", "guide").glob("*.md")]
+    included = {
+        name
+        for page in pages
+        for name in re.findall(r"```\{literalinclude\} [./]*snippets/(\S+\.py)", page.read_text())
+    }
+    snippets = {p.name for p in SOURCES if p.suffix == ".py"}
+    assert snippets and snippets <= included, snippets - included

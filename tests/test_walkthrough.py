@@ -4,9 +4,8 @@ they stand, in a folder laid out as a clone (the examples, and the ``.venv`` tha
 made), and the files the walkthrough promises are there.
 
 Every ``sh`` block of the section is a command sequence to run (Markdown fences ```` ```sh ````,
-or reStructuredText ``.. code-block:: sh`` once the page moves under ``docs/``): write any
-listing that must not run in another language (``text``). Point :data:`DOCUMENT` and
-:data:`SECTION` at the page when it moves.
+or reStructuredText ``.. code-block:: sh``): write any listing that must not run in another
+language (``text``). :data:`DOCUMENT` and :data:`SECTION` name the page and its section.
 """
 
 from __future__ import annotations
@@ -22,7 +21,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 #: The document that holds the walkthrough, and the title of its section.
-DOCUMENT = ROOT / "README.md"
+DOCUMENT = ROOT / "docs" / "guide" / "own_gimbal.md"
 SECTION = "Model your own gimbal"
 
 
