@@ -1,4 +1,4 @@
-"""Crafted archives and XML against the harness and `servofmu validate` (issue 7): entries
+"""Crafted archives and XML against the harness and `servofmu validate`: entries
 with absolute paths, `..`, backslashes, drive letters or links, too many entries, a zip bomb,
 billion laughs, external entities; each refused with a clear message, nothing written
 outside the target folder, no entity expanded or external file read."""

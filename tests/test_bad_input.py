@@ -1,5 +1,5 @@
 """Every public physics function rejects bad input with a ValueError that names the argument,
-its value and the valid range (issue 2, "Bad input")."""
+its value and the valid range."""
 
 import math
 import re

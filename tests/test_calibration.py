@@ -1,4 +1,4 @@
-"""Calibration from measured friction torque (issue 8): recovery of known coefficients from
+"""Calibration from measured friction torque: recovery of known coefficients from
 synthetic data within their standard errors, identifiability warnings, bad data, the .ssv
 parameter set in the FMU, and the command line."""
 
@@ -209,7 +209,7 @@ def test_cli_report_plot_and_ssv(tmp_path, capsys):
     assert "'10 furlongs'" in capsys.readouterr().err
 
 
-# ------------------------------------------------------------------- a fit that failed (#16)
+# ------------------------------------------------------------------------ a fit that failed
 EXAMPLE = "examples/data/gimbal_friction_synthetic.csv"
 README_ARGS = ["--speed", "10 deg/s", "--fit", "palmgren_s0,sliding_friction"]
 

@@ -1,4 +1,4 @@
-"""The wider published catalogue (issue 13 part 5): bearings with published or rule-based ball
+"""The wider published catalogue: bearings with published or rule-based ball
 sets, deep-groove clearance groups, lubricant records with their datasheet values.
 
 Expected numbers are computed here from the published inputs (hand formulas), never taken

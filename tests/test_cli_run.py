@@ -1,4 +1,4 @@
-"""`servofmu run` from a user's side (issue 16): every bad argument exits 2 with one line
+"""`servofmu run` from a user's side: every bad argument exits 2 with one line
 naming it before any FMU is instantiated, exit 1 only for a run that failed, Ctrl-C stops at a
 step boundary and keeps the results (a real SIGINT to a child process), and the results carry
 units (CSV headers, plot axes in the FMUs' display units)."""

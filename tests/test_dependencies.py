@@ -1,4 +1,4 @@
-"""The dependencies the built FMUs declare in ModelStructure are true (issue 15: an
+"""The dependencies the built FMUs declare in ModelStructure are true (an
 InitialUnknown without them reads "depends on everything", and OMSimulator then finds loops
 that are not there).
 

@@ -139,7 +139,7 @@ def test_bad_input(geom):
         eq.axial_state(geom, float("inf"))
 
 
-# --- moment loads (issue 12, item 5) ------------------------------------------------------
+# --- moment loads ----------------------------------------------------------------------
 
 
 def arm_by_hand(g: RaceGeometry, tilt_arm: str) -> float:

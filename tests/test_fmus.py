@@ -1,5 +1,5 @@
 """The five FMUs through fmpy: validation, outputs after initialization, state, reset,
-several instances, bad input, agreement with the library (issue 4)."""
+several instances, bad input, agreement with the library."""
 
 import json
 import math
@@ -344,7 +344,7 @@ def test_bad_tunable_parameter_after_initialization_then_fixed(fmus):
         ("BearingFriction", {"preload_method": 0}, "preload_method = 0 is not one of the items"),
         ("ServoController", {"mode": 3}, "mode = 3 is not one of the items (1 = position, 2 = s"),
         ("ActuatorStiffness", {"support_loop_model": -1}, "support_loop_model = -1 is not one"),
-        # the consistency checks of issue 13, logged at fmi2ExitInitializationMode
+        # the parameters' consistency checks, logged at fmi2ExitInitializationMode
         ("BearingFriction", {"ball_diameter": 5e-3}, "ball_diameter = 0.005 m must be below (ou"),
         ("BearingFriction", {"n_balls": 40}, "(the balls must fit on the pitch circle)"),
         ("BearingFriction", {"inner_curvature": 0.5}, "inner_curvature = 0.5 must exceed 0.5"),

@@ -72,7 +72,7 @@ def test_71807c_geometry_is_consistent():
     ],
 )
 def test_bad_geometry_is_rejected(b71803, change, match):
-    """The consistency checks of the FMU parameters (issue 13), each naming its values."""
+    """The consistency checks of the FMU parameters, each naming its values."""
     with pytest.raises(ValueError, match=re.escape(match)):
         dataclasses.replace(b71803, **change)
 

@@ -233,7 +233,7 @@ def test_unknown_override_variant_and_signal_targets(out, no_instantiation):
 
 # ----------------------------------------------------------------------------- running
 def test_linear_transformation_maps_motor_angle_to_output_angle(out, tmp_path):
-    # ema_actuator as it was before issue 15: the motor angle reaches the actuator's
+    # ema_actuator with a linearised motor side: the motor angle reaches the actuator's
     # output-angle input through a LinearTransformation (1/i0, the ratio at neutral)
     folder = _copy_system(tmp_path, "ema_actuator")
     factor = 1.0 / float(reduction_ratio(Actuator.from_catalog("liu2014_ema"), 0.0).total)

@@ -222,7 +222,7 @@ def test_yu_calibrations_hit_their_points(yu):
 
 
 def test_yu_default_mounting_is_credible_at_minus_40(yu):
-    # issue 12: within 2× of Yu's 3.17 N·mm with no overload or lock, in the default mounting
+    # the default's aim: within 2× of Yu's 3.17 N·mm with no overload or lock (default mounting)
     r = rows(yu)
     total = r[f"fig8.total_m40.{yu2017.CALIBRATION_READING}"].computed
     assert 3.17 / 2 < total < 3.17 * 2

@@ -1,4 +1,4 @@
-"""The numeric parameter set of a bearing pair (issue 13): every physical input is a number,
+"""The numeric parameter set of a bearing pair: every physical input is a number,
 the model uses exactly these numbers, catalogue entries (built in or a user's) are presets of
 them; consistency checks; arrangement and preload method; round trip and "another bearing"
 through the FMU; user catalogues for the build."""

@@ -1,4 +1,4 @@
-"""Robustness (issue 7): property-based fuzzing of every FMU and soak runs, each in a child
+"""Robustness: property-based fuzzing of every FMU and soak runs, each in a child
 process so that a crash of the host shows as a failed test with its output, not as a dead
 test run. Short sizes by default; ``pytest --long`` (``make test-long``) runs the full ones:
 10,000 fuzzed call sequences per FMU and 1,000,000 steps per soak. The archive and XML

@@ -92,7 +92,7 @@ def test_friction_vs_temperature_compares_the_mountings(results):
         ]
         return row
 
-    # issue 12's aim for the default: within a factor of 2 of Yu's 3.17 N·mm at −40 °C with
+    # the default's aim: within a factor of 2 of Yu's 3.17 N·mm at −40 °C with
     # no overload or lock (consistent with Yu: the arm section was chosen knowing it)
     yoke = at("yoke", -40.0)
     assert 3.17 / 2 < yoke["k_t*i [N.mm]"] < 2 * 3.17 and yoke["state"] == "preloaded"
@@ -267,7 +267,7 @@ def test_chamber_loops_read_the_same_torque_as_the_millisecond_gimbal(fmus):
 
 
 def test_each_friction_model_at_minus_40_in_the_co_simulation(results):
-    """Issue 17: the gimbal's −40 °C torque of every friction model, beside Yu's 3.17 N·mm,
+    """The gimbal's −40 °C torque of every friction model, beside Yu's 3.17 N·mm,
     measured by the electrical method in the co-simulation (the harness computes no physics)."""
     res = results["friction_vs_temperature"]
     table = res.tables[1]

@@ -1,4 +1,4 @@
-"""The SSP systems of ssp/: schema-valid as fmpy reads them, the conventions of issue 5
+"""The SSP systems of ssp/: schema-valid as fmpy reads them, the project's conventions
 (flat, hyphen-free names, connector units, the OSP step annotation, one .ssv per component),
 and packed with their FMUs by ``servofmu build``."""
 

@@ -1,4 +1,4 @@
-"""Sweeps and Monte-Carlo on Dask (issue 6), at small sizes: points, the two tasks, failures
+"""Sweeps and Monte-Carlo on Dask, at small sizes: points, the two tasks, failures
 that keep the other results, tables, the tolerance study and the command line."""
 
 from __future__ import annotations

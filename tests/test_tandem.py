@@ -1,5 +1,5 @@
-"""A tandem pair (issue 13: "back-to-back, face-to-face or tandem; the thermal loop differs
-between them, so say and test how"): both bearings face the same way and share the thrust of
+"""A tandem pair (the thermal loop differs between back-to-back, face-to-face and tandem;
+these tests say how): both bearings face the same way and share the thrust of
 a force or spring preload and the axial load. The members between them do not change that
 thrust, they shift it between A and B (physics/preload.py ARRANGEMENTS, tandem_offsets).
 

@@ -1,4 +1,4 @@
-"""The thermal network of a bearing mechanism (issue 14, part 2): hand-computed cases, exact
+"""The thermal network of a bearing mechanism: hand-computed cases, exact
 stepping of stiff networks, the radiation linearisation against a fine ODE solution, the
 parameters derived from the catalogue, and the ThermalNetwork FMU."""
 

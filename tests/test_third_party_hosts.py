@@ -1,5 +1,5 @@
-"""The FMUs in third-party hosts: libcosim (libcosimpy) and a plain C program (issue 4), which
-leaves either with _exit() or with a normal exit() (issue 15).
+"""The FMUs in third-party hosts: libcosim (libcosimpy) and a plain C program, which
+leaves either with _exit() or with a normal exit().
 
 Each host runs an FMU with constant inputs for a number of steps; its outputs must equal
 those of fmpy's FMU2Slave driven the same way."""

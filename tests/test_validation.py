@@ -67,7 +67,7 @@ def test_statuses_follow_the_stated_tolerances(rep):
             assert r[rid].tolerance == "±30 % [measured torque]"
     ehl = [rid for rid in r if rid.endswith(".ehl")]
     assert sum(r[i].status == "reproduced" for i in ehl) == 8
-    # the default (Yu-calibrated) model is 5-19x too high on these small contacts, as issue 17 says
+    # the default (Yu-calibrated) model is 5-19x too high on these small contacts
     yu = [r[i].computed / r[i].published for i in r if i.endswith(".yu2017")]
     assert len(yu) == 12 and 5.0 < min(yu) and max(yu) < 19.0
     assert r["g1074.0.running.grease_term"].status == "calibrated"
@@ -81,7 +81,7 @@ def test_statuses_follow_the_stated_tolerances(rep):
 
 
 def test_the_second_source_row_counts_the_recorded_sources(rep):
-    """Issue 17 asks for two independent sources; while one is recorded the row says so and
+    """The validation wants two independent sources; while one is recorded the row says so and
     names every candidate searched (data/friction_measurements.toml [[searched]])."""
     data = catalog._table("friction_measurements")
     recorded = [k for k, v in data.items() if isinstance(v, dict)]

@@ -1,4 +1,4 @@
-"""Thermal transients in a chamber (issue 14): the part temperatures of a ThermalNetwork drive
+"""Thermal transients in a chamber: the part temperatures of a ThermalNetwork drive
 the bearing, and its preload and torque are set against the quasi-static curve, the bearing
 library at a uniform temperature equal to the chamber's.
 

@@ -292,7 +292,7 @@ class ActuatorStiffness(ServoSlave):
             source="assumed: this project's extension of Liu 2014",
         ),
         *(spec_parameter(p) for p in _SUPPORT_SPECS),
-        # the motor side (issue 15): an SSP connection can only scale linearly, so a system
+        # the motor side: an SSP connection can only scale linearly, so a system
         # that drives the actuator from its motor gives it the motor's angle and speed, and
         # the exact crank-slider reduction is applied here
         Var(
@@ -340,7 +340,7 @@ class ActuatorStiffness(ServoSlave):
             "deg/s",
             ("speed", "motor_speed", *_ANGLE),
         ),
-        # the support bearings' part temperatures (issue 14), e.g. from a ThermalNetwork
+        # the support bearings' part temperatures, e.g. from a ThermalNetwork
         *part_inputs(" of the support bearings"),
         temperature_mode_parameter(),
     )

@@ -22,7 +22,7 @@ Sources (data with provenance in ``physics/data/friction_measurements.toml`` and
    the ASTM D341 line through two points, Vogel's law through three or more), with the
    range of each lubricant's data; Yu's Krytox 143AA against his eq 18.
 
-Issue 17 asks for at least two independent oil-lubricated sources. The candidates searched for a
+The validation wants at least two independent oil-lubricated sources. The candidates searched for a
 second one, and why none could be used, are data (``[[searched]]`` in
 ``friction_measurements.toml``); the row ``validation.second_oil_source`` counts the sources
 recorded and lists the candidates while there is only one.
@@ -510,7 +510,7 @@ def _grease_rows() -> tuple[list[Row], list[Parameter]]:
 
 
 def _second_source_row() -> Row:
-    """The trend row for issue 17's "at least two independent sources": the number of sources
+    """The trend row for "at least two independent sources": the number of sources
     recorded in ``friction_measurements.toml`` and, while it is one, the candidates that were
     searched for and why none is used (its ``[[searched]]`` entries)."""
     data = catalog._table("friction_measurements")
@@ -519,7 +519,7 @@ def _second_source_row() -> Row:
     listed = "; ".join(f"{c['cite']} ({c['why']})" for c in searched)
     return trend(
         "validation.second_oil_source",
-        "a second independent oil-lubricated torque measurement (issue 17: two sources)",
+        "a second independent oil-lubricated torque measurement (two independent sources wanted)",
         "bearing geometry, load, speed, lubricant and its viscosity, from another laboratory",
         len(sources) >= 2,
         f"{len(sources)} source(s) recorded: {', '.join(sources)}",
