@@ -2,10 +2,11 @@
 
 Why
 ---
-A non-Python host (a C or C++ program that dlopens the FMU with ``LD_PRELOAD=libpython``)
-got fmi2OK from every FMI call and then died with SIGSEGV or SIGABRT inside a normal
-``exit()``, for all four FMUs, depending on the heap layout (``PYTHONHASHSEED`` 3, 4, 5 show
-it). Two defects of pythonfmu 0.7's export library meet scipy:
+Without it, a non-Python host (a C or C++ program that dlopens the FMU with
+``LD_PRELOAD=libpython``) gets fmi2OK from every FMI call and then dies with SIGSEGV or SIGABRT
+inside a normal ``exit()``, with each FMU tested, depending on the heap layout
+(``PYTHONHASHSEED`` 3, 4, 5 show it). Two defects of pythonfmu 0.7's export library meet
+scipy:
 
 1. pythonfmu keeps the interpreter in a namespace-scope ``std::shared_ptr<PyState>`` whose
    destructor wakes pythonfmu's worker thread to run ``Py_Finalize``. That destructor was
@@ -20,8 +21,8 @@ it). Two defects of pythonfmu 0.7's export library meet scipy:
    destructor has run: the control block is released a second time. This hits Python hosts
    too (fmpy: ``corrupted double-linked list`` at exit, a few runs in a hundred).
 
-The fix
--------
+What this module does
+---------------------
 After the imports that load the C++ extensions, look up the FMU binary that is already
 loaded (``dlopen`` with ``RTLD_NOLOAD``, plus ``RTLD_NODELETE`` so that it stays mapped until
 the exit handlers run) and register its exported ``finalizePythonInterpreter`` with libc's
