@@ -58,6 +58,8 @@ class RunResult:
     csv: Path | None = None
     wall_time: float = 0.0
     units: dict[str, Scale] = field(default_factory=dict)  # field name → unit and display
+    #: the distinct warnings the components logged, "component (FMU): message", in order
+    warnings: list[str] = field(default_factory=list)
 
     @property
     def names(self) -> tuple[str, ...]:
@@ -137,11 +139,30 @@ def order_components(system: System) -> list[str]:
     return order
 
 
+class _Journal(deque):
+    """The components' log messages of a run, (component, status, message), the last
+    :data:`JOURNAL_LENGTH` in the order logged; and every distinct warning (the first
+    :data:`WARNINGS_KEPT`), which a successful run reports too."""
+
+    def __init__(self):
+        super().__init__(maxlen=JOURNAL_LENGTH)
+        self.warnings: dict[tuple[str, str], None] = {}
+
+    def note(self, name: str, status: int, text: str) -> None:
+        self.append((name, status, text))
+        if status == 1 and len(self.warnings) < WARNINGS_KEPT:
+            self.warnings.setdefault((name, text), None)
+
+
+JOURNAL_LENGTH = 200
+WARNINGS_KEPT = 20
+
+
 class _Unit:
     """One instantiated component with preallocated ctypes buffers for the step loop; its
     log messages go to ``log`` and, tagged with its name, to the run's ``journal``."""
 
-    def __init__(self, comp, unzip_dir: Path, journal: deque | None = None):
+    def __init__(self, comp, unzip_dir: Path, journal: _Journal | None = None):
         from fmpy.fmi1 import calloc, free
         from fmpy.fmi2 import (
             FMU2Slave,
@@ -154,12 +175,12 @@ class _Unit:
         self.name = comp.name
         self.comp = comp
         self.log: deque[str] = deque(maxlen=50)
-        self.journal = deque(maxlen=200) if journal is None else journal
+        self.journal = _Journal() if journal is None else journal
 
         def logger(env, instance, status, category, message):
             text = message.decode(errors="replace") if isinstance(message, bytes) else str(message)
             self.log.append(f"[{STATUS[status] if 0 <= status < 6 else status}] {text}")
-            self.journal.append((self.name, status, text))
+            self.journal.note(self.name, status, text)
 
         # each unit's own logger, called with the message as the FMU passes it: fmpy's
         # printf-formatting proxy (fmpy.logging.addLoggerProxy) keeps one logger for the whole
@@ -551,7 +572,7 @@ class _Settings:
 def _run(system, plan: RunPlan, signals, settings: _Settings, stop_request):
     order = order_components(system)
     units: dict[str, _Unit] = {}
-    journal: deque = deque(maxlen=200)  # (component, status, message), in the order logged
+    journal = _Journal()
     t0_wall = _time.perf_counter()
     try:
         for comp in system.components.values():  # FMUs unpacked once per loaded system
@@ -690,10 +711,20 @@ class _Cosimulation:
             message,
             wall_time=_time.perf_counter() - self.t0_wall,
             units={t: self.system.scale(t) for t in record},
+            warnings=self.warnings(),
         )
         if self.settings.out_dir is not None:
             res.csv = res.to_csv(Path(self.settings.out_dir) / "results.csv")
         return res
+
+    def warnings(self) -> list[str]:
+        """The distinct warnings the components logged, "component (FMU): message"."""
+        if not self.units:
+            return []
+        journal = next(iter(self.units.values())).journal
+        return [
+            f"{n} ({self.units[n].comp.model_identifier}): {text}" for n, text in journal.warnings
+        ]
 
     def stop(self, message, error=HarnessError, **kw):
         """End the run: the rows so far (on disk too), the FMUs' log in failure.log."""

@@ -89,6 +89,16 @@ def test_a_failed_run_exits_1_and_keeps_its_results(ssp, tmp_path, capsys):
     assert 0.04 < data["time"][-1] < 0.05 and (tmp_path / "failure.log").is_file()
 
 
+def test_a_run_that_left_the_lubricants_data_says_so(ssp, tmp_path, capsys):
+    profile = tmp_path / "cold.csv"
+    profile.write_text("time,T\n0,203.15\n0.02,203.15\n")  # -70 °C: Krytox's data end at -40
+    signal_ = f"bearing.temperature={profile}:T"
+    rc = main(["run", ssp, "--signal", signal_, "--stop", "0.02", "--out", str(tmp_path)])
+    err = capsys.readouterr().err
+    assert rc == 0, err
+    assert "warning: bearing (BearingFriction)" in err and "203.15 K" in err, err
+
+
 def test_results_and_plot_carry_units(ssp, tmp_path, capsys):
     out = tmp_path / "run"
     profile = tmp_path / "chamber.csv"

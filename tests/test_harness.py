@@ -595,3 +595,6 @@ def test_the_gimbal_runs_at_minus_84_degc_with_its_lubricant_flagged(out):
     assert res["motor.speed"][-1] == pytest.approx(math.radians(10.0), rel=1e-3)
     assert np.all(res["bearing.outside_lubricant_range"] > 0.5)
     assert 1e-3 < res["bearing.running_torque"][-1] < 1e-2  # N·m: a few N·mm
+    # the run succeeded, and still reports the bearing's warning: once, naming the temperature
+    bearing = [w for w in res.warnings if w.startswith("bearing (BearingFriction)")]
+    assert len(bearing) == 1 and "189.15" in bearing[0], res.warnings

@@ -290,6 +290,8 @@ def _run_system(args, path, fmu_dir) -> int:
         f"{res.wall_time:.3g} s wall, set-up included ({span / res.wall_time:.3g}× real time)"
     )
     print(f"results: {res.csv}")
+    for text in res.warnings:  # the model left its data, a value was clipped, ...
+        print(f"warning: {text}", file=sys.stderr)
     if args.plot:
         print(f"plot: {res.plot(out / 'results.png', args.plot)}")
     return 0
