@@ -87,7 +87,8 @@ html_theme_options = {
     "navigation_with_keys": False,
     "show_toc_level": 2,
     "header_links_before_dropdown": 8,
-    "secondary_sidebar_items": ["page-toc"],
+    # the host page's five-column table needs the width of the page contents
+    "secondary_sidebar_items": {"**": ["page-toc"], "guide/hosts": []},
     "footer_start": ["copyright"],
     "footer_end": [],
 }
