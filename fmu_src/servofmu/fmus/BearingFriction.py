@@ -50,6 +50,7 @@ from servofmu.fmus.part_temperatures import (
     temperatures,
 )
 from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter
+from servofmu.physics import continuation
 from servofmu.physics.bearing import BearingModel
 from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in
 from servofmu.physics.pair_state import PointState
@@ -314,6 +315,12 @@ class BearingFriction(ServoSlave):
     )
     _SPEED_OUTPUTS = _outputs_of(_SPEED_FIELDS, VARIABLES)  # those that move with speed alone
     _set_speed = staticmethod(ServoSlave.output_setter(_SPEED_OUTPUTS))
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        # which per-step path runs here: the compiled kernels shipped for this platform, or
+        # the same equations in Python where none matches
+        self.log(f"{self.instance_name}: per-step kernels {continuation.describe()}")
 
     def configure(self):
         values = {p.name: getattr(self, p.name) for p in PARAMETERS}
