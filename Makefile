@@ -5,9 +5,11 @@ BIN     = $(VENV)/bin
 STAMP   = $(VENV)/.installed-stamp
 OUT    ?= out
 
-.PHONY: run test test-long bench lint clean system-deps
+.PHONY: run test test-long bench lint docs clean system-deps
 
-$(STAMP): pyproject.toml
+# setup.py compiles the FMU export library (build/export/) and the pair kernels
+# (physics/pair_kernels.py) at install: an edit there reinstalls
+$(STAMP): pyproject.toml setup.py $(wildcard build/export/src/*/*) fmu_src/servofmu/physics/pair_kernels.py
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[test]'
@@ -29,9 +31,15 @@ system-deps:
 	    || echo "libtbb12 could not be installed: the ecos tests will be skipped"; \
 	else echo "libtbb12 is missing (install it as root: apt-get install libtbb12): the ecos tests will be skipped"; fi
 
-## tests: lint, format check, test suite
-test: $(STAMP) system-deps lint
+## tests: lint, format check, the documentation, test suite
+test: $(STAMP) system-deps lint docs
 	$(BIN)/python -m pytest
+
+## documentation site into docs/_build/html, offline, warnings as errors; the examples gallery
+## runs its scripts (SERVOFMU_GALLERY=coarse: a few points per curve; full: as a user runs them)
+SERVOFMU_GALLERY ?= coarse
+docs: $(STAMP)
+	SERVOFMU_GALLERY=$(SERVOFMU_GALLERY) $(BIN)/sphinx-build -W --keep-going -q -b html docs docs/_build/html
 
 ## long mode: full-size fuzzing (10,000 cases per FMU) and soaks (1,000,000 steps); ~1 h
 test-long: $(STAMP) system-deps lint
@@ -41,16 +49,20 @@ lint: $(STAMP)
 	$(BIN)/ruff check .
 	$(BIN)/ruff format --check .
 
-## benchmarks (not part of the test run)
+## benchmarks (not part of the test run): each prints its table and saves its figures with
+## the run's context to benchmarks/results/NAME.json, which the documentation's Performance
+## page reads (commit them after a run)
+RESULTS = benchmarks/results
 bench: $(STAMP)
-	$(BIN)/python benchmarks/bench_bearing.py --models
-	$(BIN)/python benchmarks/bench_actuator.py
-	$(BIN)/python benchmarks/bench_fmus.py --models
-	$(BIN)/python benchmarks/bench_worst_step.py
-	$(BIN)/python benchmarks/bench_harness.py
-	$(BIN)/python benchmarks/bench_sweep.py
-	$(BIN)/python benchmarks/bench_thermal_network.py
-	$(BIN)/python benchmarks/bench_calibration.py
+	$(BIN)/python benchmarks/bench_bearing.py --models --save $(RESULTS)/bench_bearing.json
+	$(BIN)/python benchmarks/bench_actuator.py --save $(RESULTS)/bench_actuator.json
+	$(BIN)/python benchmarks/bench_fmus.py --models --save $(RESULTS)/bench_fmus.json
+	$(BIN)/python benchmarks/bench_worst_step.py --save $(RESULTS)/bench_worst_step.json
+	$(BIN)/python benchmarks/bench_harness.py --save $(RESULTS)/bench_harness.json
+	$(BIN)/python benchmarks/bench_sweep.py --save $(RESULTS)/bench_sweep.json
+	$(BIN)/python benchmarks/bench_thermal_network.py --save $(RESULTS)/bench_thermal_network.json
+	$(BIN)/python benchmarks/bench_calibration.py --save $(RESULTS)/bench_calibration.json
 
 clean:
 	rm -rf $(VENV) $(OUT) .pytest_cache .ruff_cache .setuptools-build dist servofmu.egg-info
+	rm -rf docs/_build docs/_generated docs/auto_examples docs/api/generated

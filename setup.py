@@ -1,12 +1,21 @@
 """The compiled parts of servofmu, built at install time (the project's metadata is in
-pyproject.toml; this file only declares the compiled parts).
+pyproject.toml; this file only declares the compiled parts). Both are optional: without a
+compiler the install succeeds and servofmu runs without them.
 
 ``servofmu.physics._pair_kernels`` is ``fmu_src/servofmu/physics/pair_kernels.py`` compiled
 by Cython (its pure-Python mode: the same file runs uncompiled), with the SHA-256 of that
 source appended as ``SOURCE_HASH``: ``servofmu.physics.continuation`` imports the compiled
-module only when it was built from the source next to it. The extension is optional: without
-a C compiler (or without Cython) the install succeeds and the package runs the Python path.
-``pip install -e .`` builds it in place, next to the source.
+module only when it was built from the source next to it. Without a C compiler (or without
+Cython) the package runs the Python path. ``pip install -e .`` builds it in place, next to
+the source; ``servofmu build`` ships it inside every FMU's copy of the package.
+
+``servofmu.build.export.servofmu_export`` is pythonfmu 0.7.0's FMI 2.0 export library with
+servofmu's changes (``build/export/README.md``), compiled into that folder, which is not a
+Python package: a shared library, not an importable module. ``servofmu build`` puts it into
+every FMU as ``binaries/linux64/<modelIdentifier>.so``. Like pythonfmu's own binary it is
+compiled against the stable ABI (``Py_LIMITED_API``) and does not link libpython: the
+hosting interpreter provides the Python symbols. Linux only; without a C++17 compiler the
+FMUs carry pythonfmu's binary.
 """
 
 import hashlib
@@ -16,7 +25,9 @@ from pathlib import Path
 from setuptools import Extension, setup
 
 HERE = Path(__file__).parent
-#: Where the source is copied for compilation, with its hash appended (setup.cfg's build_base).
+EXPORT = "build/export/src"
+#: Where the kernels' source is copied for compilation, with its hash appended (setup.cfg's
+#: build_base).
 GENERATED = Path(".setuptools-build") / "cython"
 #: Cython's directives for the kernels: Python's semantics (division by zero raises), no
 #: bounds or wrap-around checks on the tuples the kernels index with constants.
@@ -56,4 +67,24 @@ def compiled_kernels() -> list[Extension]:
         return []
 
 
-setup(ext_modules=[*compiled_kernels()])
+def export_library() -> list[Extension]:
+    """servofmu's FMI 2.0 export library (none outside Linux)."""
+    if not sys.platform.startswith("linux"):  # the FMUs carry pythonfmu's binary elsewhere
+        return []
+    return [
+        Extension(
+            "servofmu.build.export.servofmu_export",
+            sources=[f"{EXPORT}/pythonfmu/fmi2.cpp", f"{EXPORT}/pythonfmu/PySlaveInstance.cpp"],
+            # the headers (and the licence of the sources): in the sdist, and a rebuild on change
+            depends=[*sorted(str(p) for p in Path(EXPORT).rglob("*.h*")), "build/export/LICENSE"],
+            include_dirs=[EXPORT],
+            define_macros=[("Py_LIMITED_API", "0x030B0000")],
+            py_limited_api=True,
+            extra_compile_args=["-std=c++17", "-g0"],  # no debug information: 0.4 MB, not 5
+            language="c++",
+            optional=True,
+        )
+    ]
+
+
+setup(ext_modules=[*compiled_kernels(), *export_library()])

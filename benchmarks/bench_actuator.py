@@ -13,6 +13,7 @@ import json
 import time
 
 import numpy as np
+from results import save  # benchmarks/ is the script's folder
 
 from servofmu.physics.actuator import Actuator, reduction_ratio, stiffness_breakdown
 
@@ -29,6 +30,11 @@ def _time(fn, repeat: int = 3) -> float:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--json", action="store_true")
+    parser.add_argument(
+        "--save",
+        metavar="FILE.json",
+        help="also write the figures and the run's context to this JSON file (docs: Performance)",
+    )
     parser.add_argument("--points", type=int, default=1000)
     args = parser.parse_args()
     act = Actuator.from_catalog("liu2014_ema")
@@ -57,6 +63,8 @@ def main() -> None:
             "loop_ms": t_loop * 1e3,
             "speedup": t_loop / t_vec,
         }
+    if args.save:
+        save(args.save, figures)
     if args.json:
         print(json.dumps(figures, indent=2))
         return

@@ -29,6 +29,7 @@ import math
 import time
 
 import numpy as np
+from results import save  # benchmarks/ is the script's folder
 from trajectories import BEARING_LOOPS as LOOPS  # benchmarks/ is the script's folder
 
 from servofmu.physics.bearing import (
@@ -59,6 +60,11 @@ def per_step(pair, values, steps: int, repeat: int) -> tuple[float, int]:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--json", action="store_true")
+    parser.add_argument(
+        "--save",
+        metavar="FILE.json",
+        help="also write the figures and the run's context to this JSON file (docs: Performance)",
+    )
     parser.add_argument("--points", type=int, default=1000)
     parser.add_argument("--steps", type=int, default=4000)
     parser.add_argument("--repeat", type=int, default=5)
@@ -111,6 +117,8 @@ def main() -> None:
         "curve scalar loop [ms]": loop * 1e3,
         "curve speed-up [x]": loop / vec,
     }
+    if args.save:
+        save(args.save, figures)
     if args.json:
         print(json.dumps(figures, indent=2))
         return

@@ -21,6 +21,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+from results import save  # benchmarks/ is the script's folder
 
 TEMPS_C = (-40.0, -20.0, 0.0, 20.0, 40.0, 60.0)
 
@@ -110,14 +111,21 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--size-mb", type=float, default=200.0)
     parser.add_argument("--child", help=argparse.SUPPRESS)
+    parser.add_argument(
+        "--save",
+        metavar="FILE.json",
+        help="also write the figures and the run's context to this JSON file (docs: Performance)",
+    )
     args = parser.parse_args()
     if args.child:
         child(args.child)
         return
     columns = ("file [MB]", "rows", "groups", "RSS imports", "RSS peak", "growth", "read [s]")
     print(" ".join(columns) + " fit [s]  s0, mu (SE)")
+    runs = []
     for size in (args.size_mb / 10.0, args.size_mb):
         r = measure(size)
+        runs.append(r)
         growth = r["rss_peak_mb"] - r["rss_imports_mb"]
         est = ", ".join(
             f"{e:.4f} ({s:.1g})" for e, s in zip(r["estimate"], r["standard_error"], strict=True)
@@ -127,6 +135,8 @@ def main() -> None:
             f"{r['rss_peak_mb']:6.0f} MB {growth:4.0f} MB {r['read_s']:8.1f} {r['fit_s']:7.2f}  "
             f"{est}{'  POOR FIT' if r['poor'] else ''}"
         )
+    if args.save:
+        save(args.save, {"runs": runs})
 
 
 if __name__ == "__main__":

@@ -34,6 +34,7 @@ from pathlib import Path
 
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Slave
+from results import save  # benchmarks/ is the script's folder
 from trajectories import BEARING_LOOPS  # benchmarks/ is the script's folder
 
 from servofmu.build.fmu import FMUS, build_all
@@ -222,8 +223,30 @@ def _run_worker(fmus: Path, implementation: str, args) -> dict:
            "--repeat", str(args.repeat), "--clock", args.clock]  # fmt: skip
     if args.models:
         cmd.append("--models")
-    out = subprocess.run(cmd, env=env, capture_output=True, text=True, check=True)
+    out = subprocess.run(cmd, env=env, capture_output=True, text=True)
+    if out.returncode != 0:
+        sys.exit(f"the {implementation} worker failed:\n{out.stderr}")
     return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+#: The implementations of the per-step kernels measured, each in its own process.
+IMPLEMENTATIONS = ("compiled", "python")
+
+
+def figures_of(results: dict) -> dict:
+    """The saved figures: which kernels each process ran, and one row per loop with µs per
+    step and the ratio to the empty FMU of each implementation, and the aim."""
+    rows = []
+    for label in results["python"]["loops"]:
+        row = {"loop": label}
+        for impl in IMPLEMENTATIONS:
+            fig = results[impl]["loops"][label]
+            row[f"{impl} µs"] = fig["us"]
+            row[f"{impl} ×"] = fig["ratio"]
+        row["aim ×"] = AIMS.get(label, "")
+        rows.append(row)
+    kernels = {impl: results[impl]["implementation"] for impl in IMPLEMENTATIONS}
+    return {"kernels": kernels, "loops": rows}
 
 
 def main() -> None:
@@ -231,6 +254,11 @@ def main() -> None:
     parser.add_argument("--steps", type=int, default=20000)
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--json", action="store_true")
+    parser.add_argument(
+        "--save",
+        metavar="FILE.json",
+        help="also write the figures and the run's context to this JSON file (docs: Performance)",
+    )
     parser.add_argument("--clock", choices=("cpu", "wall"), default="cpu")
     parser.add_argument(
         "--models",
@@ -251,23 +279,20 @@ def main() -> None:
         build_all(fmus, FMUS, systems=False)
         (tmp / "Empty.py").write_text(EMPTY)
         FmuBuilder.build_FMU(tmp / "Empty.py", dest=fmus)
-        results = {impl: _run_worker(fmus, impl, args) for impl in ("compiled", "python")}
+        results = {impl: _run_worker(fmus, impl, args) for impl in IMPLEMENTATIONS}
+    table = figures_of(results)
+    if args.save:
+        save(args.save, table)
     if args.json:
-        print(json.dumps(results, indent=2))
+        print(json.dumps(table, indent=2, ensure_ascii=False))
         return
-    for impl, res in results.items():
-        print(f"{impl}: kernels {res['implementation']}")
+    for impl, what in table["kernels"].items():
+        print(f"{impl}: kernels {what}")
     print(f"{'loop':62s} {'compiled':>18s} {'python':>18s} {'aim':>6s}")
-    labels = results["python"]["loops"]
-    for label in labels:
-        cells = []
-        for impl in ("compiled", "python"):
-            fig = results[impl]["loops"][label]
-            cells.append(f"{fig['us']:7.2f} µs {fig['ratio']:5.2f}×")
-        aim = AIMS.get(label)
-        print(
-            f"{label:62s} {cells[0]:>18s} {cells[1]:>18s} {'' if aim is None else f'≤ {aim}':>6s}"
-        )
+    for row in table["loops"]:
+        cells = [f"{row[f'{i} µs']:7.2f} µs {row[f'{i} ×']:5.2f}×" for i in IMPLEMENTATIONS]
+        aim = "" if row["aim ×"] == "" else f"≤ {row['aim ×']}"
+        print(f"{row['loop']:62s} {cells[0]:>18s} {cells[1]:>18s} {aim:>6s}")
 
 
 if __name__ == "__main__":

@@ -19,6 +19,8 @@ import statistics
 import time
 from pathlib import Path
 
+from results import save  # benchmarks/ is the script's folder
+
 from servofmu.harness import load_system, run
 from servofmu.harness.libcosim import run_libcosim
 from servofmu.harness.scenarios.common import system_path
@@ -59,6 +61,11 @@ def main(argv=None) -> dict:
     parser.add_argument("--long", type=float, default=10.0, help="long run [s simulated]")
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--json", action="store_true")
+    parser.add_argument(
+        "--save",
+        metavar="FILE.json",
+        help="also write the figures and the run's context to this JSON file (docs: Performance)",
+    )
     args = parser.parse_args(argv)
     ssp = system_path(SYSTEM)
     engines = {
@@ -83,6 +90,8 @@ def main(argv=None) -> dict:
     ref = results["libcosim (fixed step, Jacobi)"]["stepping real-time factor"]
     for r in results.values():
         r["speed vs libcosim"] = r["stepping real-time factor"] / ref
+    if args.save:
+        save(args.save, results, argv)
     if args.json:
         print(json.dumps(results, indent=2))
     else:

@@ -23,6 +23,7 @@ import time
 
 import numpy as np
 from dask.distributed import Client
+from results import save  # benchmarks/ is the script's folder
 
 from servofmu.harness.scenarios.common import system_path
 from servofmu.harness.sweep import ModelTask, SystemTask, grid_points, local_cluster, run_sweep
@@ -62,6 +63,11 @@ def main(argv=None) -> dict:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--samples", type=int, default=400, help="tolerance-study draws")
     parser.add_argument("--json", action="store_true")
+    parser.add_argument(
+        "--save",
+        metavar="FILE.json",
+        help="also write the figures and the run's context to this JSON file (docs: Performance)",
+    )
     args = parser.parse_args(argv)
     results = {}
     for name, (task, points, warmup) in workloads(args.samples).items():
@@ -73,6 +79,8 @@ def main(argv=None) -> dict:
             "runs/s, 2 workers": two,
             "speed-up": two / one,
         }
+    if args.save:
+        save(args.save, results, argv)
     if args.json:
         print(json.dumps(results, indent=2))
     else:

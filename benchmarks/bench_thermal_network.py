@@ -14,6 +14,7 @@ import argparse
 import time
 
 import numpy as np
+from results import save  # benchmarks/ is the script's folder
 
 from servofmu.physics import thermal_network as tn
 
@@ -36,11 +37,17 @@ def stepped(net, start, ref, h, tolerance, horizon):
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--hours", type=float, default=3.0)
+    parser.add_argument(
+        "--save",
+        metavar="FILE.json",
+        help="also write the figures and the run's context to this JSON file (docs: Performance)",
+    )
     args = parser.parse_args()
     horizon = 3600.0 * args.hours
     print(
         f"{'preset':24s} {'h [s]':>6s} {'tol [K]':>7s} {'max error [K]':>14s} {'expm':>6s} µs/step"
     )
+    rows = []
     for key in tn.PRESETS:
         net = tn.network(tn.preset(key))
         start = tn.steady_state(net, COLD, COLD, 0.0)
@@ -49,6 +56,18 @@ def main() -> None:
             for tol in (0.0, 0.1):
                 err, count, cost = stepped(net, start, ref, h, tol, horizon)
                 print(f"{key:24s} {h:6g} {tol:7g} {err:14.2e} {count:6d} {cost * 1e6:7.1f}")
+                rows.append(
+                    {
+                        "preset": key,
+                        "step [s]": h,
+                        "linearisation tolerance [K]": tol,
+                        "largest error [K]": err,
+                        "matrix exponentials": count,
+                        "us per step": cost * 1e6,
+                    }
+                )
+    if args.save:
+        save(args.save, {"hours": args.hours, "rows": rows})
 
 
 if __name__ == "__main__":

@@ -27,6 +27,7 @@ from pathlib import Path
 from fmpy import extract, read_model_description
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import FMU2Slave
+from results import save  # benchmarks/ is the script's folder
 
 from servofmu.build.fmu import build_all
 from servofmu.physics.bearing_parameters import PARAMETERS, default_parameters
@@ -211,6 +212,11 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--json", action="store_true")
     parser.add_argument("--clock", choices=("cpu", "wall"), default="cpu")
+    parser.add_argument(
+        "--save",
+        metavar="FILE.json",
+        help="also write the figures and the run's context to this JSON file (docs: Performance)",
+    )
     args = parser.parse_args()
     clock = time.process_time if args.clock == "cpu" else time.perf_counter
     results = {}
@@ -230,6 +236,8 @@ def main() -> None:
                 history, "stiffness", args.repeat, clock,
             )  # fmt: skip
     slowest = max(results, key=lambda k: results[k]["worst_ms"])
+    if args.save:
+        save(args.save, {"limit_ms": LIMIT * 1e3, "slowest": slowest, **results})
     if args.json:
         print(json.dumps({"limit_ms": LIMIT * 1e3, "slowest": slowest, **results}, indent=2))
         return

@@ -4,7 +4,10 @@ catalogue for a build (``servofmu build --catalog my.toml``) or a listing (``ser
 catalog``). The format is documented with an example in ``examples/my_gimbal_catalog.toml``.
 
 A user catalogue file holds tables ``[bearings.KEY]``, ``[lubricants.KEY]``,
-``[materials.KEY]``, ``[mountings.KEY]`` (keys new to the catalogue) and optionally
+``[materials.KEY]``, ``[mountings.KEY]`` (keys new to the catalogue), tables keyed by a mounting
+that take precedence over the package's for it — ``[coefficients.MOUNTING]`` (its friction
+coefficients: a calibration, as ``servofmu calibrate`` writes it) and
+``[tolerances.MOUNTING]`` (its tolerance bands for ``servofmu montecarlo``) — and optionally
 ``[defaults]``: ``mounting`` (the preset whose numbers become the FMUs' start values, its
 bearing included), ``lubricant`` and ``support_mounting`` (ActuatorStiffness's support pair).
 Every entry is loaded, and every mounting turned into the FMU's numbers, before anything is
@@ -14,13 +17,16 @@ built: an error names the file, the entry and the field.
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from servofmu.physics import catalog
+from servofmu.physics._checks import suggest
 
 DEFAULT_KEYS = ("mounting", "lubricant", "support_mounting")
+KEY = re.compile(r"[A-Za-z0-9_]+")  # a catalogue key: letters, digits, underscores (ASCII)
 
 
 @dataclass(frozen=True)
@@ -90,10 +96,19 @@ def read(path) -> tuple[dict, dict]:
         raise ValueError(f"{path}: cannot be read ({exc.strerror})") from None
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path}: not valid TOML ({exc})") from None
+    except RecursionError:
+        raise ValueError(f"{path}: not a catalogue (tables or arrays nested too deeply)") from None
     defaults = data.pop("defaults", {})
     extra = sorted(set(defaults) - set(DEFAULT_KEYS)) if isinstance(defaults, dict) else defaults
     if extra:
         raise ValueError(f"{path}: [defaults] may name {list(DEFAULT_KEYS)}, not {extra}")
+    for table, entries in data.items():
+        for key in entries if isinstance(entries, dict) else ():
+            if not KEY.fullmatch(key):
+                raise ValueError(
+                    f"{path}: [{table}] entry {key!r}: a catalogue key is letters, digits and "
+                    "underscores (it names files and appears in XML)"
+                )
     return data, defaults
 
 
@@ -155,7 +170,7 @@ def load(paths, mounting=None, lubricant=None, support_mounting=None) -> Default
     ...     load([], support_mounting="my_gimbal")
     ... except ValueError as exc:
     ...     print(exc)  # doctest: +ELLIPSIS
-    command line: support_mounting = 'my_gimbal' is not in the catalogue's mountings: [...]
+    command line: support_mounting = 'my_gimbal' is not in the catalogue's mountings: [...]...
     """
     from servofmu.physics.bearing_parameters import default_parameters
 
@@ -163,24 +178,34 @@ def load(paths, mounting=None, lubricant=None, support_mounting=None) -> Default
     where = dict.fromkeys(chosen, "command line")
     files = []
     try:
+        per_mounting = []  # coefficients, tolerances: checked once every mounting is in
         for path in paths:
             tables, defaults = read(path)
             catalog.add_entries(tables, str(path))
             for table in catalog.USER_TABLES:
-                catalog.check_entries(table, list(tables.get(table, {})))
+                keys = list(tables.get(table, {}))
+                if table in catalog.MOUNTING_TABLES:
+                    per_mounting.append((table, keys))
+                else:
+                    catalog.check_entries(table, keys)
             for key in tables.get("mountings", {}):
                 _check_preset(path, key, default_parameters)
             for k, v in defaults.items():
                 if chosen[k] is None or where[k] != "command line":
                     chosen[k], where[k] = v, f"{path}: [defaults]"
             files.append(str(path))
+        for table, keys in per_mounting:
+            catalog.check_entries(table, keys)
+            if table == "coefficients":
+                for key in keys:
+                    _check_preset(catalog.origin(table, key), key, default_parameters)
         for kind, key in chosen.items():
             if key is not None:
                 table = "lubricants" if kind == "lubricant" else "mountings"
                 if key not in catalog.keys(table):
                     raise ValueError(
                         f"{where[kind]}: {kind} = {key!r} is not in the catalogue's {table}: "
-                        f"{catalog.keys(table)}"
+                        f"{catalog.keys(table)}{suggest(key, catalog.keys(table))}"
                     )
         if chosen["mounting"] or chosen["lubricant"]:
             _check_preset(files[-1] if files else "--preset", chosen["mounting"],

@@ -11,11 +11,11 @@ the servofmu package that the FMU carries, so documentation changes leave the pa
 
 from __future__ import annotations
 
-import functools
-import html
+import contextlib
 import importlib
 import math
 import platform
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -235,9 +235,14 @@ def _thermal_curve() -> Curve:
         "temperature [°C]",
         t / 60.0,
         tuple((n.replace("_", " "), celsius[:, i]) for i, n in enumerate(names)),
-        "Default parameters (Yu's seeker gimbal in chamber air, preset yu2017_gimbal_chamber), "
-        "no bearing loss: the frame follows the air first, the shaft and the inner rings lag "
-        "behind the balls' small conductance. The FMU integrates exactly over each step.",
+        (
+            "This build's parameters (the network of its mechanism's parts in chamber air), "
+            if _build_start("ThermalNetwork")
+            else "Default parameters (Yu's seeker gimbal in chamber air, preset "
+            "yu2017_gimbal_chamber), "
+        )
+        + "no bearing loss: the frame follows the air first, the shaft and the inner rings "
+        "lag behind the balls' small conductance. The FMU integrates exactly over each step.",
     )
 
 
@@ -302,61 +307,149 @@ def plot_curve(curve: Curve, path: Path) -> Path:
 
 
 # ----------------------------------------------------------------------------- text
-@functools.lru_cache(maxsize=1)
+# One reStructuredText source per FMU (page_rst): the FMU's documentation/index.html renders it
+# with docutils (equations as MathML), and the documentation site's FMU reference renders the
+# same text with Sphinx.
+
+#: The reStructuredText roles of the docstrings that are Sphinx cross-references: on an FMU's
+#: page (no Sphinx) they render as code.
+XREF_ROLES = ("func", "class", "mod", "meth", "data", "attr", "obj", "exc")
+
+#: Docutils settings of the FMU page: MathML for the equations, no stylesheet, and the
+#: section titles of the generated text from <h2> on.
+_SETTINGS = {
+    "math_output": "MathML",
+    "doctitle_xform": True,
+    "initial_header_level": 2,
+    "input_encoding": "unicode",
+    "embed_stylesheet": False,
+    "stylesheet_path": "",
+    "syntax_highlight": "none",
+}
+
+
+@contextlib.contextmanager
 def _docutils():
-    """docutils' publisher with the Sphinx cross-reference roles of the docstrings
-    (``:func:`x```…) rendered as code."""
+    """docutils' publisher with its own directives and roles only (a Sphinx build running in
+    the same process, as the examples gallery does, registers patched ones that need Sphinx),
+    the Sphinx cross-reference roles of the docstrings (``:func:`x```…) rendered as code and
+    Sphinx's ``currentmodule`` directive accepted (it only sets the scope of those references
+    in Sphinx)."""
     from docutils import nodes
     from docutils.core import publish_parts
-    from docutils.parsers.rst import roles
+    from docutils.parsers.rst import Directive, directives, roles
 
     def code(name, rawtext, text, lineno, inliner, options=None, content=None):
         label = text.split(".")[-1] if text.startswith("~") else text.lstrip(".")
         return [nodes.literal(rawtext, label)], []
 
-    for role in ("func", "class", "mod", "meth", "data", "attr", "obj", "exc"):
-        roles.register_local_role(role, code)
-    return publish_parts
+    class CurrentModule(Directive):
+        required_arguments = 1
+
+        def run(self):
+            return []
+
+    saved = directives._directives, roles._roles
+    directives._directives, roles._roles = {}, {}
+    try:
+        for role in XREF_ROLES:
+            roles.register_local_role(role, code)
+        directives.register_directive("currentmodule", CurrentModule)
+        yield publish_parts
+    finally:
+        directives._directives, roles._roles = saved
 
 
-def rst_to_html(text: str) -> str:
-    """HTML body of a reStructuredText docstring. ``|x|`` is an absolute value in the
-    docstrings, not a substitution; docutils' messages stay out of the page.
+def escape_bars(text: str) -> str:
+    """``text`` (a docstring) with every ``|`` outside math escaped: in the docstrings ``|x|``
+    is an absolute value, never a reStructuredText substitution. Math (``.. math::`` blocks and
+    ``:math:`` roles) keeps its bars.
 
     Parameters
     ----------
-    text : str or None
-        The docstring (reStructuredText; Sphinx roles such as ``:func:`` become code).
+    text : str
+        reStructuredText.
 
     Returns
     -------
     str
-        The HTML body (section titles from ``<h4>`` on); empty for an empty docstring.
+        The same text with ``\\|`` for ``|`` outside math.
 
     Examples
     --------
-    >>> print(rst_to_html("The torque ``M`` grows with |F| (:func:`friction_torque`)."))
-    <p>The torque <span class="docutils literal">M</span> grows with |F| (<span \
-class="docutils literal">friction_torque</span>).</p>
+    >>> print(escape_bars("|F| and :math:`|x|`"))
+    \\|F\\| and :math:`|x|`
+    >>> print(escape_bars(".. math::\\n\\n   |x| = 1\\n\\nafter |y|"))
+    .. math::
     <BLANKLINE>
+       |x| = 1
+    <BLANKLINE>
+    after \\|y\\|
+    """
+    out, math_indent = [], None
+    for line in text.split("\n"):
+        indent = len(line) - len(line.lstrip())
+        if math_indent is not None and line.strip() and indent <= math_indent:
+            math_indent = None
+        if math_indent is None and line.lstrip().startswith(".. math::"):
+            math_indent = indent
+            out.append(line)
+            continue
+        if math_indent is not None:
+            out.append(line)
+            continue
+        parts = re.split(r"(:math:`[^`]*`)", line)
+        out.append("".join(p if p.startswith(":math:") else p.replace("|", "\\|") for p in parts))
+    return "\n".join(out)
+
+
+def rst_to_html(text: str, strict: bool = False) -> str:
+    """HTML body of reStructuredText ``text``, equations as MathML (docutils' converter).
+
+    Parameters
+    ----------
+    text : str or None
+        reStructuredText (Sphinx's cross-reference roles such as ``:func:`` become code).
+    strict : bool, optional
+        Raise on any docutils warning (a markup error, a formula the converter cannot read)
+        instead of leaving docutils' messages out of the page.
+
+    Returns
+    -------
+    str
+        The HTML body; empty for an empty text.
+
+    Examples
+    --------
+    >>> print(rst_to_html("The torque ``M`` grows with :math:`F^2` (:func:`friction_torque`)."))
+    <p>The torque <span class="docutils literal">M</span> grows with <math xmlns=...
     >>> rst_to_html(None)
     ''
     """
-    publish_parts = _docutils()
-    source = (text or "").replace("|", "\\|")
-    parts = publish_parts(
-        source,
-        writer="html5",
-        settings_overrides={
-            "report_level": 5,
-            "halt_level": 5,
-            "doctitle_xform": False,
-            "initial_header_level": 4,
-            "input_encoding": "unicode",
-            "embed_stylesheet": False,
-        },
-    )
-    return parts["body"]
+    if not text:
+        return ""
+    level = 2 if strict else 5
+    with _docutils() as publish_parts:
+        parts = publish_parts(
+            text,
+            writer="html5",
+            settings_overrides=_SETTINGS | {"report_level": level, "halt_level": level},
+        )
+    return parts["html_title"] + parts["body"]
+
+
+def _escape(text) -> str:
+    """Plain text as reStructuredText (inline markup characters escaped)."""
+    return re.sub(r"([\\*`|_<>\[\]:])", r"\\\1", str(text)).replace("\n", " ")
+
+
+def _list_table(title: str, header, rows, css: str = "variables") -> str:
+    lines = [f".. list-table:: {title}", "   :header-rows: 1", f"   :class: {css}", ""]
+    for row in (header, *rows):
+        cells = [_escape(c) if c != "" else r"\ " for c in row]
+        lines.append(f"   * - {cells[0]}")
+        lines += [f"     - {c}" for c in cells[1:]]
+    return "\n".join(lines) + "\n"
 
 
 def _range(v) -> str:
@@ -368,7 +461,7 @@ def _range(v) -> str:
 
 
 def _start(v) -> str:
-    items = getattr(v, "items", None)  # an Enumeration: start is the item's number
+    items = getattr(v, "items", None)  # a choice: start is the item's number
     if items and isinstance(v.start, int) and 0 < v.start <= len(items):
         item = items[v.start - 1]
         return f"{v.start} ({getattr(item, 'name', item)})"
@@ -377,120 +470,246 @@ def _start(v) -> str:
     return "" if v.start is None else repr(v.start)
 
 
-def _table(variables, columns) -> str:
-    head = "".join(f"<th>{html.escape(c)}</th>" for c, _ in columns)
-    rows = [
-        "<tr>" + "".join(f"<td>{html.escape(str(get(v)))}</td>" for _, get in columns) + "</tr>"
-        for v in variables
-    ]
-    return f"<table><tr>{head}</tr>\n" + "\n".join(rows) + "\n</table>"
+def variables_rst(cls) -> str:
+    """The inputs, outputs and parameters of slave class ``cls`` as reStructuredText tables:
+    the modelDescription's own variable list (:func:`servofmu.fmus.slave.variables_of`, a
+    build's start values and provenance included).
 
+    Parameters
+    ----------
+    cls : type
+        A slave class of :mod:`servofmu.fmus`.
 
-def _variable_tables(cls) -> str:
+    Returns
+    -------
+    str
+        Three subsections (Inputs, Outputs, Parameters), one table each.
+
+    Examples
+    --------
+    >>> text = variables_rst(slave_class("ServoController"))
+    >>> [line for line in text.splitlines() if line.startswith(".. list-table")]
+    ['.. list-table:: Inputs', '.. list-table:: Outputs', '.. list-table:: Parameters']
+    """
     from servofmu.fmus.slave import variables_of
 
-    variables = variables_of(cls)  # a build's start values (user catalogue, preset) included
-    by = {c: [v for v in variables if v.causality == c] for c in ("input", "output")}
-    params = [v for v in variables if v.causality == "parameter"]
-    unit = ("unit", lambda v: v.unit or "")
-    display = ("display unit", lambda v: v.display_unit or "")
-    name = ("name", lambda v: v.name)
-    desc = ("description", lambda v: v.description)
+    variables = variables_of(cls)
+    by = {c: [v for v in variables if v.causality == c] for c in ("input", "output", "parameter")}
+    tables = {
+        "Inputs": (
+            ("name", "unit", "display unit", "start", "range", "description"),
+            [
+                (v.name, v.unit or "", v.display_unit or "", _start(v), _range(v), v.description)
+                for v in by["input"]
+            ],
+        ),
+        "Outputs": (
+            ("name", "type", "unit", "display unit", "description", "depends directly on"),
+            [
+                (
+                    v.name,
+                    v.type,
+                    v.unit or "",
+                    v.display_unit or "",
+                    v.description,
+                    ", ".join(v.depends) or "no input",
+                )
+                for v in by["output"]
+            ],
+        ),
+        "Parameters": (
+            ("name", "type", "unit", "start", "range", "description", "provenance"),
+            [
+                (v.name, v.type, v.unit or "", _start(v), _range(v), v.description, v.source)
+                for v in by["parameter"]
+            ],
+        ),
+    }
     return "\n".join(
-        (
-            "<h3>Inputs</h3>",
-            _table(by["input"], (name, unit, display, ("start", _start), ("range", _range), desc)),
-            "<h3>Outputs</h3>",
-            _table(
-                by["output"],
-                (
-                    name,
-                    ("type", lambda v: v.type),
-                    unit,
-                    display,
-                    desc,
-                    ("depends directly on", lambda v: ", ".join(v.depends) or "no input"),
-                ),
-            ),
-            "<h3>Parameters</h3>",
-            _table(
-                params,
-                (
-                    name,
-                    ("type", lambda v: v.type),
-                    unit,
-                    ("start", _start),
-                    ("range", _range),
-                    desc,
-                    ("provenance", lambda v: v.source),
-                ),
-            ),
-        )
+        f"{title}\n{'~' * len(title)}\n\n{_list_table(title, head, rows)}"
+        for title, (head, rows) in tables.items()
+        if rows
     )
 
 
-def _host_requirements() -> str:
-    import numpy
-    import scipy
-
-    python = platform.python_version()
-    return f"""<h2>Host requirements</h2>
-<ul>
-<li>FMI 2.0 co-simulation, built with pythonfmu 0.7 (binaries for linux64 and win64). The FMU
-runs inside a CPython interpreter that has numpy and scipy; the servofmu package and
-pythonfmu's runtime are inside the FMU (<code>resources/</code>). Built with Python {python},
-numpy {numpy.__version__}, scipy {scipy.__version__}.</li>
-<li><b>Python hosts</b> (fmpy, libcosimpy, ecospy): the FMU uses the running interpreter and
-its site-packages; nothing to set.</li>
-<li><b>Other hosts on Linux</b> (C/C++ programs): the binary does not link libpython. Export
-<code>LD_PRELOAD=&lt;libpython3.x.so&gt;</code> and
-<code>PYTHONPATH=&lt;site-packages with numpy and scipy&gt;</code>
-(<code>servofmu host-env</code> prints both); the interpreter must be built with
-<code>--enable-shared</code>. The host may end with a normal <code>exit()</code>: the FMU
-registers pythonfmu's interpreter finaliser to run before the static destructors of the
-C++ extensions (see <code>servofmu.fmus.interpreter_exit</code>).</li>
-<li><b>Windows</b>: <code>python3x.dll</code> on PATH and PYTHONPATH set
-(<code>servofmu host-env</code>); not tested by the project. <b>macOS</b>: no binary.</li>
-<li>Every servofmu FMU in one process must come from the same servofmu build: Python imports
-the package once per process, and the FMU refuses to instantiate, naming both versions, when
-it differs.</li>
-<li>Bad inputs or parameters (outside the range, or not finite) make the next step return
-fmi2Discard with a logged message naming the variable and its value. State can be saved,
-restored and serialised (<code>canGetAndSetFMUstate</code>,
-<code>canSerializeFMUstate</code>).</li>
-</ul>"""
-
-
-def _presets(name: str) -> str:
+def _presets_rst(name: str) -> str:
     """What the presets inside the FMU are, and the catalogue entries they come from."""
     if name not in ("BearingFriction", "ActuatorStiffness"):
         return ""
     from servofmu.physics import catalog
 
-    prefix = "support_" if name == "ActuatorStiffness" else ""
+    prefix = "support\\_…" if name == "ActuatorStiffness" else ""
     kinds = ("mountings", "bearings") if prefix else ("mountings", "bearings", "lubricants")
-    rows = "".join(
-        f"<li><code>resources/presets/{k}/</code>: "
+    items = "\n".join(
+        f"- ``resources/presets/{k}/``: "
         + ", ".join(
-            f"<code>{html.escape(key)}</code>"
+            f"``{key}``"
             + ("" if catalog.origin(k, key).startswith("data/") else " (user catalogue)")
             for key in catalog.keys(k)
         )
-        + "</li>"
         for k in kinds
     )
-    return f"""<h3>Presets</h3>
-<p>Every physical input is a numeric parameter{" (support_…)" if prefix else ""}, and the
-model uses exactly these numbers. The catalogue's entries are presets of them: the start
-values below are one preset's numbers, filled in when the FMU was built (with the provenance of
-each value), and the FMU carries every preset as an SSP 1.0 parameter set (bind one to the
-component, or copy its values): a mounting gives the whole set, a bearing or a lubricant its
-own numbers.</p>
-<ul>{rows}</ul>"""
+    return f"""Presets
+~~~~~~~
+
+Every physical input is a numeric parameter{f" ({prefix})" if prefix else ""}, and the model uses
+exactly these numbers. The catalogue's entries are presets of them: the start values below are
+one preset's numbers, filled in when the FMU was built (with the provenance of each value), and
+the FMU carries every preset as an SSP 1.0 parameter set (bind one to the component, or copy its
+values): a mounting gives the whole set, a bearing or a lubricant its own numbers.
+
+{items}
+
+"""
 
 
-def render(name: str, curve: Curve | None = None) -> str:
-    """The HTML page of FMU ``name``; with ``curve``, it shows :data:`IMAGE` and its caption.
+def _host_requirements_rst() -> str:
+    import numpy
+    import scipy
+
+    return f"""Host requirements
+-----------------
+
+- FMI 2.0 co-simulation, built with pythonfmu 0.7 (binaries for linux64 and win64). The FMU
+  runs inside a CPython interpreter that has numpy and scipy; the servofmu package and
+  pythonfmu's runtime are inside the FMU (``resources/``). Built with Python
+  {platform.python_version()}, numpy {numpy.__version__}, scipy {scipy.__version__}.
+- **Python hosts** (fmpy, libcosimpy, ecospy): the FMU uses the running interpreter and its
+  site-packages; nothing to set.
+- **Other hosts on Linux** (C/C++ programs): the binary does not link libpython. Export
+  ``LD_PRELOAD=<libpython3.x.so>`` and ``PYTHONPATH=<site-packages with numpy and scipy>``
+  (``servofmu host-env`` prints both); the interpreter must be built with
+  ``--enable-shared``. The host may end with a normal ``exit()``: the FMU registers
+  pythonfmu's interpreter finaliser to run before the static destructors of the C++
+  extensions.
+- **Windows**: ``python3x.dll`` on PATH and PYTHONPATH set (``servofmu host-env``); not
+  tested by the project. **macOS**: no binary.
+- Every servofmu FMU in one process must come from the same servofmu build: Python imports
+  the package once per process, and the FMU refuses to instantiate, naming both versions,
+  when it differs.
+- Bad inputs or parameters (outside the range, or not finite) make the next step return
+  fmi2Discard with a logged message naming the variable and its value. State can be saved,
+  restored and serialised (``canGetAndSetFMUstate``, ``canSerializeFMUstate``).
+"""
+
+
+def _docstring(obj) -> str:
+    """The docstring of ``obj``, dedented, ``|`` outside math escaped (:func:`escape_bars`)."""
+    import inspect
+
+    return escape_bars(inspect.cleandoc(obj.__doc__ or ""))
+
+
+def _build_defaults_rst(name: str, mechanism) -> str:
+    """What this build's start values are: the mechanism's mounting, bearing, lubricant and
+    coefficient set (BearingFriction), its network (ThermalNetwork), the support pair
+    (ActuatorStiffness); "" for the other FMUs or without a mechanism."""
+    if mechanism is None or name not in ("BearingFriction", "ThermalNetwork", "ActuatorStiffness"):
+        return ""
+    from servofmu.physics import catalog
+
+    m = mechanism
+    where = ", ".join(f for f, _ in m.catalogue_hashes) or "the package's catalogue"
+    if name == "BearingFriction":
+        text = (
+            f"The start values are the preset of mounting ``{m.mounting}`` ({_escape(m.name)}; "
+            f"bearing ``{m.bearing}``, lubricant ``{m.lubricant}``), from "
+            f"{_escape(catalog.origin('mountings', m.mounting))} ({_escape(where)}). Friction "
+            f"coefficients: {_escape(m.coefficients.label)}."
+        )
+    elif name == "ThermalNetwork":
+        text = (
+            f"The start values are the network of the parts of mounting ``{m.mounting}`` in "
+            "the air of a climatic chamber, derived when the FMU was built (the provenance of "
+            "each value says which rest on assumed values)."
+            if _build_start(name)
+            else "The start values are the preset ``yu2017_gimbal_chamber``: Yu 2017's seeker "
+            "gimbal in the air of a climatic chamber."
+        )
+    else:
+        support = m.defaults.support_mounting
+        text = (
+            f"The support pair's start values are the preset of mounting ``{support}`` "
+            f"({_escape(where)})."
+            if support
+            else "The start values are Liu 2014's actuator with its screw's support pair "
+            "(preset ``liu2014_screw_support``)."
+        )
+    return f"Defaults of this build\n----------------------\n\n{text}\n"
+
+
+def page_rst(name: str, figure: str | None = None, caption: str = "", mechanism=None) -> str:
+    """The documentation of FMU ``name`` as reStructuredText: the source of both its
+    ``documentation/index.html`` and its page in the documentation site's FMU reference.
+
+    Parameters
+    ----------
+    name : str
+        The FMU's model identifier, e.g. "DCMotor".
+    figure : str, optional
+        Path of the characteristic curve's image, relative to the page; without it the page
+        has no figure.
+    caption : str, optional
+        The figure's caption (plain text).
+    mechanism : Mechanism, optional
+        The build's mechanism (:mod:`.mechanism`): the page says what its start values are.
+
+    Returns
+    -------
+    str
+        Title, description (the modelDescription's, then the FMU module's docstring after its
+        summary line), figure, variables (presets; inputs, outputs and parameters with unit,
+        start, range and provenance), the equations (the docstrings of the physics modules
+        the FMU names in ``PHYSICS``) and the host requirements.
+
+    Examples
+    --------
+    >>> text = page_rst("DCMotor")
+    >>> text.splitlines()[:2], "Equations\\n---------" in text
+    (['DCMotor', '======='], True)
+    """
+    cls = slave_class(name)
+    module = importlib.import_module(cls.__module__)
+    body = _docstring(module).split("\n\n", 1)  # the summary line repeats the description
+    parts = [
+        f"{name}\n{'=' * len(name)}\n",
+        _escape(cls.description) + ".\n",
+        f"servofmu {servofmu.__version__}: FMI 2.0 co-simulation FMU, model identifier "
+        f"``{name}``.\n",
+        (body[1] + "\n") if len(body) > 1 else "",
+        _build_defaults_rst(name, mechanism),
+    ]
+    if figure is not None:
+        parts.append(
+            f"Characteristic curve\n--------------------\n\n.. figure:: {figure}\n"
+            f"   :alt: characteristic curve of {name}\n\n   {_escape(caption)}\n"
+        )
+    parts.append(
+        "Variables\n---------\n\nSI units; display units are declared in the "
+        "modelDescription.\n\n" + _presets_rst(name) + variables_rst(cls)
+    )
+    equations = ["Equations\n---------\n"]
+    for m in cls.PHYSICS:
+        title = f"``{m}``"
+        equations.append(
+            f"{title}\n{'~' * len(title)}\n\n.. currentmodule:: {m}\n\n"
+            + _docstring(importlib.import_module(m))
+            + "\n"
+        )
+    parts += equations
+    parts.append(_host_requirements_rst())
+    return "\n".join(parts)
+
+
+_STYLE = """body{font-family:sans-serif;max-width:75em;margin:2em auto;padding:0 1em;
+line-height:1.4}table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 6px;
+font-size:90%;vertical-align:top}figure img{max-width:100%}code,.literal{background:#f2f2f2}
+math[display=block]{margin:0.6em 0;overflow-x:auto}caption{text-align:left;font-weight:bold}"""
+
+
+def render(name: str, curve: Curve | None = None, strict: bool = False, mechanism=None) -> str:
+    """The HTML page of FMU ``name`` (:func:`page_rst` through docutils, equations as
+    MathML); with ``curve``, it shows :data:`IMAGE` and its caption.
 
     Parameters
     ----------
@@ -498,59 +717,35 @@ def render(name: str, curve: Curve | None = None) -> str:
         The FMU's model identifier, e.g. "DCMotor".
     curve : Curve, optional
         Its characteristic curve (:data:`CURVES`); without it the page has no figure.
+    strict : bool, optional
+        Raise on any docutils warning (the tests render every page so).
+    mechanism : Mechanism, optional
+        The build's mechanism (the page says what its start values are).
 
     Returns
     -------
     str
-        The whole HTML page: description, module docstring, figure, variables with units,
-        start values, ranges and provenance, the physics modules' docstrings, host
-        requirements.
+        The whole HTML page.
 
     Examples
     --------
     >>> page = render("DCMotor")
-    >>> page.splitlines()[0], "<h1>DCMotor</h1>" in page, IMAGE in page
-    ('<!DOCTYPE html>', True, False)
+    >>> title = '<h1 class="title">DCMotor</h1>'
+    >>> page.splitlines()[0], title in page, IMAGE in page, "<math" in page
+    ('<!DOCTYPE html>', True, False, True)
     >>> IMAGE in render("DCMotor", CURVES["DCMotor"]())
     True
     """
-    cls = slave_class(name)
-    module = importlib.import_module(cls.__module__)
-    physics = "".join(
-        f"<h3><code>{m}</code></h3>\n{rst_to_html(importlib.import_module(m).__doc__)}"
-        for m in cls.PHYSICS
-    )
-    figure = ""
-    if curve is not None:
-        figure = (
-            f'<h2>Characteristic curve</h2>\n<figure><img src="{IMAGE}" '
-            f'alt="{html.escape(curve.title)}"><figcaption>{html.escape(curve.caption)}'
-            "</figcaption></figure>"
-        )
+    text = page_rst(name, IMAGE if curve else None, curve.caption if curve else "", mechanism)
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>{name}</title>
-<style>body{{font-family:sans-serif;max-width:75em;margin:2em auto;line-height:1.4}}
-table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;padding:2px 6px;font-size:90%}}
-blockquote{{font-family:serif;font-size:105%;background:#f6f6f6;margin:0.5em 2em;
-padding:0.3em 1em}}figure img{{max-width:100%}}code{{background:#f2f2f2}}</style></head><body>
-<h1>{name}</h1>
-<p>{html.escape(cls.description)}</p>
-<p>servofmu {servofmu.__version__}: FMI 2.0 co-simulation FMU, model identifier
-<code>{name}</code>.</p>
-{rst_to_html(module.__doc__)}
-{figure}
-<h2>Variables</h2>
-<p>SI units; display units are declared in the modelDescription.</p>
-{_presets(name)}
-{_variable_tables(cls)}
-<h2>Equations</h2>
-{physics}
-{_host_requirements()}
+<style>{_STYLE}</style></head><body>
+{rst_to_html(text, strict=strict)}
 </body></html>
 """
 
 
-def write_documentation(name: str, folder: Path) -> Path:
+def write_documentation(name: str, folder: Path, mechanism=None) -> Path:
     """Write ``index.html`` and :data:`IMAGE` (the characteristic curve) of FMU ``name`` into
     ``folder``; returns the page's path.
 
@@ -560,6 +755,8 @@ def write_documentation(name: str, folder: Path) -> Path:
         The FMU's model identifier, one of :data:`CURVES`.
     folder : str or pathlib.Path
         The folder to write into (created with its parents if missing).
+    mechanism : Mechanism, optional
+        The build's mechanism (the page says what its start values are).
 
     Returns
     -------
@@ -582,5 +779,5 @@ def write_documentation(name: str, folder: Path) -> Path:
     curve = CURVES[name]()
     plot_curve(curve, folder / IMAGE)
     path = folder / "index.html"
-    path.write_text(render(name, curve), encoding="utf-8")
+    path.write_text(render(name, curve, mechanism=mechanism), encoding="utf-8")
     return path

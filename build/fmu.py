@@ -14,6 +14,7 @@ from servofmu.fmus.slave import BUILD_INFO, SHIPPED, package_hash
 
 from .catalogs import Defaults
 from .documentation import write_documentation
+from .exportlib import compiled_export, export_used, put_export
 from .presets import start_values, write_presets
 
 FMUS = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
@@ -34,12 +35,17 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
     the build's start values when ``defaults`` name presets), ``resources/presets/`` (the
     catalogue's presets as SSP parameter sets, BearingFriction and ActuatorStiffness) and
     ``documentation/index.html``. State handling and serialisation are declared
-    (``canGetAndSetFMUstate``, ``canSerializeFMUstate``).
+    (``canGetAndSetFMUstate``, ``canSerializeFMUstate``). Its Linux binary is servofmu's
+    export library where it was compiled at install time, else pythonfmu's (:mod:`.exportlib`;
+    ``servofmu_build.json`` says which).
 
     ``defaults`` (:func:`catalogs.load`: user catalogues merged, presets chosen) fill the
     start values: the package stays the same (its hash too), the start values travel in
-    ``servofmu_build.json``."""
+    ``servofmu_build.json``, with the mechanism they stand for
+    (:meth:`.mechanism.Mechanism.record`: the chosen keys and the catalogue files' hashes)."""
     from pythonfmu.builder import FmuBuilder
+
+    from .mechanism import resolve
 
     if name not in FMUS:
         raise ValueError(f"FMU name = {name!r} is not one of {FMUS}")
@@ -55,10 +61,13 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
             tmp = Path(tmp)
             package = stage_package(tmp / "package")
             info = tmp / BUILD_INFO
+            library = compiled_export()
             record = {
                 "model": name,
                 "version": servofmu.__version__,
                 "package_hash": package_hash(package),
+                "mechanism": resolve(defaults or Defaults()).record(),
+                "export": export_used(),
             }
             if start:
                 record["start"] = {k: v for k, (v, _) in start.items()}
@@ -68,7 +77,7 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
             if name in ("BearingFriction", "ActuatorStiffness"):
                 files.append(write_presets(tmp / "presets", name))
             doc = tmp / "documentation"
-            write_documentation(name, doc)
+            write_documentation(name, doc, resolve(defaults or Defaults()))
             path = FmuBuilder.build_FMU(
                 script,
                 dest=out_dir,
@@ -77,6 +86,8 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
                 canGetAndSetFMUstate=True,
                 canSerializeFMUstate=True,
             )
+            if library is not None:
+                put_export(Path(path), name, library)
     finally:
         slave.BUILD_START.clear()
     return Path(path)
@@ -102,13 +113,15 @@ def build_all(
     out_dir: Path = DEFAULT_OUT, names=FMUS, systems: bool = True, defaults: Defaults | None = None
 ) -> list[Path]:
     """Build every FMU in ``names`` (start values from ``defaults``, see :func:`build_fmu`)
-    and, with ``systems``, pack every SSP system of ``ssp/`` with them
-    (``out_dir/<system>.ssp``); returns the paths written."""
+    and, with ``systems``, pack the SSP systems with them (``out_dir/<system>.ssp``): every
+    system of ``ssp/`` for the standard mechanism, else the mechanism's systems with it bound
+    (:mod:`.mechanism`); returns the paths written."""
+    from .mechanism import resolve
     from .ssp import pack_all
 
     paths = [build_fmu(n, out_dir, defaults) for n in names]
     if systems and set(names) == set(FMUS):
-        paths += pack_all(out_dir, out_dir)
+        paths += pack_all(out_dir, out_dir, resolve(defaults or Defaults()))
     return paths
 
 
@@ -124,8 +137,9 @@ def build_info(fmu: Path) -> dict | None:
     Returns
     -------
     dict or None
-        ``model``, ``version``, ``package_hash`` and, for a user build, the ``start`` values
-        and ``catalogues`` it was built with; None without a readable record.
+        ``model``, ``version``, ``package_hash``, the ``mechanism`` it stands for and, for
+        a user build, the ``start`` values and ``catalogues`` it was built with; None
+        without a readable record.
 
     Examples
     --------
@@ -143,20 +157,66 @@ def build_info(fmu: Path) -> dict | None:
         return None
 
 
-def is_current(out_dir: Path = DEFAULT_OUT) -> bool:
-    """True when every FMU and system in ``out_dir`` was built from the current sources: the
-    FMU build hash against the parts of the package an FMU ships (an edit elsewhere, e.g. in
-    papers/ or the CLI, leaves the FMUs current), with the package's own defaults (not a
-    user catalogue's), and archives newer than their ssp/ sources and than the FMUs they
-    pack."""
+def recorded_mechanism(info: dict) -> dict:
+    """The mechanism a build record names (:meth:`.mechanism.Mechanism.record`), comparable
+    across builds: its key, chosen presets and the content hashes of its catalogues (not
+    their paths). A record without one (an older build) is the standard mechanism unless it
+    carries start values.
+
+    Returns
+    -------
+    dict
+        ``{"key", "mounting", "lubricant", "support_mounting", "catalogues"}``.
+
+    Examples
+    --------
+    >>> recorded_mechanism({"model": "DCMotor"})["key"]
+    'standard'
+    >>> recorded_mechanism({"start": {"bore": 0.015}})["key"]
+    'a user build'
+    """
+    record = info.get("mechanism")
+    if record is None:
+        user = "start" in info or info.get("catalogues")
+        record = {"key": "a user build" if user else "standard", "catalogues": []}
+    return {
+        "key": record.get("key"),
+        **{k: record.get(k) for k in ("mounting", "lubricant", "support_mounting")},
+        "catalogues": sorted(c["sha256"] for c in record.get("catalogues", [])),
+    }
+
+
+def is_current(out_dir: Path = DEFAULT_OUT, mechanism=None) -> bool:
+    """True when every FMU and system of ``mechanism`` (default: the standard one) in
+    ``out_dir`` was built from the current sources: the FMU build hash against the parts of
+    the package an FMU ships (an edit elsewhere, e.g. in papers/ or the CLI, leaves the FMUs
+    current), the mechanism recorded (its presets and the content of its catalogue files),
+    and archives newer than their ssp/ sources and than the FMUs they pack.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> is_current(Path("nowhere"))  # nothing built there
+    False
+    """
+    from .mechanism import resolve
     from .ssp import systems
 
+    mechanism = mechanism or resolve(Defaults())
+    expected = recorded_mechanism({"mechanism": mechanism.record()})
     current = package_hash(PACKAGE_DIR)
     for name in FMUS:
         info = build_info(Path(out_dir) / f"{name}.fmu")
-        if info is None or info["package_hash"] != current or "start" in info:
-            return False  # missing, stale, or a user build (start values of a catalogue)
-    for system in systems():
+        if info is None or info["package_hash"] != current:
+            return False  # missing or stale
+        if recorded_mechanism(info) != expected:
+            return False  # another mechanism, or its catalogues changed
+        if info.get("export") != export_used():  # servofmu's export compiled since
+            return False
+    for system in systems(names=mechanism.systems):
         archive = Path(out_dir) / f"{system.name}.ssp"
         newest = max(f.stat().st_mtime for f in system.rglob("*") if f.is_file())
         if not archive.is_file() or archive.stat().st_mtime < newest:
@@ -166,21 +226,65 @@ def is_current(out_dir: Path = DEFAULT_OUT) -> bool:
     return True
 
 
-def ensure_built(out_dir: Path = DEFAULT_OUT) -> Path:
-    """Build FMUs and systems into ``out_dir`` unless they are current; returns out_dir.
+def other_mechanism(out_dir: Path, mechanism) -> str | None:
+    """The key of another mechanism whose build is in ``out_dir`` (None: none, or a build of
+    ``mechanism`` itself, current or stale).
 
-    A user build there (FMUs built with ``--catalog``/``--preset``) is never overwritten:
-    ValueError names the folder and what to do."""
-    if not is_current(out_dir):
-        user = [
-            name for name in FMUS if "start" in (build_info(Path(out_dir) / f"{name}.fmu") or {})
-        ]
-        if user:
-            raise ValueError(
-                f"{out_dir} holds FMUs built with a user catalogue or preset ({', '.join(user)}); "
-                "this command needs the standard build and will not overwrite yours: run it "
-                "from another folder, or move that build (servofmu build --out DIR)"
-            )
-        print(f"building the FMUs and systems into {out_dir}", file=sys.stderr, flush=True)
-        build_all(out_dir)
-    return Path(out_dir)
+    Returns
+    -------
+    str or None
+
+    Examples
+    --------
+    >>> from servofmu.build.mechanism import resolve
+    >>> other_mechanism(Path("nowhere"), resolve(Defaults())) is None
+    True
+    """
+    for name in FMUS:
+        info = build_info(Path(out_dir) / f"{name}.fmu")
+        if info is not None and recorded_mechanism(info)["key"] != mechanism.key:
+            return recorded_mechanism(info)["key"]
+    return None
+
+
+def ensure_built(out_dir: Path | None = None, mechanism=None) -> Path:
+    """Build the FMUs and systems of ``mechanism`` (:class:`.mechanism.Mechanism`, its
+    catalogues loaded; default: the standard one) into ``out_dir`` (default: the mechanism's
+    build folder, build/out or build/<key>) unless they are current; returns that folder.
+
+    A build of another mechanism there (another catalogue mounting, or a user build in
+    build/out) is never overwritten: ValueError names the folder and what to do."""
+    from .mechanism import resolve
+
+    mechanism = mechanism or resolve(Defaults())
+    out_dir = Path(out_dir) if out_dir is not None else mechanism.build_dir
+    if not is_current(out_dir, mechanism):
+        refuse_other_mechanism(out_dir, mechanism)
+        print(
+            f"building the FMUs and systems of {mechanism.key} into {out_dir}",
+            file=sys.stderr,
+            flush=True,
+        )
+        build_all(out_dir, defaults=mechanism.defaults)
+    return out_dir
+
+
+def refuse_other_mechanism(out_dir: Path, mechanism) -> None:
+    """ValueError when ``out_dir`` holds the build of a mechanism other than ``mechanism``.
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> from servofmu.build.mechanism import resolve
+    >>> refuse_other_mechanism(Path("nowhere"), resolve(Defaults()))  # nothing there
+    """
+    other = other_mechanism(out_dir, mechanism)
+    if other is not None:
+        raise ValueError(
+            f"{out_dir} holds the FMUs of {other}, not of {mechanism.key}: servofmu will not "
+            f"overwrite them; build {mechanism.key} in its own folder ({mechanism.build_dir}, "
+            "the default), or move that build"
+        )

@@ -31,7 +31,7 @@ from servofmu.physics.bearing_parameters import (
     prefixed_specs,
 )
 
-from .catalogs import Defaults
+from .catalogs import KEY, Defaults
 
 SUPPORT_LUBRICANT = "mos2_film"  # the support pair's lubricant plays no part in stiffness
 
@@ -49,7 +49,8 @@ def start_values(name: str, defaults: Defaults) -> dict[str, tuple[object, str]]
 
     Parameters
     ----------
-    name : the FMU (BearingFriction and ActuatorStiffness take presets)
+    name : the FMU (BearingFriction and ActuatorStiffness take presets; ThermalNetwork the
+        network of the chosen mounting's parts in chamber air: :mod:`.mechanism`)
     defaults : the chosen presets (:class:`catalogs.Defaults`)
 
     Returns
@@ -62,6 +63,18 @@ def start_values(name: str, defaults: Defaults) -> dict[str, tuple[object, str]]
         kw = {"lubricant": defaults.lubricant}
         values, sources = default_parameters(*args, **kw), default_sources(*args, **kw)
         return {p.name: (_fmu_value(p, values[p.name]), sources[p.name]) for p in PARAMETERS}
+    if name == "ThermalNetwork" and (defaults.mounting or DEFAULT_MOUNTING) != DEFAULT_MOUNTING:
+        from servofmu.physics.thermal_network import ENVIRONMENTS
+
+        from .mechanism import resolve, thermal_parameters
+
+        p = thermal_parameters(resolve(defaults))
+        start = {f: (float(v), p.source(f)) for f, v in p.as_dict().items() if f != "environment"}
+        start["environment"] = (
+            ENVIRONMENTS.index(p.environment) + 1,
+            "assumed: the mechanism in the air of a climatic chamber",
+        )
+        return start
     if name == "ActuatorStiffness" and defaults.support_mounting:
         key = defaults.support_mounting
         specs = prefixed_specs(
@@ -84,17 +97,24 @@ def write_presets(folder: Path, name: str) -> Path:
     for key in catalog.keys("mountings"):
         lubricant = SUPPORT_LUBRICANT if support else None
         values = default_parameters(key, lubricant=lubricant)
-        _write(folder / "mountings" / f"{key}.ssv", values, prefix, f"mounting {key}", support)
+        _write(_file(folder, "mountings", key), values, prefix, f"mounting {key}", support)
     for key in catalog.keys("bearings"):
         values, _ = bearing_values(catalog.bearing(key))
-        _write(folder / "bearings" / f"{key}.ssv", values, prefix, f"bearing {key}", support,
+        _write(_file(folder, "bearings", key), values, prefix, f"bearing {key}", support,
                BEARING_FIELDS)  # fmt: skip
     if not support:
         for key in catalog.keys("lubricants"):
             values, _ = lubricant_values(key)
-            _write(folder / "lubricants" / f"{key}.ssv", values, "", f"lubricant {key}", False,
+            _write(_file(folder, "lubricants", key), values, "", f"lubricant {key}", False,
                    tuple(f for f in LUBRICANT_FIELDS if f in values))  # fmt: skip
     return folder
+
+
+def _file(folder: Path, table: str, key: str) -> Path:
+    """``folder/table/key.ssv``: a file name only from a valid catalogue key."""
+    if not KEY.fullmatch(key):
+        raise ValueError(f"{table}.{key!r} is not a catalogue key (letters, digits, underscores)")
+    return folder / table / f"{key}.ssv"
 
 
 def _write(path, values, prefix, what, support, only=None):

@@ -14,16 +14,17 @@ SSP_DIR = Path(str(importlib.resources.files("servofmu.ssp")))
 NS = {"ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription"}
 
 
-def systems(ssp_dir: Path = SSP_DIR) -> list[Path]:
-    """The system folders (those with a SystemStructure.ssd); FileNotFoundError, naming the
-    folder, when there is none (an install without its system sources)."""
+def systems(ssp_dir: Path = SSP_DIR, names=None) -> list[Path]:
+    """The system folders (those with a SystemStructure.ssd), or those of them in ``names``;
+    FileNotFoundError, naming the folder, when there is none (an install without its system
+    sources)."""
     found = sorted(p.parent for p in Path(ssp_dir).glob("*/SystemStructure.ssd"))
     if not found:
         raise FileNotFoundError(
             f"no SSP system sources (*/SystemStructure.ssd) in {ssp_dir}: the servofmu "
             "installation is incomplete; reinstall it"
         )
-    return found
+    return found if names is None else [p for p in found if p.name in names]
 
 
 def fmu_sources(system_dir: Path) -> list[str]:
@@ -33,16 +34,23 @@ def fmu_sources(system_dir: Path) -> list[str]:
     return sorted({c.get("source") for c in root.iterfind(".//ssd:Component", NS)})
 
 
-def pack_ssp(system_dir: Path, fmu_dir: Path, out_dir: Path) -> Path:
+def pack_ssp(system_dir: Path, fmu_dir: Path, out_dir: Path, replace=None) -> Path:
     """Zip ``system_dir`` (SSD, .ssv, variants/) and the FMUs it names, taken from
-    ``fmu_dir``, into ``out_dir/<name>.ssp``; raises FileNotFoundError for a missing FMU."""
+    ``fmu_dir``, into ``out_dir/<name>.ssp``; raises FileNotFoundError for a missing FMU.
+    ``replace`` ({path in the system: bytes, or None to leave the file out}) changes files on
+    the way (a mechanism's bindings)."""
     system_dir, fmu_dir, out_dir = Path(system_dir), Path(fmu_dir), Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     target = out_dir / f"{system_dir.name}.ssp"
+    replace = replace or {}
     with zipfile.ZipFile(target, "w", zipfile.ZIP_DEFLATED) as zf:
         for f in sorted(system_dir.rglob("*")):
             if f.is_file() and f.suffix in (".ssd", ".ssv"):
-                zf.write(f, f.relative_to(system_dir).as_posix())
+                rel = f.relative_to(system_dir).as_posix()
+                if rel not in replace:
+                    zf.write(f, rel)
+                elif replace[rel] is not None:
+                    zf.writestr(rel, replace[rel])
         for source in fmu_sources(system_dir):
             fmu = fmu_dir / Path(source).name
             if not fmu.is_file():
@@ -51,6 +59,17 @@ def pack_ssp(system_dir: Path, fmu_dir: Path, out_dir: Path) -> Path:
     return target
 
 
-def pack_all(fmu_dir: Path, out_dir: Path) -> list[Path]:
-    """Pack every system of ``ssp/``."""
-    return [pack_ssp(s, fmu_dir, out_dir) for s in systems()]
+def pack_all(fmu_dir: Path, out_dir: Path, mechanism=None) -> list[Path]:
+    """Pack every system of ``ssp/``; for a mechanism other than the standard one
+    (:class:`.mechanism.Mechanism`), its systems with it bound (:func:`.mechanism.bindings`),
+    and no archive of another system stays in ``out_dir``."""
+    if mechanism is None or mechanism.standard:
+        return [pack_ssp(s, fmu_dir, out_dir) for s in systems()]
+    from .mechanism import bindings
+
+    for other in systems(names=set(s.name for s in systems()) - set(mechanism.systems)):
+        (Path(out_dir) / f"{other.name}.ssp").unlink(missing_ok=True)
+    return [
+        pack_ssp(s, fmu_dir, out_dir, bindings(mechanism, s))
+        for s in systems(names=mechanism.systems)
+    ]

@@ -22,12 +22,16 @@ signals["time"] = t
 signals["temperature"] = [233.15, 333.15]  # K
 signals["speed"] = [0.1745, 0.1745]  # rad/s (10 °/s)
 
+# fmpy prints the FMU's errors (e.g. a temperature outside 173.15…473.15 K) and raises; a
+# discarded step only ends the rows early: debug_logging=True prints every message, discards
+# included (README, "Messages in plain fmpy")
 result = simulate_fmu(
     fmu,
     stop_time=100.0,
     output_interval=0.5,
     input=signals,
     output=["running_torque", "viscous_torque", "hysteresis_torque", "spin_torque", "preload"],
+    debug_logging=False,
 )
 temp_c = np.interp(result["time"], t, signals["temperature"]) - 273.15
 print(f"{'T [°C]':>8} {'running [N·mm]':>15} {'viscous':>9} {'geometric':>10} {'preload [N]':>12}")

@@ -49,13 +49,17 @@ class ParameterError(ArgumentError):
 
 
 class Interrupted(HarnessError):
-    """A run stopped at a step boundary on request (Ctrl-C): ``result`` holds the rows up to
-    that step (written to disk too when the run had an output folder), ``time`` the time [s]
-    it stopped at. The command line exits 130."""
+    """A run stopped at a step boundary on request (Ctrl-C or SIGTERM): ``result`` holds the
+    rows up to that step (written to disk too when the run had an output folder), ``time`` the
+    time [s] it stopped at, ``signum`` the signal. The command line exits 128 + signum (130
+    for Ctrl-C, 143 for SIGTERM)."""
 
-    def __init__(self, message: str, result=None, details: str = "", time: float = 0.0):
+    def __init__(
+        self, message: str, result=None, details: str = "", time: float = 0.0, signum: int = 2
+    ):
         super().__init__(message, result=result, details=details)
         self.time = time
+        self.signum = int(signum)
 
 
 class ArchiveRefused(HarnessError, ArchiveError):

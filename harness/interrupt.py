@@ -1,32 +1,100 @@
-"""Ctrl-C during a co-simulation: stop at the next step boundary instead of inside an FMU.
+"""Ctrl-C (or SIGTERM) during a co-simulation: stop at the next step boundary instead of
+inside an FMU.
 
 Python raises KeyboardInterrupt wherever the main thread is when SIGINT arrives, which in a
 co-simulation is most often inside a pythonfmu slave's Python code called from the FMU's C
-layer: the FMU then answers fmi2Fatal and the next call into it can crash the process. While
-:func:`interruptible` is active, SIGINT only sets a flag; the master checks it between
-communication steps, frees its FMUs and raises :class:`~.errors.Interrupted` with the results
-so far.
+layer: the FMU then answers fmi2Fatal and the next call into it can crash the process; and
+SIGTERM ends the process at once, keeping nothing. While :func:`interruptible` is active,
+either signal only sets a flag; the master checks it between communication steps (each bounded
+in time), frees its FMUs and raises :class:`~.errors.Interrupted` with the results so far.
+Outside it, :func:`terminate_as_interrupt` makes SIGTERM raise :class:`Terminated`, a
+KeyboardInterrupt, so that whatever keeps its results on Ctrl-C keeps them on SIGTERM too.
 """
 
 from __future__ import annotations
 
 import signal
 import threading
+import time
 from contextlib import contextmanager
+
+SIGNALS = (signal.SIGINT, signal.SIGTERM)
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM outside a co-simulation step loop, raised like Ctrl-C's KeyboardInterrupt."""
+
+    signum = signal.SIGTERM
 
 
 class StopRequest:
-    """Set by SIGINT while :func:`interruptible` is active; ``count`` counts the signals."""
+    """Set by SIGINT or SIGTERM while :func:`interruptible` is active; ``count`` counts the
+    signals, ``signum`` is the first one."""
 
     def __init__(self):
         self.count = 0
+        self.signum = signal.SIGINT
+        self.received_at = 0.0  # time.perf_counter() at the first signal
+
+    def delay(self) -> float:
+        """Seconds since the first signal."""
+        return time.perf_counter() - self.received_at
 
     @property
     def requested(self) -> bool:
         return self.count > 0
 
     def _handler(self, signum, frame):
+        global _RECEIVED
+        if not self.count:
+            self.signum = _RECEIVED = signum
+            self.received_at = time.perf_counter()
         self.count += 1
+
+
+_RECEIVED = signal.SIGINT  # the signal that stopped the work (SIGINT unless SIGTERM did)
+
+
+def received() -> int:
+    """The number of the signal that stopped the work (the exit status is 128 + it).
+
+    Returns
+    -------
+    int
+        SIGTERM's number once the handlers of this module received it, else SIGINT's.
+
+    Examples
+    --------
+    >>> received() in (signal.SIGINT, signal.SIGTERM)
+    True
+    """
+    return int(_RECEIVED)
+
+
+def _raise_terminated(signum, frame):
+    global _RECEIVED
+    _RECEIVED = signum
+    raise Terminated("terminated (SIGTERM)")
+
+
+def terminate_as_interrupt() -> None:
+    """From now on SIGTERM raises :class:`Terminated` (a KeyboardInterrupt) in the main thread
+    (elsewhere nothing changes).
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> previous = signal.getsignal(signal.SIGTERM)
+    >>> terminate_as_interrupt()
+    >>> signal.getsignal(signal.SIGTERM) is _raise_terminated
+    True
+    >>> _ = signal.signal(signal.SIGTERM, previous)
+    """
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGTERM, _raise_terminated)
 
 
 _ACTIVE: StopRequest | None = None
@@ -34,10 +102,10 @@ _ACTIVE: StopRequest | None = None
 
 @contextmanager
 def interruptible():
-    """Within this block SIGINT sets the yielded :class:`StopRequest` instead of raising
-    KeyboardInterrupt. Nested blocks share the outer request. Signal handlers can only be
-    set in the main thread: elsewhere (a Dask worker's thread) it yields None and changes
-    nothing."""
+    """Within this block SIGINT and SIGTERM set the yielded :class:`StopRequest` instead of
+    raising KeyboardInterrupt or ending the process. Nested blocks share the outer request.
+    Signal handlers can only be set in the main thread: elsewhere (a Dask worker's thread) it
+    yields None and changes nothing."""
     global _ACTIVE
     if _ACTIVE is not None:
         yield _ACTIVE
@@ -46,10 +114,11 @@ def interruptible():
         yield None
         return
     request = StopRequest()
-    previous = signal.signal(signal.SIGINT, request._handler)
+    previous = {s: signal.signal(s, request._handler) for s in SIGNALS}
     _ACTIVE = request
     try:
         yield request
     finally:
         _ACTIVE = None
-        signal.signal(signal.SIGINT, previous)
+        for s, handler in previous.items():
+            signal.signal(s, handler)

@@ -34,6 +34,8 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.physics._checks import suggest
+
 from .errors import ArgumentError, HarnessError, Interrupted, ParameterError
 from .interrupt import interruptible
 from .progress import progress_bar
@@ -136,9 +138,10 @@ def order_components(system: System) -> list[str]:
 
 
 class _Unit:
-    """One instantiated component with preallocated ctypes buffers for the step loop."""
+    """One instantiated component with preallocated ctypes buffers for the step loop; its
+    log messages go to ``log`` and, tagged with its name, to the run's ``journal``."""
 
-    def __init__(self, comp, unzip_dir: Path):
+    def __init__(self, comp, unzip_dir: Path, journal: deque | None = None):
         from fmpy.fmi1 import calloc, free
         from fmpy.fmi2 import (
             FMU2Slave,
@@ -151,21 +154,20 @@ class _Unit:
         self.name = comp.name
         self.comp = comp
         self.log: deque[str] = deque(maxlen=50)
+        self.journal = deque(maxlen=200) if journal is None else journal
 
         def logger(env, instance, status, category, message):
             text = message.decode(errors="replace") if isinstance(message, bytes) else str(message)
             self.log.append(f"[{STATUS[status] if 0 <= status < 6 else status}] {text}")
+            self.journal.append((self.name, status, text))
 
+        # each unit's own logger, called with the message as the FMU passes it: fmpy's
+        # printf-formatting proxy (fmpy.logging.addLoggerProxy) keeps one logger for the whole
+        # process, the last one added, and sent every FMU's messages to the last component
         cb = fmi2CallbackFunctions()
         cb.logger = fmi2CallbackLoggerTYPE(logger)
         cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
         cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        try:
-            from fmpy.logging import addLoggerProxy
-
-            addLoggerProxy(ctypes.byref(cb))
-        except Exception:  # pragma: no cover - the proxy only formats printf-style messages
-            pass
         self._keep = (cb, logger)
         self.slave = FMU2Slave(
             guid=comp.guid,
@@ -460,6 +462,7 @@ def _overrides(system: System, parameters, connected=None) -> dict[str, object]:
             if item not in system.variants:
                 raise ParameterError(
                     f"parameter set {item!r} is not one of the variants {sorted(system.variants)}"
+                    f"{suggest(item, system.variants)} (or give an .ssv file)"
                 )
             out.update({k: v for k, (_, v) in system.variants[item].items()})
         else:
@@ -548,10 +551,12 @@ class _Settings:
 def _run(system, plan: RunPlan, signals, settings: _Settings, stop_request):
     order = order_components(system)
     units: dict[str, _Unit] = {}
+    journal: deque = deque(maxlen=200)  # (component, status, message), in the order logged
     t0_wall = _time.perf_counter()
     try:
         for comp in system.components.values():  # FMUs unpacked once per loaded system
-            units[comp.name] = _Unit(comp, system.unpacked(comp.fmu))
+            _stop_if_requested(stop_request, f"before instantiating {comp.name!r}")
+            units[comp.name] = _Unit(comp, system.unpacked(comp.fmu), journal)
         wiring = _wire(system, units, order, plan.record, signals)
         cosim = _Cosimulation(system, units, order, wiring, plan, settings, t0_wall)
         cosim.initialize()
@@ -559,6 +564,15 @@ def _run(system, plan: RunPlan, signals, settings: _Settings, stop_request):
     finally:
         for u in units.values():
             u.close()
+
+
+def _stop_if_requested(stop_request, where: str) -> None:
+    """Ctrl-C or SIGTERM before the first row: stop now, nothing computed to keep."""
+    if stop_request is not None and stop_request.requested:
+        raise Interrupted(
+            f"interrupted {where}, {1e3 * stop_request.delay():.3g} ms after the signal",
+            signum=stop_request.signum,
+        )
 
 
 @dataclass
@@ -699,10 +713,24 @@ class _Cosimulation:
     def fail(self, name, what, status, t):
         u = self.units[name]
         label = STATUS[status] if 0 <= status < 6 else str(status)
-        log = " | ".join(list(u.log)[-5:]) or "(no log message)"
         self.stop(
             f"component {name!r} ({u.comp.model_identifier}) returned fmi2{label} from {what} at "
-            f"t = {t:.6g} s: {log}"
+            f"t = {t:.6g} s: {self.explain(name)}"
+        )
+
+    def explain(self, name) -> str:
+        """The log messages that explain a failure of component ``name``, each naming the
+        component that logged it and quoting it: its own warnings and errors, else the last
+        ones of any component (a bad value often comes from a component upstream)."""
+        journal = next(iter(self.units.values())).journal if self.units else ()
+        problems = [(n, s, text) for n, s, text in journal if s >= 1]
+        chosen = [p for p in problems if p[0] == name][-3:] or problems[-3:]
+        if not chosen:
+            return "no component logged a warning or an error"
+        return " | ".join(
+            f"{n} ({self.units[n].comp.model_identifier}) logged {STATUS[s] if 0 <= s < 6 else s}:"
+            f' "{text}"'
+            for n, s, text in chosen
         )
 
     # ------------------------------------------------------------------ values
@@ -857,7 +885,13 @@ class _Cosimulation:
             for k in range(n_steps):
                 t = start + k * h
                 if stop_request is not None and stop_request.requested:  # Ctrl-C: stop here
-                    self.stop(f"interrupted at t = {t:.6g} s", Interrupted, time=t)
+                    self.stop(
+                        f"interrupted at t = {t:.6g} s, "
+                        f"{1e3 * stop_request.delay():.3g} ms after the signal",
+                        Interrupted,
+                        time=t,
+                        signum=stop_request.signum,
+                    )
                 # the units due at this step: (name, step size, read now): a slow one steps
                 # over N·h and its outputs reach the others when that step ends
                 step(t, [(n, min(r, n_steps - k) * h, r == 1) for n, r in rates if k % r == 0])

@@ -153,6 +153,7 @@ class ModelTask:
         BearingFriction FMU's), and an output that the model does not have."""
         from dataclasses import fields
 
+        from servofmu.physics._checks import suggest
         from servofmu.physics.bearing import BearingOutputs
         from servofmu.physics.bearing_parameters import PRESETS
 
@@ -162,11 +163,15 @@ class ModelTask:
                 raise ValueError(
                     f"sweep parameter {name!r} is neither a bearing parameter, a preset "
                     f"{list(PRESETS)} nor an input ({sorted(set(self.base) | set(INPUTS))})"
+                    + suggest(name, known)
                 )
         outputs = [f.name for f in fields(BearingOutputs)]
         for name in self.outputs:
             if name not in outputs:
-                raise ValueError(f"record {name!r} is not an output of the model ({outputs})")
+                raise ValueError(
+                    f"record {name!r} is not an output of the model ({outputs})"
+                    + suggest(name, outputs)
+                )
         seen = set()
         for i, p in enumerate(points):
             for name, value in p.items():
@@ -273,6 +278,7 @@ def input_ranges() -> dict[str, tuple[float, float, str]]:
 
 def _model_value_problem(name: str, value) -> str:
     """Why ``value`` cannot be given to model parameter or input ``name``, or ""."""
+    from servofmu.physics._checks import suggest
     from servofmu.physics.bearing_parameters import PRESETS, parameter
 
     if name in INPUTS:
@@ -281,7 +287,8 @@ def _model_value_problem(name: str, value) -> str:
         from servofmu.physics import catalog
 
         keys = catalog.keys(f"{name}s")
-        return "" if _as_key(name, value) in keys else f"= {value!r} is not one of {keys}"
+        hint = suggest(str(value), keys)
+        return "" if _as_key(name, value) in keys else f"= {value!r} is not one of {keys}{hint}"
     else:
         spec = parameter(name)
         if spec.choices:
@@ -480,7 +487,21 @@ TABLE_SUFFIXES = (".csv", ".parquet")
 
 def check_table_path(path) -> None:
     """ValueError unless ``path`` ends in one of :data:`TABLE_SUFFIXES`, and the packages that
-    write it are installed (:func:`require_sweep_extra`)."""
+    write it are installed (:func:`require_sweep_extra`).
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> check_table_path("out/sweep/results.csv")
+    >>> try:
+    ...     check_table_path("out/sweep/results.xlsx")
+    ... except ValueError as exc:
+    ...     print(str(exc).split(":")[0])
+    out = 'out/sweep/results.xlsx'
+    """
     if Path(path).suffix not in TABLE_SUFFIXES:
         raise ValueError(
             f"out = {str(path)!r}: a sweep table is written as {' or '.join(TABLE_SUFFIXES)}; "

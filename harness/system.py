@@ -22,6 +22,7 @@ from pathlib import Path, PurePosixPath
 from servofmu.build.archive import read_member, safe_extract
 from servofmu.build.choices import choice_items
 from servofmu.build.xmlsafe import parse, validate
+from servofmu.physics._checks import suggest
 
 from .errors import HarnessError, SystemError_, refusals
 
@@ -141,12 +142,12 @@ class System:
         if comp is None:
             raise HarnessError(
                 f"{target!r}: no component {comp_name!r} in the system "
-                f"(components {sorted(self.components)})"
+                f"(components {sorted(self.components)}){suggest(comp_name, self.components)}"
             )
         if var_name not in comp.variables:
             raise HarnessError(
                 f"{target!r}: {comp.fmu.name if comp.fmu else comp_name} has no variable "
-                f"{var_name!r}"
+                f"{var_name!r}{suggest(var_name, comp.variables)}"
             )
         return comp, comp.variables[var_name]
 
@@ -486,3 +487,66 @@ def out_of_range(var: Variable, value) -> str:
 def describe_items(items: dict[str, int]) -> str:
     """ "the items name (value), …" for a message."""
     return "the items " + ", ".join(f"{name} ({value})" for name, value in items.items())
+
+
+def parameter_file(system: System, path) -> dict[str, object]:
+    """The values of parameter-set file ``path`` (SSP 1.0 .ssv) as ``{"comp.var": value}`` for
+    a run of ``system``: a variant's ``comp.var`` names as they are, or one component's bare
+    names (``servofmu catalog --ssv``, ``servofmu calibrate``) bound to the one component that
+    has every one of them. ParameterError naming the file otherwise.
+
+    Parameters
+    ----------
+    system : System
+        The loaded system.
+    path : str or pathlib.Path
+        The .ssv file.
+
+    Returns
+    -------
+    dict
+        ``{"component.variable": value}`` (Real, Integer, Boolean, or an item name).
+
+    Examples
+    --------
+    A component's bare names, bound to the one component that has them all:
+
+    >>> import tempfile
+    >>> from types import SimpleNamespace
+    >>> from servofmu.parameter_sets import write_ssv
+    >>> from servofmu.physics.bearing_parameters import default_parameters, PARAMETERS
+    >>> names = {p.name for p in PARAMETERS}
+    >>> system = SimpleNamespace(name="demo", components={
+    ...     "motor": SimpleNamespace(variables={"voltage"}),
+    ...     "bearing": SimpleNamespace(variables=names)})
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     ssv = write_ssv(default_parameters("ning_space_shaft"), Path(tmp) / "ning.ssv")
+    ...     values = parameter_file(system, ssv)
+    >>> values["bearing.assembly_preload"], values["bearing.lubrication"]
+    (100.0, 2)
+    """
+    from .errors import ParameterError
+
+    path = Path(path)
+    if not path.is_file():
+        raise ParameterError(f"--parameters {path}: no such parameter-set file")
+    with refusals():
+        values = {name: value for name, (_, value) in _read_parameter_set(
+            path.read_bytes(), str(path)).items()}  # fmt: skip
+    if not values:
+        raise ParameterError(f"--parameters {path}: the parameter set is empty")
+    qualified = [n for n in values if n.partition(".")[0] in system.components]
+    if len(qualified) == len(values):
+        return values
+    bare = [n for n in values if n not in qualified]
+    owners = [
+        name for name, comp in system.components.items() if all(n in comp.variables for n in bare)
+    ]
+    if len(owners) != 1:
+        what = "no component" if not owners else f"the components {owners}"
+        raise ParameterError(
+            f"--parameters {path}: its names {bare[:3]}{'…' if len(bare) > 3 else ''} are "
+            f"bare, and {what} of {system.name} has every one of them; write them as "
+            "component.variable (e.g. servofmu catalog --ssv FILE --component bearing)"
+        )
+    return {n if n in qualified else f"{owners[0]}.{n}": v for n, v in values.items()}

@@ -1,13 +1,18 @@
-"""Monte-Carlo tolerance study of a bearing pair (``servofmu montecarlo``): the outer ring's
-fit and the preload washer drawn from their manufacturing tolerances
-(``physics/data/tolerances.toml``), the friction torque and the probability of an overload
-(Hertz pressure above the static limit) versus temperature, run as a Dask sweep of
-bearing-model evaluations.
+"""Monte-Carlo tolerance study of a bearing pair (``servofmu montecarlo``): the fitted
+dimensions of a mounting drawn from their manufacturing tolerances (``data/tolerances.toml``,
+or a user catalogue's ``[tolerances.MOUNTING]``), the friction torque and the probability of an
+overload (Hertz pressure above the static limit) and of a lost preload versus temperature, run
+as a Dask sweep of bearing-model evaluations.
 
-Diametral interference Δ = Δ_nominal + (d_ring − mid_ring) − (d_bore − mid_bore): the ring's
-outside diameter and the housing bore each anywhere in their band (uniform), the bands
-centred so that mid-tolerance parts give the drawn interference; the shim likewise around its
-nominal thickness.
+Each band is drawn uniformly (a machined dimension anywhere in its band), centred so that
+mid-tolerance parts give the nominal values:
+
+- ``ring_outer_diameter`` and ``housing_bore``: the outer seat's diametral interference,
+  Δ = Δ_nominal + (d_ring − mid_ring) − (d_bore − mid_bore);
+- ``shaft_diameter`` and ``ring_bore``: the inner seat's likewise,
+  Δ = Δ_nominal + (d_shaft − mid_shaft) − (d_bore − mid_bore);
+- any parameter of the BearingFriction set (``shim``, ``spring_compression``,
+  ``assembly_preload``, …): its nominal value plus the drawn deviation.
 """
 
 from __future__ import annotations
@@ -19,7 +24,8 @@ from pathlib import Path
 import numpy as np
 
 from servofmu.physics import catalog
-from servofmu.physics.bearing_parameters import default_parameters
+from servofmu.physics.bearing_parameters import PARAMETER_NAMES, default_parameters
+from servofmu.physics.presets import coefficient_set
 from servofmu.physics.units import DEG, NMM, UM, celsius_to_kelvin
 
 from .scenarios.common import ScenarioResult
@@ -30,19 +36,24 @@ SPEED = 10.0 * DEG  # rad/s, the speed of the Yu reproduction
 OUTPUTS = ("running_torque", "preload", "max_contact_pressure", "overloaded", "unloaded")
 #: The flags whose probability the study reports: an overload (ISO 76) and a lost preload.
 FLAGS = ("overloaded", "unloaded")
-
-
-#: Bands of the two seat dimensions whose deviations make the outer ring's interference.
-SEAT_BANDS = ("ring_outer_diameter", "housing_bore")
+#: Pairs of toleranced diameters that make a seat's interference: (parameter, the part that
+#: adds to it, the part that takes from it).
+SEATS = (
+    ("outer_interference", "ring_outer_diameter", "housing_bore"),
+    ("inner_interference", "shaft_diameter", "ring_bore"),
+)
+#: Bands of the seat dimensions whose deviations make the rings' interferences.
+SEAT_BANDS = tuple(part for _, *parts in SEATS for part in parts)
 
 
 def tolerance_draws(nominal, bands, samples: int, seed: int) -> list[dict]:
     """``samples`` draws of parameter values from tolerance bands, each uniform in its band.
 
-    A band of ``ring_outer_diameter`` or ``housing_bore`` (deviations of the ring's outside
-    diameter and of the housing bore) moves ``outer_interference`` by (ring − mid) − (bore −
-    mid); a band of any other name moves the parameter of that name by (draw − mid). The
-    bands are centred: mid-band parts give the nominal value.
+    The bands of a seat's two diameters (:data:`SEATS`: ``ring_outer_diameter`` and
+    ``housing_bore`` for the outer ring, ``shaft_diameter`` and ``ring_bore`` for the inner)
+    move its interference by (part that adds − mid) − (part that takes − mid), a missing one
+    counting as exact; a band of any other name moves the parameter of that name by
+    (draw − mid). The bands are centred: mid-band parts give the nominal value.
 
     Parameters
     ----------
@@ -66,25 +77,68 @@ def tolerance_draws(nominal, bands, samples: int, seed: int) -> list[dict]:
     >>> draws = tolerance_draws({"shim": 1e-4}, {"shim": (-2e-6, 2e-6, "±2 µm")}, 3, 1)
     >>> [d["sample"] for d in draws], all(abs(d["shim"] - 1e-4) <= 2e-6 for d in draws)
     ([0, 1, 2], True)
+    >>> bands = {"shaft_diameter": (-2.5e-6, 2.5e-6, ""), "ring_bore": (-4e-6, 0.0, "")}
+    >>> d = tolerance_draws({"inner_interference": 2e-6}, bands, 1, 1)[0]
+    >>> sorted(d), abs(d["inner_interference"] - 2e-6) <= 4.5e-6
+    (['inner_interference', 'sample'], True)
     """
     draws = sample_points({n: Uniform(lo, hi) for n, (lo, hi, _) in bands.items()}, samples, seed)
     mids = {name: 0.5 * (lo + hi) for name, (lo, hi, _) in bands.items()}
     for d in draws:
-        seat = [d.pop(n) - mids[n] if n in mids else 0.0 for n in SEAT_BANDS]
-        if any(n in mids for n in SEAT_BANDS):
-            d["outer_interference"] = nominal["outer_interference"] + seat[0] - seat[1]
+        for parameter, plus, minus in SEATS:
+            if plus in mids or minus in mids:
+                change = sum(sign * (d.pop(n) - mids[n]) for sign, n in ((1, plus), (-1, minus))
+                             if n in mids)  # fmt: skip
+                d[parameter] = nominal[parameter] + change
         for name in set(mids) - set(SEAT_BANDS):
             d[name] = nominal[name] + d[name] - mids[name]
     return draws
 
 
-def tolerance_points(mounting: str, samples: int, seed: int) -> list[dict]:
-    """``samples`` draws of (outer_interference, shim) of ``mounting`` (its bands in
-    ``physics/data/tolerances.toml``, :func:`tolerance_draws`), each crossed with the
-    temperatures of :data:`TEMPS_C` at :data:`SPEED`."""
-    draws = tolerance_draws(
-        default_parameters(mounting), catalog.tolerances(mounting), samples, seed
-    )
+def tolerance_bands(mounting: str) -> dict[str, tuple[float, float, str]]:
+    """The tolerance bands of ``mounting`` ({name: (low, high [SI], provenance)}), checked:
+    each name is a seat diameter (:data:`SEATS`) or a parameter of the set; ValueError naming
+    the mounting and what to add otherwise.
+
+    Returns
+    -------
+    dict
+
+    Examples
+    --------
+    >>> bands = tolerance_bands("yu2017_gimbal")
+    >>> sorted(bands), [round(x * 1e6, 1) for x in bands["shim"][:2]]  # µm
+    (['housing_bore', 'ring_outer_diameter', 'shim'], [-2.0, 2.0])
+    """
+    from servofmu.physics._checks import suggest
+
+    if mounting not in catalog.keys("tolerances"):
+        raise ValueError(
+            f"mounting {mounting!r} has no tolerance bands: add [tolerances.{mounting}] to your "
+            "catalogue (ring_outer_diameter and housing_bore, shaft_diameter and ring_bore, or "
+            "any parameter such as shim or spring_compression, each { low, high, unit, kind, "
+            f"ref }}; the bands of {catalog.keys('tolerances')} are in the package's "
+            "data/tolerances.toml)"
+        )
+    bands = catalog.tolerances(mounting)
+    for name in bands:
+        if name not in SEAT_BANDS and name not in PARAMETER_NAMES:
+            hint = suggest(name, [*SEAT_BANDS, *PARAMETER_NAMES])
+            raise ValueError(
+                f"tolerances.{mounting}: {name!r} is neither a seat diameter "
+                f"{list(SEAT_BANDS)} nor a parameter{hint}"
+            )
+    return bands
+
+
+def tolerance_points(
+    mounting: str, samples: int, seed: int, nominal: dict | None = None
+) -> list[dict]:
+    """``samples`` draws of the toleranced values of ``mounting`` (:func:`tolerance_bands`,
+    :func:`tolerance_draws`) around ``nominal`` (default: the mounting's parameter set), each
+    crossed with the temperatures of :data:`TEMPS_C` at :data:`SPEED`."""
+    nominal = default_parameters(mounting) if nominal is None else nominal
+    draws = tolerance_draws(nominal, tolerance_bands(mounting), samples, seed)
     return cross(draws, _grid())
 
 
@@ -101,11 +155,13 @@ def run(
     scheduler: str | None = None,
     mounting: str = "yu2017_gimbal",
     progress: bool = True,
+    base: dict | None = None,
 ) -> ScenarioResult:
-    """Run the study; table, summary and files (CSV of every run, CSV of the summary, PNG)."""
+    """Run the study on ``mounting`` (its parameter set ``base``, default the mounting's
+    preset); table, summary and files (CSV of every run, CSV of the summary, PNG)."""
     out = Path(out_dir)
-    base = default_parameters(mounting)
-    points = tolerance_points(mounting, samples, seed)
+    base = default_parameters(mounting) if base is None else base
+    points = tolerance_points(mounting, samples, seed, base)
     sweep = run_sweep(
         ModelTask(base, OUTPUTS), points, workers=workers, scheduler=scheduler, progress=progress
     )
@@ -133,12 +189,17 @@ def run(
             lo, hi = _wilson(p, n)
             row |= {f"P({flag})": p, f"P({flag}) low (95%)": lo, f"P({flag}) high (95%)": hi}
         rows.append(row | {"runs": n})
-    tol = catalog.tolerances(mounting)
+    tol = tolerance_bands(mounting)
+    drawn = sorted(
+        n for n in points[0] if n in PARAMETER_NAMES and n not in ("temperature", "speed")
+    )
     result = ScenarioResult(
         "montecarlo",
-        f"Monte-Carlo tolerance study, {mounting}: {samples} draws of fit and shim, running "
-        f"torque at {SPEED / DEG:g} °/s and the probabilities of an overload and of a lost preload "
-        "versus temperature",
+        f"Monte-Carlo tolerance study, {mounting}: {samples} draws of "
+        f"{', '.join(drawn[:-1]) + ' and ' if len(drawn) > 1 else ''}{drawn[-1]}, running "
+        "torque at "
+        f"{SPEED / DEG:g} °/s and the probabilities of an overload and of a lost preload versus "
+        "temperature",
         list(rows[0]),
         rows,
         summary={
@@ -146,14 +207,17 @@ def run(
             "failed runs": len(sweep.failed),
             "workers": sweep.workers,
             "wall time [s]": sweep.wall_time,
-            "outer interference [um]": _spread([p["outer_interference"] for p in points], UM),
-            "shim [um]": _spread([p["shim"] for p in points], UM),
+            **{
+                f"{name} [{_unit(name)[0]}]": _spread([p[name] for p in points], _unit(name)[1])
+                for name in drawn
+            },
         },
         files=[runs_file],
         notes=[
             f"{name}: {lo / UM:+g}…{hi / UM:+g} µm ({src})" for name, (lo, hi, src) in tol.items()
         ]
         + [
+            f"friction coefficients: {coefficient_set(mounting).label}",
             "P(overloaded): fraction of draws whose largest Hertz pressure exceeds 4200 MPa "
             "(ISO 76); P(unloaded): fraction whose preload is lost (a bearing without axial "
             "load); each with its 95 % Wilson interval.",
@@ -164,6 +228,14 @@ def run(
     for failure in sweep.failed[:5]:
         result.notes.append(f"failed run: {failure}")
     return result
+
+
+def _unit(name: str) -> tuple[str, float]:
+    """(unit, its size in SI) of a drawn parameter in the summary: µm for lengths."""
+    from servofmu.physics.bearing_parameters import parameter
+
+    unit = parameter(name).unit or "-"
+    return ("um", UM) if unit == "m" else (unit, 1.0)
 
 
 def _spread(values, unit) -> str:

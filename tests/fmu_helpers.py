@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from fmpy import extract, read_model_description
-from fmpy.fmi1 import calloc, free
+from fmpy.fmi1 import FMICallException, calloc, free
 from fmpy.fmi2 import (
     FMU2Slave,
     fmi2CallbackAllocateMemoryTYPE,
@@ -87,7 +87,11 @@ class Fmu:
         return self.slave.getReal([self.vr[n] for n in names])
 
     def close(self):
+        """fmi2Terminate where it is legal (FMI 2.0: after a step or a failed one; the error
+        state has none), then fmi2FreeInstance."""
         try:
             self.slave.terminate()
+        except FMICallException:
+            pass
         finally:
             self.slave.freeInstance()

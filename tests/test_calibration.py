@@ -385,9 +385,9 @@ def test_without_repeated_points_a_fit_is_judged_against_an_assumed_scatter():
         (["--speed", "-5 deg/s"], "--speed '-5 deg/s': the test speed must be finite and ≥ 0"),
         (["--set", "shim=abc"], "--set 'shim=abc': shim takes a number"),
         (["--set", "nope=1"], "--set 'nope=1': write NAME=VALUE"),
-        (["--lubricant", "honey"], "lubricant key = 'honey' is not one of"),
+        (["--lubricant", "honey"], "lubricant = 'honey' is not in the catalogue's lubricants"),
         (["--bearing", "9999"], "bearing key = '9999' is not one of"),
-        (["--mounting", "nowhere"], "mounting key = 'nowhere' is not one of"),
+        (["--mounting", "nowhere"], "mounting = 'nowhere' is not in the catalogue's mountings"),
         (["--residual", "cubic"], "argument --residual: invalid choice: 'cubic'"),
     ],
 )

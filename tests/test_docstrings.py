@@ -65,7 +65,7 @@ def _lacking(name):
 #: was written (a ratchet: a module may have fewer, never more; lower the number as they are
 #: written, and delete the entry at 0).
 STILL_LACKING = {
-    "servofmu.build.fmu": 5,
+    "servofmu.build.fmu": 4,
     "servofmu.build.golden": 4,
     "servofmu.build.host": 3,
     "servofmu.build.presets": 2,
@@ -93,7 +93,7 @@ STILL_LACKING = {
     "servofmu.harness.scenarios.stiffness_test": 1,
     "servofmu.harness.scenarios.thermal_cycle": 1,
     "servofmu.harness.signals": 2,
-    "servofmu.harness.sweep": 7,
+    "servofmu.harness.sweep": 6,
     "servofmu.harness.system": 4,
     "servofmu.harness.tolerance": 2,
     "servofmu.harness.units": 5,

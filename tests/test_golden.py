@@ -5,12 +5,15 @@ import difflib
 
 import pytest
 
-from servofmu.build.golden import golden_path, model_description, normalised
+from servofmu.build.fmu import FMUS
+from servofmu.build.golden import GOLDEN_DIR, golden_path, model_description, normalised
 
-NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController")
+
+def test_every_fmu_has_a_golden_model_description():
+    assert sorted(p.stem for p in GOLDEN_DIR.glob("*.xml")) == sorted(FMUS)
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", FMUS)
 def test_model_description_equals_the_golden_one(fmus, name):
     built = model_description(fmus[name])
     golden = golden_path(name).read_text(encoding="utf-8")

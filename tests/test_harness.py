@@ -370,8 +370,12 @@ def test_failing_fmu_stops_the_run_and_keeps_the_results(tmp_path, out):
             progress=False,
         )
     err = info.value
-    assert "'bearing'" in str(err) and "fmi2Discard" in str(err)
-    assert "temperature = 47" in str(err) and "[173.15, 473.15]" in str(err)
+    # the headline names the component, the status and who logged what (quoted)
+    assert "component 'bearing' (BearingFriction) returned fmi2Error" in str(err)
+    assert 'bearing (BearingFriction) logged Error: "bearing: fmi2DoStep: temperature = 47' in str(
+        err
+    )
+    assert "[173.15, 473.15]" in str(err)
     t_fail = err.result.data["time"][-1]
     assert 0.08 < t_fail < 0.1  # rows up to the step before the failing one
     on_disk, _ = read_results(tmp_path / "results.csv")
@@ -380,6 +384,32 @@ def test_failing_fmu_stops_the_run_and_keeps_the_results(tmp_path, out):
     assert "\n" not in str(err)  # one line for the user ...
     log = (tmp_path / "failure.log").read_text()  # ... the detail in a log
     assert str(tmp_path / "failure.log") in str(err) and "[bearing]" in log
+
+
+def test_a_failure_quotes_the_component_that_logged():
+    """explain(): the failing component's own warnings and errors, else the last ones of any
+    component (a bad value usually comes from upstream), each named and quoted."""
+    from collections import deque
+    from types import SimpleNamespace
+
+    from servofmu.harness.master import _Cosimulation
+
+    journal = deque(
+        [("motor", 0, "runs"), ("bearing", 3, "temperature = 500.0 is outside"), ("ctl", 1, "w")]
+    )
+    units = {
+        n: SimpleNamespace(journal=journal, comp=SimpleNamespace(model_identifier=m))
+        for n, m in (("motor", "DCMotor"), ("bearing", "BearingFriction"), ("ctl", "Servo"))
+    }
+    cosim = SimpleNamespace(units=units)
+    told = _Cosimulation.explain(cosim, "motor")  # the motor logged no problem itself
+    assert told == (
+        'bearing (BearingFriction) logged Error: "temperature = 500.0 is outside" | '
+        'ctl (Servo) logged Warning: "w"'
+    )
+    assert _Cosimulation.explain(cosim, "bearing").startswith("bearing (BearingFriction)")
+    journal.clear()
+    assert _Cosimulation.explain(cosim, "motor") == "no component logged a warning or an error"
 
 
 def test_bad_run_arguments(out):

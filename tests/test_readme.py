@@ -11,29 +11,62 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-README = Path(__file__).resolve().parents[1] / "README.md"
+ROOT = Path(__file__).resolve().parents[1]
+README = ROOT / "README.md"
+#: Where the user reads Python examples: the README, the short README to come, and the
+#: documentation's snippets (docs/snippets/*.py, included in its pages).
+SOURCES = (
+    README,
+    ROOT / "docs" / "README_next.md",
+    *sorted((ROOT / "docs" / "snippets").glob("*.py")),
+)
+KEYS = {
+    "simulate_fmu(": "plain",
+    "BearingModel(pair)": "bearing",
+    "stiffness_breakdown(": "actuator",
+    "run(": "harness",
+    "tn.network(": "thermal",
+    'friction_model="skf2004"': "friction",
+}
+
+
+def _blocks(path: Path) -> list[str]:
+    text = path.read_text()
+    return [text] if path.suffix == ".py" else re.findall(r"```python\n(.*?)```", text, flags=re.S)
 
 
 @pytest.fixture(scope="module")
-def examples():
-    """Each Python block of the README run in its own namespace, keyed by a name of its own."""
-    blocks = re.findall(r"```python\n(.*?)```", README.read_text(), flags=re.S)
-    keys = {
-        "BearingModel(pair)": "bearing",
-        "stiffness_breakdown(": "actuator",
-        "run(": "harness",
-        "tn.network(": "thermal",
-        'friction_model="skf2004"': "friction",
-    }
+def runs():
+    """Each distinct Python example of :data:`SOURCES` run once in its own namespace: {code:
+    namespace}, and {key: [code, ...]} (the same example in several places runs once). The
+    FMUs are built first into build/out, where the plain-fmpy example reads them."""
+    from servofmu.build.fmu import ensure_built
+
+    ensure_built()
+    namespaces, by_key = {}, {k: [] for k in KEYS.values()}
+    for path in SOURCES:
+        for code in _blocks(path):
+            (key,) = [k for marker, k in KEYS.items() if marker in code]
+            if code not in namespaces:
+                namespace, printed = {}, io.StringIO()
+                with contextlib.redirect_stdout(printed):
+                    exec(compile(code, str(path), "exec"), namespace)
+                namespace["__printed__"] = printed.getvalue()
+                namespaces[code] = namespace
+            by_key[key].append(code)
+    assert all(by_key.values()), by_key
+    return namespaces, by_key
+
+
+@pytest.fixture(scope="module", params=range(3), ids=lambda i: f"variant{i}")
+def examples(request, runs):
+    """The examples of one variant: for each key, the i-th distinct text of it (the last one
+    when there are fewer), so that every distinct example is checked."""
+    namespaces, by_key = runs
     out = {}
-    for code in blocks:
-        namespace, printed = {}, io.StringIO()
-        with contextlib.redirect_stdout(printed):
-            exec(compile(code, str(README), "exec"), namespace)
-        namespace["__printed__"] = printed.getvalue()
-        (key,) = [k for marker, k in keys.items() if marker in code]
-        out[key] = namespace
-    assert set(out) == set(keys.values())
+    for key, codes in by_key.items():
+        distinct = list(dict.fromkeys(codes))
+        out[key] = namespaces[distinct[min(request.param, len(distinct) - 1)]]
     return out
 
 
@@ -129,3 +162,14 @@ def test_friction_model_example_adds_up(examples):
     parts += cold.viscous_torque + cold.grease_torque
     assert cold.running_torque == pytest.approx(parts, rel=1e-12)
     assert f"{cold.viscous_torque} {cold.grease_torque}" in ns["__printed__"]
+
+
+def test_plain_fmpy_example_shows_the_error_and_the_discarded_step(examples):
+    from servofmu.build.exportlib import compiled_export
+
+    ns = examples["plain"]
+    discards = [m for s, m in ns["messages"] if s == 2]
+    assert set(ns["result"]["time"]) == {0.0}  # the rows end where the discarded step began
+    assert discards and "one step takes at most 100000" in discards[-1], ns["messages"]
+    if compiled_export() is not None:  # servofmu's export: the error raised (and printed)
+        assert "fmi2ExitInitializationMode failed with status 3" in ns["__printed__"]

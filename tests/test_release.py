@@ -164,6 +164,15 @@ def test_every_command_runs_from_an_empty_folder_and_writes_nothing_inside_the_p
         env=env,
     )  # fmt: skip
     assert "calibrated.ssv" in cal.stdout
+    # a user's mechanism from the example catalogue: built in build/my_gimbal, run there
+    own = _run(
+        [servofmu_cmd, "run", "seeker_gimbal", "--catalog", "examples/my_gimbal_catalog.toml",
+         "--stop", "0.2"],
+        work,
+        env=env,
+    )  # fmt: skip
+    assert "200 steps to t = 0.2 s" in own.stdout
+    assert (work / "build" / "my_gimbal" / "seeker_gimbal.ssp").is_file()
 
     # the sweep extra: named when missing (exit 2, before any work), then installed
     proc = subprocess.run(

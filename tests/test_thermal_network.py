@@ -353,19 +353,32 @@ def test_fmu_steps_like_the_library(fmus):
         ({"ambient_temperature": float("nan")}, "ambient_temperature = nan"),
         ({"sink_temperature": -3.0}, "sink_temperature = -3.0"),
         ({"power_loss": float("inf")}, "power_loss = inf"),
+    ],
+)
+def test_fmu_refuses_bad_inputs_with_a_message(fmus, values, text):
+    fmu = Fmu(fmus["ThermalNetwork"], "bad").init()
+    before = fmu.get(*OUTPUTS)
+    fmu.set(**values)
+    with pytest.raises(FMICallException, match="status 3"):
+        fmu.slave.doStep(0.0, 1.0)
+    assert any(text in m and s == 3 for s, m in fmu.log), fmu.log
+    assert fmu.get(*OUTPUTS) == before  # nothing computed is lost
+    fmu.close()
+
+
+@pytest.mark.parametrize(
+    "values, text",
+    [
         ({"housing_capacity": 0.0}, "housing_capacity = 0.0"),
         ({"ball_conductance": -0.1}, "ball_conductance = -0.1"),
         ({"inner_fit_conductance": float("nan")}, "inner_fit_conductance = nan"),
     ],
 )
-def test_fmu_discards_bad_values_with_a_message(fmus, values, text):
-    fmu = Fmu(fmus["ThermalNetwork"], "bad").init()
-    before = fmu.get(*OUTPUTS)
-    fmu.set(**values)
-    with pytest.raises(FMICallException, match="status 2"):
-        fmu.slave.doStep(0.0, 1.0)
-    assert any(text in m for _, m in fmu.log), fmu.log
-    assert fmu.get(*OUTPUTS) == before  # nothing computed is lost
+def test_fmu_refuses_bad_parameters_with_a_message(fmus, values, text):
+    fmu = Fmu(fmus["ThermalNetwork"], "bad")
+    with pytest.raises(FMICallException, match="fmi2ExitInitializationMode failed with status 3"):
+        fmu.init(**values)
+    assert any(text in m and s == 3 for s, m in fmu.log), fmu.log
     fmu.close()
 
 

@@ -21,29 +21,57 @@ def _paper(args) -> int:
     return 0
 
 
+def _mechanism(args):
+    """The mechanism of a command's --catalog, --mounting (and --lubricant,
+    --support-mounting where it has them): a context manager yielding a
+    :class:`~servofmu.build.mechanism.Mechanism`, its catalogues merged until it exits. Every
+    error (a bad file, entry or key) is a ValueError before any work starts."""
+    from servofmu.build.mechanism import open_mechanism
+
+    return open_mechanism(
+        getattr(args, "catalog", ()),
+        getattr(args, "mounting", None),
+        getattr(args, "lubricant", None),
+        getattr(args, "support_mounting", None),
+    )
+
+
 def _build(args) -> int:
-    from servofmu.build import catalogs
-    from servofmu.build.fmu import FMUS, build_all
+    from servofmu.build.fmu import FMUS, build_all, refuse_other_mechanism
 
     # user catalogues and presets are checked before anything is built (exit 2 on an error)
-    defaults = catalogs.load(args.catalog, args.preset, args.lubricant, args.support_mounting)
-    try:
-        for path in build_all(Path(args.out), args.names or FMUS, defaults=defaults):
+    with _mechanism(args) as mechanism:
+        out = Path(args.out) if args.out else mechanism.build_dir
+        refuse_other_mechanism(out, mechanism)
+        _say_mechanism(mechanism)
+        for path in build_all(out, args.names or FMUS, defaults=mechanism.defaults):
             print(path)
-    finally:
-        catalogs.unload()
+    _note_export()
     return 0
+
+
+def _note_export() -> None:
+    """Say on stderr when the FMUs carry pythonfmu's binary (no compiled servofmu export)."""
+    from servofmu.build.exportlib import PYTHONFMU, export_used
+
+    if export_used() == PYTHONFMU:
+        print(
+            "servofmu: note: servofmu's export library was not compiled when servofmu was "
+            "installed (it needs a C++17 compiler): the FMUs carry pythonfmu's binary, under "
+            "which a host's mistake is logged and discards the next step instead of getting "
+            "fmi2Error (README, 'Bad input and careless hosts')",
+            file=sys.stderr,
+        )
 
 
 def _catalog(args) -> int:
     """List the catalogue, or print (and write as .ssv) one preset's parameter set."""
     from servofmu.build import catalogs
 
-    catalogs.load(args.catalog)
-    try:
-        if not (args.preset or args.bearing or args.lubricant):
+    with _mechanism(argparse.Namespace(catalog=args.catalog)):
+        if not (args.mounting or args.bearing or args.lubricant):
             if args.ssv:
-                raise ValueError("--ssv writes a preset: name it with --preset MOUNTING")
+                raise ValueError("--ssv writes a preset: name it with --mounting KEY")
             print(catalogs.listing())
             return 0
         from servofmu.parameter_sets import write_ssv
@@ -52,17 +80,19 @@ def _catalog(args) -> int:
             default_parameters,
             default_sources,
         )
+        from servofmu.physics.presets import coefficient_set
 
-        mounting = args.preset or DEFAULT_MOUNTING
+        mounting = args.mounting or DEFAULT_MOUNTING
         kw = {"bearing": args.bearing, "lubricant": args.lubricant}
         values = default_parameters(mounting, **kw)
         what = ", ".join(f"{k} {v}" for k, v in {"mounting": mounting, **kw}.items() if v)
+        coefficients = coefficient_set(mounting).label
         print(f"preset: {what}")
+        print(f"friction coefficients: {coefficients}")
         print(catalogs.preset_table(values, default_sources(mounting, **kw)))
         if args.ssv:
-            print(f"file: {write_ssv(values, args.ssv, args.component, comment='preset: ' + what)}")
-    finally:
-        catalogs.unload()
+            comment = f"preset: {what}; friction coefficients {coefficients}"
+            print(f"file: {write_ssv(values, args.ssv, args.component, comment=comment)}")
     return 0
 
 
@@ -99,25 +129,42 @@ def _host_env(args) -> int:
     return 0
 
 
-def _system_path(arg: str) -> tuple[Path, Path | None]:
+def _system_path(arg: str, mechanism=None) -> tuple[Path, Path | None]:
     """(path, fmu_dir) for ``servofmu run`` and ``sweep``: an .ssp, a system folder (its FMUs
-    taken from the build), or the name of a system of the package (its .ssp in the build
-    folder, built there when missing or stale)."""
-    from servofmu.build.fmu import DEFAULT_OUT, ensure_built
+    taken from the mechanism's build), or the name of a system of the mechanism's build (its
+    .ssp in the build folder, built there when missing or stale; default: the standard
+    mechanism in build/out)."""
+    from servofmu.build.fmu import ensure_built
+    from servofmu.build.mechanism import resolve
     from servofmu.build.ssp import SSP_DIR, systems
-    from servofmu.harness.scenarios.common import system_path
+    from servofmu.physics._checks import suggest
 
     path = Path(arg)
     if path.exists():
-        return path, (ensure_built(DEFAULT_OUT) if path.is_dir() or path.suffix == ".ssd" else None)
-    names = [s.name for s in systems()]
+        if path.suffix == ".ssp" and mechanism is not None and not mechanism.standard:
+            raise ValueError(
+                f"system = {arg!r}: an .ssp carries its own FMUs and bindings; --catalog and "
+                "--mounting choose the mechanism of a system name or folder"
+            )
+        folder = path.is_dir() or path.suffix == ".ssd"
+        return path, (ensure_built(mechanism=mechanism) if folder else None)
+    mechanism = mechanism or resolve(_standard())
+    names = [s.name for s in systems(names=mechanism.systems)]
     if arg in names:
-        return system_path(arg), None
+        return ensure_built(mechanism=mechanism) / f"{arg}.ssp", None
+    others = [s.name for s in systems() if s.name not in names]
     raise ValueError(
-        f"system = {arg!r}: no such .ssp file or system folder here, nor a system name; the "
-        f"systems are {names} (sources in {SSP_DIR}, built into {DEFAULT_OUT} by "
-        "`servofmu build`)"
+        f"system = {arg!r}: no such .ssp file or system folder here, nor a system of "
+        f"{mechanism.key}{suggest(arg, names)}; its systems are {names} (sources in "
+        f"{SSP_DIR}, built into {mechanism.build_dir} by `servofmu build`)"
+        + (f"; {others} run the standard mechanism only" if others else "")
     )
+
+
+def _standard():
+    from servofmu.build.catalogs import Defaults
+
+    return Defaults()
 
 
 def _value(text: str):
@@ -135,7 +182,12 @@ def _set_known(params: dict, items: list[str]) -> dict:
         key, sep, text = item.partition("=")
         key = key.strip()
         if not sep or key not in params:
-            raise ValueError(f"--set {item!r}: write NAME=VALUE with NAME one of {list(params)}")
+            from .physics._checks import suggest
+
+            raise ValueError(
+                f"--set {item!r}: write NAME=VALUE with NAME one of {list(params)}"
+                + (suggest(key, params) if sep else "")
+            )
         if isinstance(params[key], str):  # a catalogue key stays text, even "71803"
             params[key] = text.strip()
             continue
@@ -146,16 +198,21 @@ def _set_known(params: dict, items: list[str]) -> dict:
     return params
 
 
-def _parameters(items: list[str]) -> list:
-    """--parameters values: a variant name, or comp.var=value (text: the harness converts it
-    to the variable's type)."""
+def _parameters(items: list[str], system=None) -> list:
+    """--parameters values: a variant name, an .ssv file (a parameter set: a variant's
+    ``comp.var`` names, or a component's bare names), or comp.var=value (text: the harness
+    converts it to the variable's type)."""
+    from servofmu.harness.system import parameter_file
+
     out = []
     for item in items:
-        if "=" not in item:
+        if item.endswith(".ssv") and "=" not in item:
+            out.append(parameter_file(system, item))
+        elif "=" not in item:
             out.append(item)
-            continue
-        target, _, text = item.partition("=")
-        out.append({target.strip(): text.strip()})
+        else:
+            target, _, text = item.partition("=")
+            out.append({target.strip(): text.strip()})
     return out
 
 
@@ -174,11 +231,28 @@ def _signals(items: list[str]) -> dict:
 
 
 def _run(args) -> int:
+    with _mechanism(args) as mechanism:
+        path, fmu_dir = _system_path(args.system, mechanism)
+        _say_mechanism(mechanism)
+        return _run_system(args, path, fmu_dir)
+
+
+def _say_mechanism(mechanism) -> None:
+    """One line on a mechanism other than the standard one: what it is, and its friction
+    coefficients (uncalibrated until calibrated)."""
+    if not mechanism.standard:
+        print(
+            f"mechanism {mechanism.describe()}; friction coefficients "
+            f"{mechanism.coefficients.label}",
+            flush=True,
+        )
+
+
+def _run_system(args, path, fmu_dir) -> int:
     from servofmu.harness import HarnessError, load_system, run
     from servofmu.harness.interrupt import interruptible
     from servofmu.harness.master import check_run
 
-    path, fmu_dir = _system_path(args.system)
     try:
         system = load_system(path, fmu_dir=fmu_dir)
     except HarnessError as exc:  # also an unreadable archive: bad input, exit 2
@@ -190,7 +264,7 @@ def _run(args) -> int:
         _check_plot(system, args.plot or [], signals)
         record = [*args.record, *(n for n in args.plot or [] if n not in args.record)]
         kwargs = dict(
-            parameters=_parameters(args.parameters),
+            parameters=_parameters(args.parameters, system),
             signals=signals,
             start=args.start,
             stop=args.stop,
@@ -241,9 +315,12 @@ def _check_plot(system, names: list[str], signals: dict) -> None:
 
 
 def _scenario(args) -> int:
-    from servofmu.harness.scenarios import run
+    from servofmu.harness.scenarios import check_mechanism, run
 
-    result = run(args.name, Path(args.out or f"out/{args.name}"), coarse=args.coarse)
+    with _mechanism(args) as mechanism:
+        check_mechanism(args.name, mechanism)
+        out = Path(args.out or f"out/{args.name}")
+        result = run(args.name, out, coarse=args.coarse, mechanism=mechanism)
     print(result.to_text())
     return 0
 
@@ -277,7 +354,7 @@ def _calibrate_datasheet(args) -> int:
 
     other = [
         f"--{n.replace('_', '-')}"
-        for n in ("data", "bearing", "mounting", "lubricant", "fit", "speed")
+        for n in ("data", "catalog", "bearing", "mounting", "lubricant", "fit", "speed")
         if getattr(args, n)
     ] + (["--set"] if args.set else [])
     if other:
@@ -332,6 +409,11 @@ def _calibrate(args) -> int:
         raise ValueError("--test names the datasheet test of --datasheet")
     if not args.data:
         raise ValueError("name DATA.csv of measured friction torque, or --datasheet LUBRICANT")
+    with _mechanism(args) as mechanism:
+        return _calibrate_data(args, mechanism)
+
+
+def _calibrate_data(args, mechanism) -> int:
     from .calibration import (
         UNKNOWNS,
         calibrate,
@@ -339,13 +421,18 @@ def _calibrate(args) -> int:
         plot,
         read_measurements,
         to_text,
+        write_coefficients,
         write_residuals,
         write_ssv,
     )
-    from .physics.bearing_parameters import default_parameters, pair_from_parameters
+    from .physics.bearing_parameters import (
+        default_parameters,
+        default_sources,
+        pair_from_parameters,
+    )
 
     # every argument first: nothing is read or fitted with a bad one
-    mounting = args.mounting or _mounting_for(args.bearing or "71803")
+    mounting = mechanism.mounting if mechanism.chosen else _mounting_for(args.bearing or "71803")
     params = default_parameters(  # the presets' numbers; --set numbers win
         mounting, args.lubrication, bearing=args.bearing, lubricant=args.lubricant
     )
@@ -359,23 +446,33 @@ def _calibrate(args) -> int:
         if args.fit
         else (
             ["palmgren_s0", "sliding_friction"]
-            if args.lubrication == "grease"
+            if params["lubrication"] == "grease"
             else ["sliding_friction"]
         )
     )
     for name in unknowns:
         if name not in UNKNOWNS:
             raise ValueError(f"--fit {args.fit}: {name!r} is not one of {list(UNKNOWNS)}")
+    from .physics.presets import coefficient_set
+
+    before = coefficient_set(mounting).label
     data = read_measurements(args.data)
     cal = calibrate(data, params, unknowns, speed=speed, residual=args.residual)
     out = Path(args.out or f"out/calibration/{Path(args.data).stem}")
     files = [write_residuals(cal, out / "residuals.csv"), plot(cal, out / "calibration.png")]
-    ssv = out / "calibrated.ssv"
+    ssv, toml = out / "calibrated.ssv", out / "calibrated.toml"
     if cal.poor and not args.allow_poor_fit:
-        ssv.unlink(missing_ok=True)  # no parameter set of an earlier run passes for this one
+        for stale in (ssv, toml):  # no result of an earlier run passes for this one
+            stale.unlink(missing_ok=True)
     else:
-        files.append(write_ssv(cal.parameters, ssv, component=args.component))
+        what = f"calibrated by servofmu calibrate on {args.data} (mounting {mounting})"
+        files.append(write_ssv(cal.parameters, ssv, component=args.component, comment=what))
+        sources = default_sources(
+            mounting, args.lubrication, bearing=args.bearing, lubricant=args.lubricant
+        )
+        files.append(write_coefficients(cal, toml, mounting, args.data, sources))
     text = to_text(cal)
+    text += f"\n\nmounting {mounting}; friction coefficients before this fit: {before}"
     (out / "report.txt").write_text(text + "\n")
     if args.json:
         import json
@@ -384,14 +481,19 @@ def _calibrate(args) -> int:
     else:
         print(text)
         print("\n".join(f"file: {f}" for f in [out / "report.txt", *files]))
+        if toml in files:
+            build = " ".join(["servofmu build", *(f"--catalog {f}" for f in [*args.catalog, toml])])
+            if args.mounting or not mechanism.chosen:  # no catalogue's [defaults] names it
+                build += f" --mounting {mounting}"
+            print(f"next: {build} (the FMUs and systems of {mounting} with these coefficients)")
     if cal.poor:
         what = f"{cal.problems[0]}" + (
             f" (and {len(cal.problems) - 1} more)" if len(cal.problems) > 1 else ""
         )
         if not args.allow_poor_fit:
             print(
-                f"servofmu: calibration failed: {what}; no calibrated.ssv written (report in "
-                f"{out / 'report.txt'}; --allow-poor-fit writes it anyway)",
+                f"servofmu: calibration failed: {what}; no calibrated.ssv or calibrated.toml "
+                f"written (report in {out / 'report.txt'}; --allow-poor-fit writes them anyway)",
                 file=sys.stderr,
             )
             return 1
@@ -437,21 +539,29 @@ def _distribution(item: str):
 
 
 def _sweep(args) -> int:
+    from servofmu.harness.sweep import require_sweep_extra
+
+    require_sweep_extra()
+    with _mechanism(args) as mechanism:
+        return _sweep_mechanism(args, mechanism)
+
+
+def _sweep_mechanism(args, mechanism) -> int:
+    from servofmu.harness.interrupt import received
     from servofmu.harness.sweep import (
         ModelTask,
         SystemTask,
         check_table_path,
         cross,
         grid_points,
-        require_sweep_extra,
         run_sweep,
         sample_points,
     )
     from servofmu.physics.bearing_parameters import default_parameters
 
-    require_sweep_extra()
     out = Path(args.out or "out/sweep/results.csv")
     check_table_path(out)
+    _say_mechanism(mechanism)
     axes = dict(_axis(g) for g in args.grid)
     dists = dict(_distribution(s) for s in args.sample)
     samples = sample_points(dists, args.samples, args.seed) if dists else []
@@ -459,7 +569,12 @@ def _sweep(args) -> int:
     if not points:
         raise ValueError("give at least one --grid or --sample")
     if args.target == "model":
-        base = _set_known(default_parameters(args.mounting, args.lubrication), args.set)
+        base = (
+            default_parameters(mechanism.mounting, args.lubrication)
+            if args.lubrication
+            else mechanism.parameters()
+        )
+        base = _set_known(base, args.set)
         task = ModelTask(base, tuple(args.record)) if args.record else ModelTask(base)
     else:
         if args.set or not args.record:
@@ -467,7 +582,7 @@ def _sweep(args) -> int:
                 "a system sweep takes --record comp.var (what to report) and no --set "
                 "(give fixed values as a one-value --grid)"
             )
-        path, fmu_dir = _system_path(args.target)
+        path, fmu_dir = _system_path(args.target, mechanism)
         if fmu_dir is not None or path.suffix != ".ssp":
             raise ValueError(f"{args.target}: a system sweep needs a packed .ssp or a system name")
         task = SystemTask(
@@ -484,7 +599,7 @@ def _sweep(args) -> int:
             f"marked 'interrupted' in {out}",
             file=sys.stderr,
         )
-        return 130
+        return 128 + received()
     print(
         f"{len(result.rows)} runs on {result.workers} worker(s) in {result.wall_time:.3g} s; "
         f"{len(result.failed)} failed; table: {out}"
@@ -499,14 +614,16 @@ def _montecarlo(args) -> int:
     from servofmu.harness.tolerance import run
 
     require_sweep_extra()
-    result = run(
-        Path(args.out or "out/montecarlo"),
-        samples=args.samples,
-        seed=args.seed,
-        workers=args.workers,
-        scheduler=args.scheduler,
-        mounting=args.mounting,
-    )
+    with _mechanism(args) as mechanism:
+        result = run(
+            Path(args.out or "out/montecarlo"),
+            samples=args.samples,
+            seed=args.seed,
+            workers=args.workers,
+            scheduler=args.scheduler,
+            mounting=mechanism.mounting,
+            base=mechanism.parameters(),
+        )
     print(result.to_text())
     return 0
 
@@ -536,6 +653,14 @@ class _Parser(argparse.ArgumentParser):
     """argparse with its errors on one line (no usage block): exit 2."""
 
     def error(self, message):
+        import re
+
+        from .physics._checks import suggest
+
+        typo = re.search(r"invalid choice: '(.*?)' \(choose from (.*)\)", message)
+        if typo:  # argparse lists the choices; add the closest one
+            choices = re.findall(r"'([^']*)'", typo.group(2))
+            message += suggest(typo.group(1), choices)
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
@@ -580,6 +705,41 @@ def _fraction(text: str) -> float:
     return value
 
 
+def add_mechanism_options(parser, mounting_help: str | None = None) -> None:
+    """``--catalog FILE`` (repeatable) and ``--mounting KEY``: the mechanism a command works
+    on (:func:`_mechanism` resolves them); the catalogue's ``[defaults] mounting`` applies
+    when no --mounting is given.
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> p = argparse.ArgumentParser()
+    >>> add_mechanism_options(p)
+    >>> p.parse_args(["--catalog", "a.toml", "--catalog", "b.toml", "--mounting", "m"])
+    Namespace(catalog=['a.toml', 'b.toml'], mounting='m')
+    """
+    parser.add_argument(
+        "--catalog",
+        action="append",
+        default=[],
+        metavar="FILE.toml",
+        help="a user catalogue (bearings, lubricants, materials, mountings, coefficients, "
+        "tolerances; format: servofmu examples → my_gimbal_catalog.toml), merged in; "
+        "repeatable",
+    )
+    parser.add_argument(
+        "--mounting",
+        metavar="KEY",
+        help=mounting_help
+        or "the catalogue mounting of the mechanism (default: the last catalogue's [defaults] "
+        "mounting, else yu2017_gimbal); its build lives in build/KEY (build/out for the "
+        "standard one), built there when missing or stale",
+    )
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="servofmu", description="Temperature-aware servo-mechanism physics and FMUs."
@@ -597,20 +757,23 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true", help="print the report as JSON")
     p.add_argument("--out", help="directory for CSV and PNG files (default out/NAME)")
     p.set_defaults(func=_paper)
-    b = sub.add_parser("build", help="build the FMUs (pythonfmu) into build/out")
-    b.add_argument("names", nargs="*", help="FMUs to build (default: all five)")
-    b.add_argument("--out", default="build/out", help="output directory (default build/out)")
-    b.add_argument(
-        "--catalog",
-        action="append",
-        default=[],
-        metavar="FILE.toml",
-        help="a user catalogue (bearings, lubricants, materials, mountings; format: "
-        "examples/my_gimbal_catalog.toml) merged into the presets; its [defaults] fill the "
-        "start values",
+    b = sub.add_parser(
+        "build",
+        help="build the FMUs (pythonfmu) and systems of a mechanism into build/out (the "
+        "standard one) or build/MOUNTING",
     )
-    b.add_argument("--preset", metavar="MOUNTING", help="mounting whose numbers (its bearing "
-                   "and lubricant) become BearingFriction's start values")  # fmt: skip
+    b.add_argument("names", nargs="*", help="FMUs to build (default: all five)")
+    b.add_argument(
+        "--out",
+        help="output directory (default: build/out for the standard mechanism, build/MOUNTING "
+        "for another)",
+    )
+    add_mechanism_options(
+        b,
+        "mounting whose numbers (its bearing, lubricant and coefficients) become "
+        "BearingFriction's start values and the systems' bindings (alias --preset)",
+    )
+    b.add_argument("--preset", dest="mounting", help=argparse.SUPPRESS)
     b.add_argument("--lubricant", help="lubricant of BearingFriction's start values")
     b.add_argument("--support-mounting", metavar="MOUNTING",
                    help="mounting of ActuatorStiffness's support pair (start values)")  # fmt: skip
@@ -620,9 +783,10 @@ def build_parser() -> argparse.ArgumentParser:
         help="list the catalogue (bearings, lubricants, materials, mountings) or print a "
         "preset's parameter set (and write it as .ssv)",
     )
-    k.add_argument("--catalog", action="append", default=[], metavar="FILE.toml",
-                   help="a user catalogue merged into the listing")  # fmt: skip
-    k.add_argument("--preset", metavar="MOUNTING", help="print this mounting's parameter set")
+    add_mechanism_options(
+        k, "print this mounting's parameter set, each value with its source (alias --preset)"
+    )
+    k.add_argument("--preset", dest="mounting", help=argparse.SUPPRESS)
     k.add_argument("--bearing", help="with the numbers of this catalogue bearing")
     k.add_argument("--lubricant", help="with this catalogue lubricant")
     k.add_argument("--ssv", metavar="FILE.ssv", help="write the preset as an SSP parameter set")
@@ -643,8 +807,10 @@ def build_parser() -> argparse.ArgumentParser:
         "--parameters",
         action="append",
         default=[],
-        metavar="NAME|comp.var=VALUE",
-        help="a parameter-set variant (variants/NAME.ssv) or one value; repeatable, in order",
+        metavar="NAME|FILE.ssv|comp.var=VALUE",
+        help="a parameter-set variant (variants/NAME.ssv), a parameter set file (.ssv: a "
+        "variant's comp.var names, or one component's bare names) or one value; repeatable, "
+        "in order",
     )
     r.add_argument(
         "--signal",
@@ -669,6 +835,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     r.add_argument("--plot", nargs="+", metavar="comp.var", help="plot these to results.png")
     r.add_argument("--out", help="output directory (default out/SYSTEM)")
+    add_mechanism_options(r)
     r.set_defaults(func=_run)
     s = sub.add_parser(
         "scenario", help="run a system-level scenario (the papers' experiments in co-simulation)"
@@ -676,6 +843,7 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("name", choices=SCENARIOS, help="which scenario")
     s.add_argument("--coarse", action="store_true", help="shorter runs (as the tests use)")
     s.add_argument("--out", help="directory for CSV and PNG files (default out/NAME)")
+    add_mechanism_options(s)
     s.set_defaults(func=_scenario)
     w = sub.add_parser(
         "sweep",
@@ -696,8 +864,12 @@ def build_parser() -> argparse.ArgumentParser:
     )
     w.add_argument("--samples", type=_count, default=100, help="random draws (default 100)")
     w.add_argument("--seed", type=int, default=0)
-    w.add_argument("--mounting", default="yu2017_gimbal", help="model: catalogue mounting")
-    w.add_argument("--lubrication", choices=("grease", "solid"), default="grease")
+    add_mechanism_options(w)
+    w.add_argument(
+        "--lubrication",
+        choices=("grease", "solid"),
+        help="model: the catalogue's default lubricant of this kind (default: the mounting's own)",
+    )
     w.add_argument("--set", action="append", default=[], metavar="NAME=VALUE", help="model")
     w.add_argument(
         "--record", action="append", default=[], help="outputs to report (system: required)"
@@ -719,7 +891,11 @@ def build_parser() -> argparse.ArgumentParser:
     )
     mc.add_argument("--samples", type=_count, default=500)
     mc.add_argument("--seed", type=int, default=1)
-    mc.add_argument("--mounting", default="yu2017_gimbal")
+    add_mechanism_options(
+        mc,
+        "the catalogue mounting whose tolerance bands ([tolerances.KEY]) are drawn (default: "
+        "the last catalogue's [defaults] mounting, else yu2017_gimbal)",
+    )
     mc.add_argument("--workers", type=_count)
     mc.add_argument("--scheduler")
     mc.add_argument("--out", help="directory (default out/montecarlo)")
@@ -774,13 +950,18 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument(
         "--bearing", help="bearing designation (default: the mounting's; 71803 without one)"
     )
-    c.add_argument(
-        "--mounting",
-        help="catalogue mounting the data were measured on (required when the bearing has "
-        "more than one, as the 71803: yu2017_gimbal, yu2017_gimbal_printed, …)",
+    add_mechanism_options(
+        c,
+        "catalogue mounting the data were measured on (default: the last catalogue's "
+        "[defaults] mounting; required when the bearing has more than one, as the 71803: "
+        "yu2017_gimbal, yu2017_gimbal_printed, …)",
     )
-    c.add_argument("--lubrication", choices=("grease", "solid"), default="grease")
-    c.add_argument("--lubricant", help="catalogue lubricant (default: the lubrication's)")
+    c.add_argument(
+        "--lubrication",
+        choices=("grease", "solid"),
+        help="the catalogue's default lubricant of this kind (default: the mounting's own)",
+    )
+    c.add_argument("--lubricant", help="catalogue lubricant (default: the mounting's own)")
     c.add_argument(
         "--set",
         action="append",
@@ -827,10 +1008,24 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _error_log() -> Path:
+    """The traceback of the exception being handled, in a new file only the user can read
+    (``mkstemp``: a fresh name, created exclusively, mode 0600); its path."""
+    import os
+    import tempfile
+    import traceback
+
+    fd, name = tempfile.mkstemp(prefix="servofmu-error-", suffix=".log")
+    with os.fdopen(fd, "w", encoding="utf-8") as fh:
+        fh.write(traceback.format_exc())
+    return Path(name)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Exit codes: 0 done, 1 a run failed (partial results kept), 2 bad input (data,
-    arguments, system description), 3 an internal error (traceback in a log file), 130
-    interrupted (Ctrl-C; a run stops at a step boundary and keeps its results)."""
+    arguments, system description), 3 an internal error (traceback in a private log file),
+    130 interrupted by Ctrl-C and 143 by SIGTERM (a run stops at a step boundary and keeps its
+    results either way)."""
     from .harness.errors import (
         ArgumentError,
         HarnessError,
@@ -838,8 +1033,10 @@ def main(argv: list[str] | None = None) -> int:
         MissingExtra,
         SystemError_,
     )
+    from .harness.interrupt import received, terminate_as_interrupt
 
     args = build_parser().parse_args(argv)
+    terminate_as_interrupt()  # SIGTERM keeps the results so far, as Ctrl-C does
     try:
         return args.func(args)
     except (SystemError_, ArgumentError) as exc:  # bad input, found before any run
@@ -847,10 +1044,10 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     except Interrupted as exc:
         print(f"servofmu: {exc}", file=sys.stderr)
-        return 130
+        return 128 + exc.signum
     except KeyboardInterrupt as exc:
         print(f"servofmu: interrupted{f'; {exc}' if str(exc) else ''}", file=sys.stderr)
-        return 130
+        return 128 + received()
     except HarnessError as exc:
         print(f"servofmu: run failed: {exc}", file=sys.stderr)
         return 1
@@ -860,11 +1057,7 @@ def main(argv: list[str] | None = None) -> int:
     except Exception as exc:
         if args.debug:
             raise
-        import tempfile
-        import traceback
-
-        log = Path(tempfile.gettempdir()) / "servofmu-error.log"
-        log.write_text(traceback.format_exc())
+        log = _error_log()
         print(
             f"servofmu: internal error: {type(exc).__name__}: {exc} (traceback in {log}; "
             "run again with --debug to see it here)",

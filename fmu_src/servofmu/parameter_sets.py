@@ -60,16 +60,10 @@ def write_ssv(
     for spec in specs:
         if only is not None and spec.name not in only:
             continue
-        value = parameters[spec.name]
         attrs = {"name": f"{component}.{spec.name}" if component else spec.name}
-        if spec.choices:  # an item number (every engine applies ssv:Integer), its name beside
-            item = spec.item(value)
-            attrs["description"] = spec.choices[item - 1].name
-            kind, text = "Integer", str(item)
-        elif spec.type == "Integer":
-            kind, text = "Integer", str(int(value))
-        else:
-            kind, text = "Real", repr(float(value))
+        kind, text, description = ssv_value(spec, parameters[spec.name])
+        if description is not None:
+            attrs["description"] = description
         elem = SubElement(params, f"{{{SSV_NS}}}Parameter", attrs)
         SubElement(elem, f"{{{SSV_NS}}}{kind}", {"value": text})
     for key, value in (extra or {}).items():
@@ -84,3 +78,35 @@ def write_ssv(
     body = tostring(root, encoding="unicode")
     path.write_text(f'<?xml version="1.0" encoding="UTF-8"?>\n{body}\n', encoding="utf-8")
     return path
+
+
+def ssv_value(spec, value) -> tuple[str, str, str | None]:
+    """How parameter ``spec`` with ``value`` (SI; a choice as its key) is written in an .ssv:
+    (element, value text, description). A choice is its item number as ``ssv:Integer`` with
+    the item name as description (every engine applies an Integer), a count an Integer, a
+    number a Real (``repr``: exact).
+
+    Parameters
+    ----------
+    spec : ParameterSpec
+        The parameter (name, type, choices).
+    value : float, int or str
+        Its value (a choice: the item's key).
+
+    Returns
+    -------
+    tuple
+        ``("Real" | "Integer", text, description or None)``.
+
+    Examples
+    --------
+    >>> from servofmu.physics.bearing_parameters import parameter
+    >>> ssv_value(parameter("lubrication"), "solid"), ssv_value(parameter("bore"), 0.017)
+    (('Integer', '2', 'solid'), ('Real', '0.017', None))
+    """
+    if spec.choices:  # an item number (every engine applies ssv:Integer), its name beside
+        item = spec.item(value)
+        return "Integer", str(item), spec.choices[item - 1].name
+    if spec.type == "Integer":
+        return "Integer", str(int(value)), None
+    return "Real", repr(float(value)), None

@@ -25,8 +25,49 @@ SCENARIOS = (
 )
 
 
-def run(name: str, out_dir, fmu_dir=None, coarse: bool = False):
-    """Run scenario ``name``; returns its :class:`~.common.ScenarioResult`."""
+#: The scenarios that run any mechanism's gimbal rigs (``--catalog``, ``--mounting``); the
+#: others reproduce a paper's own rig (Liu's actuator, Ning's space bearing).
+MECHANISM_SCENARIOS = ("friction_vs_temperature", "low_speed_tracking", "chamber_transient")
+
+
+def check_mechanism(name: str, mechanism) -> None:
+    """ValueError when scenario ``name`` cannot run ``mechanism`` (a scenario of a paper's own
+    rig asked for another mechanism), or is no scenario.
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> check_mechanism("friction_vs_temperature", None)
+    >>> try:
+    ...     check_mechanism("friction_vs_temprature", None)
+    ... except ValueError as exc:
+    ...     print(str(exc).split("] ")[-1])
+    (did you mean 'friction_vs_temperature'?)
+    """
+    from servofmu.physics._checks import suggest
+
     if name not in SCENARIOS:
-        raise ValueError(f"scenario = {name!r} is not one of {list(SCENARIOS)}")
-    return importlib.import_module(f"{__name__}.{name}").run(out_dir, fmu_dir, coarse)
+        raise ValueError(
+            f"scenario = {name!r} is not one of {list(SCENARIOS)}{suggest(name, SCENARIOS)}"
+        )
+    if mechanism is not None and not mechanism.standard and name not in MECHANISM_SCENARIOS:
+        raise ValueError(
+            f"scenario {name} reproduces its paper's own rig and runs the standard mechanism "
+            f"only, not {mechanism.key}; the scenarios of any mechanism are "
+            f"{list(MECHANISM_SCENARIOS)}"
+        )
+
+
+def run(name: str, out_dir, fmu_dir=None, coarse: bool = False, mechanism=None):
+    """Run scenario ``name`` on ``mechanism`` (:class:`servofmu.build.mechanism.Mechanism`,
+    its catalogues loaded; default: the standard one), its FMUs and systems from ``fmu_dir``
+    (default: the mechanism's build folder, built when missing or stale); returns its
+    :class:`~.common.ScenarioResult`."""
+    check_mechanism(name, mechanism)
+    module = importlib.import_module(f"{__name__}.{name}")
+    if name in MECHANISM_SCENARIOS:
+        return module.run(out_dir, fmu_dir, coarse, mechanism=mechanism)
+    return module.run(out_dir, fmu_dir, coarse)

@@ -31,6 +31,7 @@ in vacuum at 10 K/min.
 
 from __future__ import annotations
 
+import textwrap
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -41,7 +42,7 @@ from servofmu.physics.units import DEG, NMM, ZERO_CELSIUS
 from .. import load_system
 from .. import run as run_system
 from ..signals import PiecewiseLinear
-from .common import ScenarioResult, system_path
+from .common import ScenarioResult, mechanism_notes, system_path
 
 YU, NING = "seeker_gimbal_chamber", "space_bearing_vacuum"
 YU_RANGE_C = (-40.0, 60.0)  # °C, Yu's chamber range
@@ -289,11 +290,17 @@ def cycle_changes(rows: list[dict]) -> tuple[float, float]:
 
 
 # ---------------------------------------------------------------------------- the scenario
-def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
+def run(out_dir, fmu_dir=None, coarse: bool = False, mechanism=None) -> ScenarioResult:
+    """The scenario on ``mechanism`` (default: the standard one): the chamber profiles on its
+    ``seeker_gimbal_chamber`` system (the ThermalNetwork of its parts); Ning's cycles on his
+    space bearing for the standard mechanism only."""
     out = Path(out_dir)
+    standard = mechanism is None or mechanism.standard
+    label = "Yu gimbal in air" if standard else f"{mechanism.key} in air"
+    runs = [(YU, yu_profiles(coarse))] + ([(NING, ning_profiles(coarse))] if standard else [])
     traces: dict[str, tuple[Profile, Trace]] = {}
-    for name, profiles in ((YU, yu_profiles(coarse)), (NING, ning_profiles(coarse))):
-        system = load_system(system_path(name, fmu_dir))
+    for name, profiles in runs:
+        system = load_system(system_path(name, fmu_dir, mechanism))
         try:
             for profile in profiles:
                 traces[profile.key] = (profile, simulate(system, profile, out))
@@ -302,24 +309,32 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
     rows, changes = [], {}
     for profile, tr in traces.values():
         if profile.system == YU:
-            rows.append(yu_row(profile, tr))
+            rows.append(yu_row(profile, tr) | {"system": label})
         else:
             cycles = ning_rows(profile, tr)
             rows += cycles
             changes[profile.label] = cycle_changes(cycles)
+    notes = _notes(coarse)
+    if not standard:
+        from servofmu.build.mechanism import thermal_notes
+
+        notes = [*mechanism_notes(mechanism), *thermal_notes(mechanism), *notes]
     result = ScenarioResult(
         "chamber_transient",
         "Thermal transients in a chamber: part temperatures (ThermalNetwork) → bearing, against "
-        "the quasi-static curve (every part at the chamber temperature)",
+        "the quasi-static curve (every part at the chamber temperature)"
+        + ("" if standard else f"; mechanism {mechanism.key}"),
         list(rows[0]),
         rows,
         summary=_summary(traces, changes),
-        notes=_notes(coarse),
+        notes=notes,
     )
     result.write_table(out / "chamber_transient.csv")
     for profile, tr in traces.values():
         result.files.append(write_trace(out / f"{profile.key}.csv", tr))
-    result.files.append(plot(traces, out / "chamber_transient.png"))
+    result.files.append(
+        plot(traces, out / "chamber_transient.png", "" if standard else mechanism.key)
+    )
     return result
 
 
@@ -328,7 +343,8 @@ def _summary(traces, changes) -> dict:
     for label, (drop, rise) in changes.items():
         summary[f"Ning {label}: drop of the maximum torque, cycle 1 → 2 [N.mm]"] = drop
         summary[f"Ning {label}: rise of the minimum torque, cycle 1 → 2 [N.mm]"] = rise
-    summary["Ning measured: drop / rise [N.mm]"] = "{:g} / {:g}".format(*NING_CHANGES)
+    if changes:
+        summary["Ning measured: drop / rise [N.mm]"] = "{:g} / {:g}".format(*NING_CHANGES)
     settled = [
         float(np.max(np.abs(tr.speed[tr.t >= SOAK] / tr.reference - 1.0)))
         for _, tr in traces.values()
@@ -388,9 +404,9 @@ def write_trace(path: Path, tr: Trace) -> Path:
     return path
 
 
-def plot(traces, path: Path) -> Path:
+def plot(traces, path: Path, name: str = "") -> Path:
     """Part temperatures, preload and torque against time, transient and quasi-static: Yu
-    heating, Yu cooling, Ning (columns)."""
+    heating, Yu cooling, Ning (columns); ``name``: the mechanism in Yu's profiles instead."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -401,18 +417,22 @@ def plot(traces, path: Path) -> Path:
         "Yu gimbal: cooling +60 → −40 °C": [v for v in traces.values() if "cooling" in v[0].key],
         "Ning bearing: cycles −60…+80 °C": [v for v in traces.values() if v[0].system == NING],
     }
-    fig, axes = plt.subplots(3, 3, figsize=(14, 10), dpi=100, sharex="col", squeeze=False)
+    if name:  # another mechanism in Yu's chamber profiles; no Ning runs
+        groups = {title.replace("Yu gimbal", name): runs for title, runs in groups.items() if runs}
+    fig, axes = plt.subplots(
+        3, len(groups), figsize=(14 * len(groups) / 3, 10), dpi=100, sharex="col", squeeze=False
+    )
     for col, (title, runs) in enumerate(groups.items()):
         _plot_temperatures(axes[0, col], runs)
         _plot_pair(axes[1, col], runs, "preload", 1.0, "preload [N]")
         _plot_pair(axes[2, col], runs, "torque", 1.0 / NMM, "friction torque [N·mm]")
         axes[0, col].set_title(title, fontsize=10)
         axes[2, col].set_xlabel("time from the chamber's start [min]")
-    fig.suptitle(
+    title = (
         "Chamber transients: solid = part temperatures through the ThermalNetwork, "
-        "dashed = quasi-static (every part at the chamber temperature)",
-        fontsize=10,
+        "dashed = quasi-static (every part at the chamber temperature)"
     )
+    fig.suptitle(textwrap.fill(title, 60 * len(groups)), fontsize=10)
     fig.tight_layout()
     fig.savefig(path)
     plt.close(fig)

@@ -78,12 +78,37 @@ class ScenarioResult:
         return path
 
 
-def system_path(name: str, fmu_dir=None) -> Path:
-    """The built ``.ssp`` of system ``name`` (building FMUs and systems if they are stale)."""
-    from servofmu.build.fmu import DEFAULT_OUT, ensure_built
+def system_path(name: str, fmu_dir=None, mechanism=None) -> Path:
+    """The built ``.ssp`` of system ``name`` of ``mechanism`` (default: the standard one) in
+    ``fmu_dir`` (default: the mechanism's build folder), building FMUs and systems there if
+    they are missing or stale."""
+    from servofmu.build.fmu import ensure_built
 
-    out = ensure_built(Path(fmu_dir) if fmu_dir else DEFAULT_OUT)
+    out = ensure_built(Path(fmu_dir) if fmu_dir else None, mechanism)
     return out / f"{name}.ssp"
+
+
+def mechanism_notes(mechanism) -> list[str]:
+    """What a scenario's mechanism is (its mounting and friction coefficients), as notes.
+
+    Returns
+    -------
+    list of str
+
+    Examples
+    --------
+    >>> mechanism_notes(None)[1].split(":")[:2]
+    ['friction coefficients', ' Yu-calibrated']
+    """
+    if mechanism is None:
+        from servofmu.build.catalogs import Defaults
+        from servofmu.build.mechanism import resolve
+
+        mechanism = resolve(Defaults())
+    return [
+        f"mechanism: {mechanism.describe()}",
+        f"friction coefficients: {mechanism.coefficients.label}",
+    ]
 
 
 def plateau_mean(time: np.ndarray, values: np.ndarray, t0: float, t1: float, tail: float = 0.3):

@@ -23,7 +23,7 @@ from servofmu.physics.units import DEG, NMM, celsius_to_kelvin
 from .. import load_system
 from .. import run as run_system
 from ..signals import Steps
-from .common import ScenarioResult, Table, plateau_mean, system_path
+from .common import ScenarioResult, Table, mechanism_notes, plateau_mean, system_path
 
 TEMPS_C = (-40.0, -20.0, 0.0, 20.0, 40.0, 60.0)  # Yu §3 chamber temperatures
 SPEED = 10.0 * DEG  # rad/s, the assumed test speed of the Yu reproduction
@@ -32,8 +32,9 @@ SPEED = 10.0 * DEG  # rad/s, the assumed test speed of the Yu reproduction
 FLAGS = ("overloaded", "locked", "unloaded", "outside_lubricant_range")
 #: The gimbal's mounting variants (ssp/seeker_gimbal/variants: each a catalogue preset bound in
 #: full), after the system's own default, the yoke: what the design choice of the frame does.
+DEFAULT_LABEL = "yoke (default)"
 MOUNTINGS = {
-    "yoke (default)": None,
+    DEFAULT_LABEL: None,
     "rigid tube (Yu's stated data)": "rigid",
     "rigid, eq 14 as printed": "printed",
     "spring preload": "spring",
@@ -53,56 +54,96 @@ FRICTION_MODELS = {
 GREASE_VARIANT = "grease_g1074"
 
 
-def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
+def run(out_dir, fmu_dir=None, coarse: bool = False, mechanism=None) -> ScenarioResult:
+    """The scenario on ``mechanism`` (default: the standard one, Yu's gimbal): its
+    ``seeker_gimbal`` system. Yu's own figures (his −40 °C torque, the variants of his
+    mounting) appear only for Yu's mechanisms."""
     out = Path(out_dir)
     plateau = 1.0 if coarse else 2.0  # s per temperature: forward half, reverse half
-    system = load_system(system_path("seeker_gimbal", fmu_dir))
+    yu = mechanism is None or mechanism.yu
+    system = load_system(system_path("seeker_gimbal", fmu_dir, mechanism))
     try:
         kt = system.components["motor"].parameters["torque_constant"][1]
+        variants = {k: v for k, v in MOUNTINGS.items() if v is None or v in system.variants}
         runs = {
             label: _electrical_method(system, variant, plateau, out if variant is None else None)
-            for label, variant in MOUNTINGS.items()
+            for label, variant in variants.items()
         }
-        models = _model_table(system, kt, plateau)
+        grease = GREASE_VARIANT in system.variants
+        models = _model_table(system, kt, plateau, yu, grease)
     finally:
         system.close()
-    res = runs["yoke (default)"]
+    res = runs[DEFAULT_LABEL]
     rows = _rows(res, kt, plateau)
+    standard = mechanism is None or mechanism.standard
+    what = "the seeker gimbal" if standard else f"mechanism {mechanism.key}"
     result = ScenarioResult(
         "friction_vs_temperature",
-        "Friction torque of the seeker gimbal by the electrical method (Yu 2017 §3), "
-        f"speed loop at ±{SPEED / DEG:g} °/s",
+        f"Friction torque of {what} by the electrical method (Yu 2017 §3), speed loop at "
+        f"±{SPEED / DEG:g} °/s",
         list(rows[0]),
         rows,
-        summary={"largest |difference| [%]": max(abs(r["difference [%]"]) for r in rows)},
+        summary={
+            "largest |difference| [%]": max(abs(r["difference [%]"]) for r in rows),
+            **({} if standard else {"friction coefficients": mechanism.coefficients.kind}),
+        },
         files=[res.csv],
         notes=[
+            *mechanism_notes(mechanism),
             "measured: k_t·i of the DCMotor at steady state; model: BearingFriction running "
             "torque. The model is symmetric in the direction; Yu's measured forward/reverse "
             "difference (grease redistribution) is not modelled.",
+        ],
+        tables=[models],
+    )
+    if len(runs) > 1:
+        result.tables.insert(0, _mounting_table(runs, kt, plateau, yu))
+        result.notes.append(
             f"mountings: the same run with each variant of the system; Yu's {YU_M40} N·mm "
             "at −40 °C is his measurement (Fig 9) and his model's total (Fig 8). The default "
             "yoke's arm section was chosen knowing it (s0 and μ are calibrated in it): its "
             "−40 °C value is consistent with Yu, not a prediction; the other mountings use the "
-            "same coefficients.",
-        ],
-        tables=[_mounting_table(runs, kt, plateau), models],
-    )
-    result.notes.append(
-        "friction models: the default yoke at −40 °C and +10 °/s, BearingFriction's "
-        "friction_model set in the system, without and with the grease term of Molykote "
-        f"G-1074 (variant {GREASE_VARIANT}: f0 and ks calibrated on its JIS K 2220 −40 °C "
-        "datasheet point on a full 6204, carried to the 71803 by Palmgren's dm³ and the base "
-        "oil's ν(T); as if the gimbal were packed full of it). Calibrated: "
-        + "; ".join(f"{m}: {what}" for m, what in FRICTION_MODELS.items())
-    )
+            "same coefficients."
+        )
+    result.notes.append(_models_note(yu, grease, mechanism))
     result.write_table(out / "friction_vs_temperature.csv")
-    result.write_table(out / "mountings.csv", result.tables[0])
-    result.write_table(out / "friction_models.csv", result.tables[1])
-    result.files.append(
-        _plot(rows, result.tables[0], result.tables[1], out / "friction_vs_temperature.png")
-    )
+    mountings = result.tables[0] if len(runs) > 1 else None
+    if mountings is not None:
+        result.write_table(out / "mountings.csv", mountings)
+    result.write_table(out / "friction_models.csv", models)
+    kind = "" if mechanism is None else mechanism.coefficients.kind
+    png = _plot(rows, mountings, models, out / "friction_vs_temperature.png", what, yu, kind)
+    result.files.append(png)
     return result
+
+
+def _models_note(yu: bool, grease: bool, mechanism) -> str:
+    """What the friction-model table is, and what in each model was calibrated."""
+    where = "the default yoke" if yu else "the mechanism"
+    text = (
+        f"friction models: {where} at −40 °C and +10 °/s, BearingFriction's friction_model set "
+        "in the system"
+    )
+    if grease:
+        text += (
+            f", without and with the grease term of Molykote G-1074 (variant {GREASE_VARIANT}: "
+            "f0 and ks calibrated on its JIS K 2220 −40 °C datasheet point on a full 6204, "
+            "carried to the bearing by Palmgren's dm³ and the base oil's ν(T); as if the "
+            "bearing were packed full of it)"
+        )
+    if yu:
+        return (
+            text
+            + ". Calibrated: "
+            + "; ".join(f"{m}: {what}" for m, what in FRICTION_MODELS.items())
+        )
+    coefficients = mechanism.coefficients.label if mechanism is not None else ""
+    return text + (
+        f". yu2017 and the hysteresis and spin of ehl_per_contact take the mechanism's "
+        f"coefficients ({coefficients}); skf2004 and the EHL rolling torque take literature "
+        "constants (SKF's series constants, or the labelled fallback; μbl 0.15): predictions, "
+        "not calibrations."
+    )
 
 
 def _electrical_method(system, variant, plateau, out):
@@ -132,13 +173,14 @@ def _electrical_method(system, variant, plateau, out):
 _MODEL_OUTPUTS = ("running_torque", "breakaway_torque", "viscous_torque", "grease_torque")
 
 
-def _model_table(system, kt, plateau) -> Table:
-    """Each friction model at −40 °C, forward at +10 °/s, without and with the grease term:
-    k_t·i and BearingFriction's running, breakaway, viscous and grease torques at steady
-    state (one run of half a plateau each)."""
+def _model_table(system, kt, plateau, yu: bool = True, with_grease: bool = True) -> Table:
+    """Each friction model at −40 °C, forward at +10 °/s, without and (when the system has
+    the variant) with the grease term: k_t·i and BearingFriction's running, breakaway,
+    viscous and grease torques at steady state (one run of half a plateau each); Yu's −40 °C
+    torque beside them for Yu's gimbal."""
     cold = celsius_to_kelvin(TEMPS_C[0])
     rows = []
-    for grease in (False, True):
+    for grease in (False, True) if with_grease else (False,):
         for model in FRICTION_MODELS:
             variant = [GREASE_VARIANT] if grease else []
             res = run_system(
@@ -165,15 +207,18 @@ def _model_table(system, kt, plateau) -> Table:
                     "breakaway [N.mm]": mean("bearing.breakaway_torque"),
                     "viscous/rolling [N.mm]": mean("bearing.viscous_torque"),
                     "grease [N.mm]": mean("bearing.grease_torque"),
-                    "Yu 2017 [N.mm]": YU_M40,
+                    **({"Yu 2017 [N.mm]": YU_M40} if yu else {}),
                 }
             )
-    return Table(
-        f"Friction models at {TEMPS_C[0]:g} °C (default yoke, +{SPEED / DEG:g} °/s) next to Yu "
-        f"2017's {YU_M40} N·mm; grease term: Molykote G-1074 calibrated on its datasheet",
-        list(rows[0]),
-        rows,
-    )
+    title = f"Friction models at {TEMPS_C[0]:g} °C (+{SPEED / DEG:g} °/s)"
+    if yu:
+        title = (
+            f"Friction models at {TEMPS_C[0]:g} °C (default yoke, +{SPEED / DEG:g} °/s) next to "
+            f"Yu 2017's {YU_M40} N·mm"
+        )
+    if with_grease:
+        title += "; grease term: Molykote G-1074 calibrated on its datasheet"
+    return Table(title, list(rows[0]), rows)
 
 
 def _plateaus(plateau):
@@ -209,7 +254,7 @@ def _rows(res, kt, plateau) -> list[dict]:
     return rows
 
 
-def _mounting_table(runs, kt, plateau) -> Table:
+def _mounting_table(runs, kt, plateau, yu: bool = True) -> Table:
     """Torque (k_t·i, forward), preload and state of every mounting at every temperature."""
     rows = []
     for label, res in runs.items():
@@ -224,7 +269,11 @@ def _mounting_table(runs, kt, plateau) -> Table:
                     "k_t*i [N.mm]": r["measured k_t*i [N.mm]"],
                     "preload [N]": r["preload [N]"],
                     "state": "+".join(state) or "preloaded",
-                    "Yu 2017 [N.mm]": YU_M40 if r["temperature [degC]"] == -40.0 else "",
+                    **(
+                        {"Yu 2017 [N.mm]": YU_M40 if r["temperature [degC]"] == -40.0 else ""}
+                        if yu
+                        else {}
+                    ),
                 }
             )
     return Table(
@@ -235,7 +284,8 @@ def _mounting_table(runs, kt, plateau) -> Table:
     )
 
 
-def _plot(rows, mountings: Table, models: Table, path: Path) -> Path:
+def _plot(rows, mountings: Table | None, models: Table, path: Path, what: str = "",
+          yu: bool = True, coefficients: str = "") -> Path:  # fmt: skip
     import matplotlib
 
     matplotlib.use("Agg")
@@ -256,9 +306,10 @@ def _plot(rows, mountings: Table, models: Table, path: Path) -> Path:
         [r["temperature [degC]"] for r in fwd],
         [r["model [N.mm]"] for r in fwd],
         "k-",
-        label="bearing model (yoke, default)",
+        label="bearing model (yoke, default)" if mountings is not None else "bearing model",
     )
-    for label, style in zip(list(MOUNTINGS)[1:], (":", "-.", "--"), strict=True):
+    labels = list(dict.fromkeys(r["mounting"] for r in mountings.rows)) if mountings else []
+    for label, style in zip(labels[1:], (":", "-.", "--"), strict=False):
         sel = [r for r in mountings.rows if r["mounting"] == label]
         ax.semilogy(
             [r["temperature [degC]"] for r in sel],
@@ -267,14 +318,15 @@ def _plot(rows, mountings: Table, models: Table, path: Path) -> Path:
             lw=1.2,
             label=f"k_t·i, {label}",
         )
-    ax.plot([-40.0], [YU_M40], "r*", ms=10, label=f"Yu 2017: {YU_M40} N·mm at −40 °C")
-    for r, marker in zip(models.rows, ("x", "+", "1", "x", "+", "1"), strict=True):
+    if yu:
+        ax.plot([-40.0], [YU_M40], "r*", ms=10, label=f"Yu 2017: {YU_M40} N·mm at −40 °C")
+    for r, marker in zip(models.rows, ("x", "+", "1", "x", "+", "1"), strict=False):
         if r["friction model"] == "yu2017" and r["grease term"] == "none":
             continue  # the default model: the black line
         grease = ", G-1074 grease" if r["grease term"] != "none" else ""
         ax.plot(
             [-40.0], [r["k_t*i [N.mm]"]], marker, ms=9, mew=1.5,
-            label=f"k_t·i, {r['friction model']}{grease} (yoke)",
+            label=f"k_t·i, {r['friction model']}{grease}" + (" (yoke)" if mountings else ""),
         )  # fmt: skip
     from matplotlib.ticker import FormatStrFormatter, FuncFormatter
 
@@ -286,8 +338,13 @@ def _plot(rows, mountings: Table, models: Table, path: Path) -> Path:
     ax.set_xlabel("chamber temperature [°C]")
     ax.set_ylabel("friction torque [N·mm]")
     ax.set_title(
-        "Seeker gimbal: electrical method in the co-simulation, four mountings; friction "
-        "models at −40 °C",
+        (
+            "Seeker gimbal: electrical method in the co-simulation, four mountings; friction "
+            "models at −40 °C"
+        )
+        if mountings is not None
+        else f"{what[0].upper()}{what[1:]}: electrical method in the co-simulation; friction "
+        f"models at −40 °C\n(friction coefficients: {coefficients})",
         fontsize=10,
     )
     ax.grid(True, alpha=0.3)

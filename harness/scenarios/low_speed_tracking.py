@@ -28,7 +28,7 @@ import numpy as np
 from .. import load_system
 from .. import run as run_system
 from ..signals import Cycle
-from .common import ScenarioResult, system_path
+from .common import ScenarioResult, mechanism_notes, system_path
 
 AMPLITUDE = 0.01  # rad
 PERIOD = 5.0  # s (0.2 Hz)
@@ -64,10 +64,12 @@ def tracking_metrics(time, reference, angle, speed, period: float = PERIOD) -> d
     }
 
 
-def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
+def run(out_dir, fmu_dir=None, coarse: bool = False, mechanism=None) -> ScenarioResult:
+    """The scenario on ``mechanism`` (default: the standard one): its
+    ``seeker_gimbal_position`` system."""
     out = Path(out_dir)
     stop = PERIOD if coarse else 2.0 * PERIOD
-    system = load_system(system_path("seeker_gimbal_position", fmu_dir))
+    system = load_system(system_path("seeker_gimbal_position", fmu_dir, mechanism))
     reference = Cycle(-AMPLITUDE, AMPLITUDE, PERIOD, "sine")
     rows, files, traces = [], [], {}
     try:
@@ -117,9 +119,11 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
             summary[f"{label}: rms error at {h:g} ms vs 1 ms [%]"] = 100.0 * (
                 by[(label, h)]["rms error [mrad]"] / ref - 1.0
             )
+    standard = mechanism is None or mechanism.standard
     result = ScenarioResult(
         "low_speed_tracking",
-        f"Seeker gimbal, sine position reference ±{AMPLITUDE * 1e3:g} mrad at "
+        f"{'Seeker gimbal' if standard else f'Mechanism {mechanism.key} (position loop)'}, "
+        f"sine position reference ±{AMPLITUDE * 1e3:g} mrad at "
         f"{1 / PERIOD:g} Hz: friction dead zone at 20 °C and −40 °C, communication step "
         "0.5/1/2 ms",
         list(rows[0]),
@@ -127,6 +131,7 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
         summary=summary,
         files=files,
         notes=[
+            *mechanism_notes(mechanism),
             "stick-slip transitions: one at the start plus one per reference reversal is clean "
             "tracking; more means hunting (stick-slip) between reversals. speed reversals equal "
             "to the reference reversals mean no chatter.",

@@ -6,12 +6,15 @@ Two properties per FMU:
 
 - **calls**: a random sequence of FMI calls, legal and illegal (get before initialization,
   steps before or after an error, zero, negative and non-finite step sizes, reset anywhere,
-  state get/set/serialise anywhere), with random values for the inputs and the parameters
-  (NaN, ±inf, huge and tiny magnitudes, negative temperatures, junk strings). Every call must
-  return a valid FMI status and never fmi2Fatal; a step that returns fmi2OK leaves every Real
-  output finite (+inf only where the variable's description documents it, e.g. the stiffness
-  of absent support bearings); a refused step logs a message naming a variable and its value,
-  the badly set one when only bad values were set.
+  state get/set/serialise anywhere, unknown and wrong-typed value references for every
+  fmi2Get*/fmi2Set*, bytes that are not a state of the FMU), with random values for the
+  inputs and the parameters (NaN, ±inf, huge and tiny magnitudes, negative temperatures, junk
+  strings). Every call must return a valid FMI status and never fmi2Fatal; an unknown or
+  wrong-typed value reference and corrupt bytes get fmi2Error with an error message (the
+  servofmu export); a step that returns fmi2OK leaves every Real output finite (+inf only
+  where the variable's description documents it, e.g. the stiffness of absent support
+  bearings); a refused step logs a message naming a variable and its value (the badly set
+  one when only bad values were set), the step's arguments, or the state that forbids it.
 - **state**: random inputs and steps, the state saved at a random point, serialised to bytes
   and restored in the same and in a fresh instance: the continuations are bit-identical.
 
@@ -21,6 +24,7 @@ Usage: ``python tests/robustness/fmi_fuzz.py FMU_DIR [--examples N] [--fmu NAME 
 from __future__ import annotations
 
 import argparse
+import json
 import math
 import re
 import sys
@@ -137,25 +141,43 @@ def _int_range(v):
     return None, None
 
 
+#: FMI types a host may name, and the method names of fmpy's FMU2Slave
+KINDS = ("Real", "Integer", "Boolean", "String")
+CORRUPT = ("junk", "truncated", "another FMU", "extra field", "wrong type")
+
+
 def operations(fmu: Target):
     """One FMI call: a set (any settable variable, a value mostly in range), a step (mostly
-    a usual size), an output read, or one of the rarer calls."""
-    sets = st.sampled_from(fmu.settable).flatmap(
-        lambda v: st.tuples(st.just("set"), st.just(v.name), _value(v))
-    )
+    a usual size), an output read, a value reference that is unknown or of another type, a
+    corrupt state, or one of the rarer calls."""
+
+    def sets(variables):
+        return st.sampled_from(variables).flatmap(
+            lambda v: st.tuples(st.just("set"), st.just(v.name), _value(v))
+        )
+
+    inputs = [v for v in fmu.settable if v.causality == "input"]
     usual = st.sampled_from((1e-4, 1e-3, 1e-2))
-    return st.one_of(
-        sets,
-        st.tuples(st.just("step"), st.one_of(usual, usual, st.sampled_from(STEPS))),
-        st.just(("get",)),
+    step = st.tuples(st.just("step"), st.one_of(usual, usual, st.sampled_from(STEPS)))
+    wrong = st.tuples(
+        st.just("wrong"),
+        st.sampled_from(("get", "set")),
+        st.sampled_from(KINDS),
+        st.one_of(
+            st.sampled_from(sorted(v.valueReference for v in fmu.vars.values())),
+            st.integers(len(fmu.vars), 2**32 - 1),  # unknown
+        ),
+    )
+    rare = st.one_of(
+        wrong,
+        st.tuples(st.just("corrupt"), st.sampled_from(CORRUPT)),
         st.sampled_from(
             [
                 ("setup",),
                 ("enter",),
                 ("exit",),
-                ("get",),
-                ("get",),
                 ("reset",),
+                ("restart",),
                 ("terminate",),
                 ("get_state",),
                 ("set_state",),
@@ -163,6 +185,10 @@ def operations(fmu: Target):
             ]
         ),
     )
+    # inputs and steps most often, and a restart after a mistake (the error state allows little
+    # else: FMI 2.0), so that sequences reach deep states between the mistakes
+    return st.one_of(sets(inputs), sets(inputs), sets(fmu.settable), step, step, step,
+                     st.just(("get",)), st.just(("restart",)), rare, rare)  # fmt: skip
 
 
 def bad(v, value) -> bool:
@@ -178,11 +204,67 @@ def bad(v, value) -> bool:
     return (v.min is not None and x < float(v.min)) or (v.max is not None and x > float(v.max))
 
 
-def run_calls(fmu: Target, ops, stats: Counter) -> None:
+def _fmi_type(v) -> str:
+    return "Integer" if v.type == "Enumeration" else v.type
+
+
+def _wrong_reference(fmu: Target, inst: Instance, op) -> int:
+    """A get or set through a value reference that is unknown or of another FMI type than
+    the call's: fmi2Error with an error message; 0 when the reference fits (a legal call)."""
+    _, direction, kind, vr = op
+    var = next((v for v in fmu.vars.values() if v.valueReference == vr), None)
+    if var is not None and _fmi_type(var) == kind:
+        return 0  # not a mistake: the property is about the others
+    n_log = len(inst.log)
+    if direction == "get":
+        status, _ = inst.call(f"get{kind}", [vr])
+    else:
+        value = {"Real": 1.0, "Integer": 1, "Boolean": True, "String": "x"}[kind]
+        status, _ = inst.call(f"set{kind}", [vr], [value])
+    assert status == 3, f"{op}: status {status}, not fmi2Error"
+    assert any(s == 3 for s, _ in inst.log[n_log:]), f"{op}: fmi2Error without an error message"
+    return status
+
+
+def _corrupt_bytes(inst: Instance, what: str) -> bytes:
+    """Bytes that are not a state of the FMU."""
+    if what == "junk":
+        return b"\x00\xff not a state"
+    state = inst.slave.getFMUstate()
+    data = bytes(inst.slave.serializeFMUstate(state))
+    inst.slave.freeFMUstate(state)
+    if what == "truncated":
+        return data[: len(data) // 2]
+    record = json.loads(data)
+    if what == "another FMU":
+        record["fmu"] = "NotThisOne"
+    elif what == "extra field":
+        record["values"]["do_step"] = 1.0
+    else:
+        record["values"] = {k: [v] for k, v in record["values"].items()}
+    return json.dumps(record).encode()
+
+
+def _initialise(inst: Instance) -> int:
+    """fmi2SetupExperiment(0), fmi2EnterInitializationMode, fmi2ExitInitializationMode: the
+    highest status."""
+    status = 0
+    for call, args in (("setupExperiment", (None, 0.0)), ("enterInitializationMode", ()),
+                       ("exitInitializationMode", ())):  # fmt: skip
+        status = max(status, inst.call(call, *args)[0])
+    return status
+
+
+def run_calls(fmu: Target, ops, stats: Counter, initialised: bool = False) -> None:
+    """The ``ops`` on a new instance, initialised first when ``initialised`` (a host that
+    starts right, then errs), else from instantiated."""
     inst = Instance(fmu)
     time = 0.0
+    if initialised:
+        assert _initialise(inst) == 0, inst.log
     recently_bad: dict[str, float] = {}  # names set to a bad value since the last good step
     recently_set: set[str] = set()  # every name set since the last good step
+    saved_at: list[float] = []  # the time of each state in inst.states
     try:
         for op in ops:
             kind = op[0]
@@ -219,12 +301,25 @@ def run_calls(fmu: Target, ops, stats: Counter) -> None:
                     new = " ".join(m for _, m in inst.log[n_log:])
                     names = [*fmu.vars, "communicationStepSize", "currentCommunicationPoint"]
                     named = [n for n in names if re.search(rf"\b{re.escape(n)} = \S", new)]
-                    assert named, f"step refused with a log that names no variable: {new!r}"
-                    good_step = math.isfinite(op[1]) and op[1] >= 0
-                    if good_step and recently_bad and not recently_set - set(recently_bad):
+                    sequence = "illegal call sequence: fmi2DoStep in state" in new
+                    assert named or sequence, f"step refused with a log that names nothing: {new!r}"
+                    good_step = math.isfinite(op[1]) and op[1] > 0
+                    if (
+                        good_step
+                        and not sequence
+                        and recently_bad
+                        and not recently_set - set(recently_bad)
+                    ):
                         assert set(named) & set(recently_bad), (
                             f"after bad {recently_bad} the log says {new!r}"
                         )
+            elif kind == "wrong":
+                status = _wrong_reference(fmu, inst, op)
+            elif kind == "corrupt":
+                n_log = len(inst.log)
+                status, restored = inst.call("deSerializeFMUstate", _corrupt_bytes(inst, op[1]))
+                assert status == 3 and restored is None, f"{op}: status {status}"
+                assert any(s == 3 for s, _ in inst.log[n_log:]), f"{op}: no error message"
             elif kind == "get":
                 status = 0
                 for v in fmu.reals_out:
@@ -239,17 +334,25 @@ def run_calls(fmu: Target, ops, stats: Counter) -> None:
             elif kind == "reset":
                 status, _ = inst.call("reset")
                 recently_bad.clear()
+                time = 0.0
+            elif kind == "restart":  # what a host does after an error: reset, initialise
+                status, _ = inst.call("reset")
+                recently_bad.clear()
+                time = 0.0
+                status = max(status, _initialise(inst))
             elif kind == "terminate":
                 status, _ = inst.call("terminate")
             elif kind == "get_state":
                 status, state = inst.call("getFMUstate")
                 if state is not None:
                     inst.states.append(state)
+                    saved_at.append(time)
             elif kind == "set_state":
                 status = 0
                 if inst.states:
                     status, _ = inst.call("setFMUstate", inst.states[-1])
                     recently_bad.clear()  # the restored values are the saved ones
+                    time = saved_at[-1]  # and the time (a stepped FMU continues from there)
             elif kind == "serialize":
                 status = 0
                 if inst.states:
@@ -259,6 +362,7 @@ def run_calls(fmu: Target, ops, stats: Counter) -> None:
                         status = max(status, s2)
                         if state is not None:
                             inst.states.append(state)
+                            saved_at.append(saved_at[-1])
             stats[(kind, status)] += 1
             assert status in (0, 1, 2, 3), f"{op} returned status {status}"
     finally:
@@ -320,9 +424,9 @@ def _properties(fmu: Target, stats: Counter, common: dict, state_examples: int):
     inputs = [v for v in fmu.settable if v.causality == "input" and v.type == "Real"]
 
     @settings(**common)
-    @given(st.lists(operations(fmu), max_size=30))
-    def calls(ops):
-        run_calls(fmu, ops, stats)
+    @given(st.sampled_from((True, True, True, False)), st.lists(operations(fmu), max_size=30))
+    def calls(initialised, ops):
+        run_calls(fmu, ops, stats, initialised)
 
     @settings(**{**common, "max_examples": state_examples})
     @given(

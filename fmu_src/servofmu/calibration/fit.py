@@ -445,11 +445,11 @@ def _fit_quality(cal: Calibration, ops: _Points, m, p: int) -> list[str]:
         )
         return []
     lack = float(np.sum((ops.weight * (m - ops.target)) ** 2))
-    with np.errstate(divide="ignore", invalid="ignore"):
+    if pure > 0:
         f_stat = (lack / (k - p)) / (pure / (n - k))
-    cal.lack_of_fit_p = float(f_distribution.sf(f_stat, k - p, n - k)) if pure > 0 else (
-        0.0 if lack > 0 else 1.0
-    )  # fmt: skip
+        cal.lack_of_fit_p = float(f_distribution.sf(f_stat, k - p, n - k))
+    else:  # repeated points without scatter: any lack of fit is significant
+        cal.lack_of_fit_p = 0.0 if lack > 0 else 1.0
     if cal.lack_of_fit_p >= LACK_OF_FIT_P:
         return []
     ratio = cal.deviation / cal.scatter if cal.scatter > 0 else math.inf

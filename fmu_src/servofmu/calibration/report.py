@@ -15,7 +15,7 @@ from .fit import UNKNOWNS, Calibration, running_torque
 #: Plot markers of the measured points per direction.
 MARKERS = (("forward", "o"), ("reverse", "s"), ("", "^"))
 
-__all__ = ["plot", "to_text", "write_residuals", "write_ssv"]
+__all__ = ["plot", "to_text", "write_coefficients", "write_residuals", "write_ssv"]
 
 
 def _configuration(p) -> str:
@@ -113,6 +113,136 @@ def to_text(cal: Calibration) -> str:
     if cal.poor:
         lines += [f"POOR FIT: {p}" for p in cal.problems]
     return "\n".join(lines)
+
+
+def _toml_string(text: str) -> str:
+    """A TOML basic string (JSON's escapes are TOML's)."""
+    import json
+
+    return json.dumps(str(text), ensure_ascii=False)
+
+
+def _toml_table(items: dict) -> str:
+    """An inline TOML table of strings and numbers."""
+    cells = []
+    for key, value in items.items():
+        text = _toml_string(value) if isinstance(value, str) else repr(value)
+        cells.append(f"{key} = {text}")
+    return "{ " + ", ".join(cells) + " }"
+
+
+def write_coefficients(cal: Calibration, path, mounting: str, data, sources) -> Path:
+    """The fitted coefficients as a user catalogue (``[coefficients.MOUNTING]``, the format of
+    ``physics/data/coefficients.toml``): each fitted value with kind ``calibrated``, its
+    standard error and the data it came from; the coefficients not fitted with the value and
+    provenance they had (``sources``: the preset's, e.g.
+    :func:`~servofmu.physics.bearing_parameters.default_sources`). With the catalogue that
+    defines the mounting, ``servofmu build --catalog …`` then builds FMUs and systems whose
+    defaults are the calibrated set (a user's set of a mounting takes precedence over the
+    package's).
+
+    Parameters
+    ----------
+    cal : Calibration
+        A fit (:func:`~.fit.calibrate`).
+    path : str or pathlib.Path
+        The .toml file to write (folders are created).
+    mounting : str
+        The catalogue mounting the data were measured on (the set's key).
+    data : str or pathlib.Path
+        The data file (named in the set, with the SHA-256 of its content).
+    sources : dict
+        Provenance ``"kind: reference"`` of each parameter before the fit.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+
+    Examples
+    --------
+    A fit on data made from Yu's printed-reading gimbal, written as a catalogue and read back
+    as the mounting's set:
+
+    >>> import tempfile
+    >>> from servofmu.calibration import calibrate
+    >>> from servofmu.calibration.synthetic import synthesise, write_measurements
+    >>> from servofmu.physics import catalog
+    >>> from servofmu.physics.bearing_parameters import default_parameters, default_sources
+    >>> from servofmu.build import catalogs
+    >>> p = default_parameters("yu2017_gimbal_printed")
+    >>> data = synthesise(p | {"sliding_friction": 0.1}, [233.15, 263.15, 293.15], [0.17])
+    >>> cal = calibrate(data, p, ["sliding_friction"])
+    >>> cal.poor, round(float(cal.estimate[0]), 2)
+    (False, 0.1)
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     csv = write_measurements(data, Path(tmp) / "data.csv")
+    ...     toml = write_coefficients(cal, Path(tmp) / "cal.toml", "yu2017_gimbal_printed",
+    ...                               csv, default_sources("yu2017_gimbal_printed"))
+    ...     _ = catalogs.load([toml])
+    ...     mu = catalog.mounting_coefficients("yu2017_gimbal_printed").sliding_friction
+    ...     catalogs.unload()
+    >>> mu == float(cal.estimate[0])  # the fitted value, to the last bit
+    True
+    """
+    import hashlib
+
+    from ..physics.catalog import CALIBRATION_RECORD, COEFFICIENT_FIELDS, PROVENANCE_KINDS
+
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    d = cal.data
+    speeds = sorted({float(x) for x in np.round(cal.speed / DEG, 9)})
+    t_lo, t_hi = (float(x) - ZERO_CELSIUS for x in (d.temperature.min(), d.temperature.max()))
+    record = {
+        "data": str(data),
+        "sha256": hashlib.sha256(Path(data).read_bytes()).hexdigest(),
+        "points": len(d),
+        "operating_points": int(cal.operating_points),
+        "temperatures": f"{t_lo:g} to {t_hi:g} degC",
+        "speeds": ", ".join(f"{x:g}" for x in speeds)
+        + " deg/s"
+        + (" (assumed: no speed column)" if cal.speed_assumed else ""),
+        "residual": cal.residual_kind,
+        "rms_residual": float(cal.rms),
+        "fitted": ", ".join(cal.unknowns),
+        "poor_fit": "; ".join(cal.problems) if cal.poor else "no",
+    }
+    fitted = dict(zip(cal.unknowns, zip(cal.estimate, cal.standard_error, strict=True),
+                      strict=True))  # fmt: skip
+    lines = [
+        f"# Friction coefficients of mounting {mounting}, calibrated by servofmu calibrate on "
+        f"{data}.",
+        "# Pass this file after the catalogue that defines the mounting, e.g.",
+        f"#   servofmu build --catalog my.toml --catalog {path.name}",
+        "# a user's set of a mounting takes precedence over the catalogue's own.",
+        "",
+        f"[coefficients.{mounting}]",
+        f"{CALIBRATION_RECORD} = {_toml_table(record)}",
+    ]
+    for field in COEFFICIENT_FIELDS:
+        unit = "N/m" if field == "loop_stiffness" else "-"
+        if field in fitted:
+            value, se = (float(x) for x in fitted[field])
+            others = [u for u in cal.unknowns if u != field]
+            ref = (
+                f"servofmu calibrate on {data} ({len(d)} points, {record['temperatures']}, "
+                f"{record['speeds']}): {value:.6g} ± {se:.3g} (1 standard error)"
+                + (f", fitted with {', '.join(others)}" if others else "")
+            )
+            entry = {"value": value, "unit": unit, "kind": "calibrated", "ref": ref,
+                     "standard_error": se}  # fmt: skip
+        elif field == "loop_stiffness":
+            continue  # the mounting's own
+        else:
+            kind, _, ref = sources[field].partition(": ")
+            if kind not in PROVENANCE_KINDS:
+                kind, ref = "assumed", sources[field]
+            entry = {"value": float(cal.parameters[field]), "unit": unit, "kind": kind,
+                     "ref": f"not fitted: {ref}"}  # fmt: skip
+        lines.append(f"{field} = {_toml_table(entry)}")
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path
 
 
 def write_residuals(cal: Calibration, path) -> Path:

@@ -10,29 +10,35 @@ motor to the actuator directly, without a LinearTransformation, which can only b
 
 The support-bearing pair is given by numbers, like BearingFriction's pair: the parameters
 ``support_<name>`` for every ``name`` of the pair's state (bearing geometry, materials, seats,
-loop, preload; :data:`servofmu.physics.bearing_parameters.STATE_PARAMETERS`), defaults the
-support mounting of Liu's actuator record (a preset, ``data/mountings.toml``);
+loop, preload), with the defaults of the support mounting of Liu's actuator record (a preset).
 ``support_bearings`` false leaves the pair out (a rigid support). The support bearings carry
 a thermal preload: with ``temperature_mode`` ``parts`` (or ``housing_shaft``) their housing,
 shaft and rings take their own temperatures (``housing_temperature`` …
-``inner_ring_temperature``, e.g. from a ThermalNetwork), as in BearingFriction
-(:mod:`servofmu.fmus.part_temperatures`); the default ``uniform`` reads ``temperature``."""
+``inner_ring_temperature``, e.g. from a ThermalNetwork), as in BearingFriction; the default
+``uniform`` reads ``temperature``.
+"""
 
 from __future__ import annotations
 
-import dataclasses
-import re
+from pathlib import Path
 
-from servofmu.fmus.part_temperatures import (
+import servofmu
+
+servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
+
+import dataclasses  # noqa: E402
+import re  # noqa: E402
+
+from servofmu.fmus.part_temperatures import (  # noqa: E402
     TEMPERATURE_INPUTS,
     part_inputs,
     temperature_mode_parameter,
     temperatures,
 )
-from servofmu.fmus.slave import ServoSlave, Var, output, real_input, real_parameter, spec_parameter
-from servofmu.physics.actuator import Actuator, ActuatorModel, check_support_pair
-from servofmu.physics.actuator import output_angle as mechanism_output_angle
-from servofmu.physics.bearing_parameters import (
+from servofmu.fmus.slave import ServoSlave, Var, output, real_input, real_parameter, spec_parameter  # noqa: E402
+from servofmu.physics.actuator import Actuator, ActuatorModel, check_support_pair  # noqa: E402
+from servofmu.physics.actuator import output_angle as mechanism_output_angle  # noqa: E402
+from servofmu.physics.bearing_parameters import (  # noqa: E402
     STATE_PARAMETERS,
     default_parameters,
     default_sources,
@@ -178,6 +184,7 @@ class ActuatorStiffness(ServoSlave):
             "Support bearings and seat, reflected to the output (inf when none)",
             _SUPPORT,
             field="support_bearing",
+            allow_inf=True,
         ),
         _out(
             "reduction_ratio",

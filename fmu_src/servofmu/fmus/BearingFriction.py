@@ -1,29 +1,37 @@
-"""BearingFriction FMU: friction of a preloaded angular-contact ball-bearing pair in a frame,
+r"""BearingFriction FMU: friction of a preloaded angular-contact ball-bearing pair in a frame,
 with the thermal coupling of frame, shaft and bearings (Yu 2017; Ning).
 
-Inputs → :class:`servofmu.physics.bearing.BearingModel` → outputs. The parameters are those
-of :mod:`servofmu.physics.bearing_parameters` (one definition: name, unit, range, default and
-provenance): every physical input is a number — the bearing's internal geometry (``bore``,
-``outer_diameter``, ``width``, ``ball_diameter``, ``n_balls``, ``pitch_diameter``,
-``nominal_contact_angle``, ``inner_curvature``, ``outer_curvature``), the materials of rings,
-balls, housing, shaft and spacer, the seats, the loop geometry, the preload, the lubricant's
-ν40/ν100 — and the model uses exactly these numbers. The defaults are a catalogue preset filled
-in at build time: Yu 2017's seeker gimbal (71803 pair, Krytox 143AA, cast-aluminium yoke,
-45-steel shaft) with the coefficients calibrated in ``servofmu paper yu2017``; the presets the
-FMU was built with are in ``resources/presets/`` as SSP parameter sets. An inconsistent set (a
-geometry that cannot be a bearing, ν100 ≥ ν40, a spring preload without a stiffness, …) is
-refused at fmi2ExitInitializationMode with a logged error naming the values, and every step is
-discarded until it is fixed.
+The FMU evaluates :class:`servofmu.physics.bearing.BearingModel` at each step: from the
+temperatures, the speed and the external loads to the torques, the preload and the flags.
+Every physical input is a numeric parameter, and the model uses exactly these numbers: the
+bearing's internal geometry (``bore``, ``outer_diameter``, ``width``, ``ball_diameter``,
+``n_balls``, ``pitch_diameter``, ``nominal_contact_angle``, ``inner_curvature``,
+``outer_curvature``), the materials of rings, balls, housing, shaft and spacer, the seats, the
+loop geometry, the preload and the lubricant's ν40/ν100. The defaults are a catalogue preset
+filled in at build time: its mounting, bearing, lubricant and friction coefficients (the FMU's
+documentation names them under "Defaults of this build"; the standard build's is Yu 2017's
+seeker gimbal, a 71803 pair with Krytox 143AA in a cast-aluminium yoke on a 45-steel shaft,
+with the coefficients calibrated in ``servofmu paper yu2017``); the presets the FMU was built
+with are in ``resources/presets/`` as SSP parameter sets. An inconsistent set (a geometry that
+cannot be a bearing, ν100 ≥ ν40, a spring preload without a stiffness, …) is refused at
+fmi2ExitInitializationMode with fmi2Error and a logged error naming the values.
 
-``friction_model`` chooses the torque (:mod:`servofmu.physics.friction_models`): ``yu2017``
-(default: Yu's hysteresis and spin per contact + Palmgren's viscous term), ``skf2004`` (the SKF
-model per bearing with its own axial and radial load; ``skf_*`` its series constants and
-coefficients) or ``ehl_per_contact`` (the hydrodynamic rolling torque of every ball-race
-contact, Biboulet & Houpert 2010, with ``lubricant_density``, + Yu's hysteresis and spin).
+``friction_model`` chooses the torque (:mod:`servofmu.physics.friction_models`):
+
+- ``yu2017`` (default): Yu's hysteresis and spin per contact and Palmgren's viscous term;
+- ``skf2004``: the SKF model per bearing with its own axial and radial load (``skf_*``: its
+  series constants and coefficients);
+- ``ehl_per_contact``: the hydrodynamic rolling torque of every ball–race contact (Biboulet &
+  Houpert 2010, with ``lubricant_density``) and Yu's hysteresis and spin.
+
 ``viscous_torque`` is the chosen model's rolling/viscous part; ``grease_torque`` the grease
-term (``grease_f0``, ``grease_starting_ratio``, ``grease_reference_speed``; 0 = off) that
-adds to running and breakaway torque. running_torque = hysteresis + spin + sliding + viscous +
-grease.
+term (``grease_f0``, ``grease_starting_ratio``, ``grease_reference_speed``; 0 = off), which
+adds to the running and the breakaway torque:
+
+.. math::
+
+   M_\mathrm{running} = M_\mathrm{hysteresis} + M_\mathrm{spin} + M_\mathrm{sliding}
+   + M_\mathrm{viscous} + M_\mathrm{grease}.
 
 The lubricant's viscosity is the ASTM D341 line through ``lubricant_viscosity_40``/``_100``, or
 Vogel's law through them and ``lubricant_viscosity_cold`` at ``lubricant_cold_temperature``
@@ -41,19 +49,25 @@ unloaded pair, ``reverse_loaded`` says a bearing is loaded on the other flanks o
 
 from __future__ import annotations
 
-from pythonfmu.enums import Fmi2Status
+from pathlib import Path
 
-from servofmu.fmus.part_temperatures import (
+import servofmu
+
+servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
+
+from pythonfmu.enums import Fmi2Status  # noqa: E402
+
+from servofmu.fmus.part_temperatures import (  # noqa: E402
     TEMPERATURE_INPUTS,
     part_inputs,
     temperature_mode_parameter,
     temperatures,
 )
-from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter
-from servofmu.physics import continuation
-from servofmu.physics.bearing import BearingModel
-from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in
-from servofmu.physics.pair_state import PointState
+from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter  # noqa: E402
+from servofmu.physics import continuation  # noqa: E402
+from servofmu.physics.bearing import BearingModel  # noqa: E402
+from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in  # noqa: E402
+from servofmu.physics.pair_state import PointState  # noqa: E402
 
 _TEMPS = TEMPERATURE_INPUTS
 _ALL = (*_TEMPS, "speed", "axial_load", "radial_load")
@@ -316,11 +330,12 @@ class BearingFriction(ServoSlave):
     _SPEED_OUTPUTS = _outputs_of(_SPEED_FIELDS, VARIABLES)  # those that move with speed alone
     _set_speed = staticmethod(ServoSlave.output_setter(_SPEED_OUTPUTS))
 
-    def __init__(self, **kwargs):
-        super().__init__(**kwargs)
-        # which per-step path runs here: the compiled kernels shipped for this platform, or
-        # the same equations in Python where none matches
-        self.log(f"{self.instance_name}: per-step kernels {continuation.describe()}")
+    def _announce(self):
+        # with the export: which per-step path runs here, the compiled kernels shipped for
+        # this platform, or the same equations in Python where none matches (and why)
+        if not self._announced:
+            super()._announce()
+            self.log(f"{self.instance_name}: per-step kernels {continuation.describe()}")
 
     def configure(self):
         values = {p.name: getattr(self, p.name) for p in PARAMETERS}

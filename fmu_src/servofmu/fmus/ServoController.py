@@ -3,8 +3,20 @@
 
 from __future__ import annotations
 
-from servofmu.fmus.slave import Item, ServoSlave, Var, output, real_input, real_parameter
-from servofmu.physics.control import MODES, PIDParameters, PIDState, pid_sample
+import math
+from pathlib import Path
+
+import servofmu
+
+servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
+
+from servofmu.fmus.slave import Item, ServoSlave, Var, output, real_input, real_parameter  # noqa: E402
+from servofmu.physics.control import MODES, PIDParameters, PIDState, pid_sample  # noqa: E402
+
+#: The most samples one fmi2DoStep computes (the work per call is bounded: a longer step is
+#: discarded, naming this limit)
+MAX_SAMPLES = 100_000
+_PID_FIELDS = ("integral", "derivative", "last_measurement")
 
 _P = PIDParameters()
 _SRC = "assumed: a speed loop for the gimbal motor of the DCMotor defaults"
@@ -77,11 +89,7 @@ class ServoController(ServoSlave):
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
         self.pid = PIDState()
-        self.next_sample = 0  # index k of the next sample instant t0 + k·Ts
-        self.start_time = 0.0
-
-    def setup_experiment(self, start_time, stop_time=None, tolerance=None):
-        self.start_time = float(start_time)
+        self.next_sample = 0  # index k of the next sample instant t0 + k·Ts (t0: start time)
 
     def configure(self):
         self.params = PIDParameters(
@@ -103,11 +111,20 @@ class ServoController(ServoSlave):
         end = current_time + step_size
         ts = self.params.sample_period
         # samples at t0 + k·Ts within [t, t + h), with the inputs held over the step
-        while self.start_time + self.next_sample * ts < end - 1e-9 * ts:
+        last = math.ceil((end - 1e-9 * ts - self._start_time) / ts)  # first sample not due
+        due = last - self.next_sample
+        if due > MAX_SAMPLES:
+            self._error = (
+                f"communicationStepSize = {step_size!r} s holds {due} samples of sample_period "
+                f"= {ts!r} s; one step takes at most {MAX_SAMPLES} (≤ {MAX_SAMPLES * ts:g} s "
+                "here): take shorter steps"
+            )
+            return False
+        for _ in range(max(0, due)):
             self.command, self.pid = pid_sample(
                 self.params, self.pid, self.reference, self.measurement
             )
-            self.next_sample += 1
+        self.next_sample = max(self.next_sample, last)
         return True
 
     def hidden_state(self):
@@ -116,10 +133,14 @@ class ServoController(ServoSlave):
             "derivative": self.pid.derivative,
             "last_measurement": self.pid.last_measurement,
             "next_sample": self.next_sample,
-            "start_time": self.start_time,
         }
 
     def restore_hidden_state(self, state):
-        self.pid = PIDState(state["integral"], state["derivative"], state["last_measurement"])
+        integral, derivative, last = (state[k] for k in _PID_FIELDS)
+        numbers = (integral, derivative, 0.0 if last is None else last)
+        if not all(type(x) in (int, float) for x in numbers):
+            raise TypeError(f"{_PID_FIELDS}: numbers, not {(integral, derivative, last)!r}")
+        if type(state["next_sample"]) is not int:
+            raise TypeError(f"next_sample = {state['next_sample']!r} is not an integer")
+        self.pid = PIDState(float(integral), float(derivative), last)
         self.next_sample = state["next_sample"]
-        self.start_time = state["start_time"]

@@ -2,20 +2,27 @@
 rings) from the ambient and sink temperatures and the bearing's power loss, integrated exactly
 over each communication step (:mod:`servofmu.physics.thermal_network`).
 
-Defaults: Yu 2017's seeker gimbal (71803 pair, cast-aluminium frame, 45-steel shaft) in the air
-of a climatic chamber (preset ``yu2017_gimbal_chamber``); the preset ``ning_space_vacuum`` and
-any mounting give their values through :func:`thermal_network.preset` /
-:func:`thermal_network.mechanism_parameters` and ``ThermalParameters.as_dict()``.
+Defaults: a network filled in at build time (the FMU's documentation names it): the standard
+build's is the preset ``yu2017_gimbal_chamber``, a build for another mounting that mounting's
+parts in chamber air. The preset ``ning_space_vacuum`` and any mounting give their values
+through :func:`thermal_network.preset` / :func:`thermal_network.mechanism_parameters` and
+``ThermalParameters.as_dict()``.
 
 The choice ``environment`` (air / vacuum) removes convection and the gas gap in vacuum.
 """
 
 from __future__ import annotations
 
-import math
+from pathlib import Path
 
-from servofmu.fmus.slave import Item, ServoSlave, Var
-from servofmu.physics import thermal_network as tn
+import servofmu
+
+servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
+
+import math  # noqa: E402
+
+from servofmu.fmus.slave import Item, ServoSlave, Var  # noqa: E402
+from servofmu.physics import thermal_network as tn  # noqa: E402
 
 _P = tn.preset("yu2017_gimbal_chamber")
 _OUTPUTS = (
@@ -251,6 +258,14 @@ class ThermalNetwork(ServoSlave):
         return {"reference": ref, "started": self.started}
 
     def restore_hidden_state(self, state):
-        ref = state["reference"]
+        ref, started = state["reference"], state["started"]
+        if ref is not None and not (
+            isinstance(ref, list)
+            and len(ref) == len(_OUTPUTS)
+            and all(type(v) in (int, float) and math.isfinite(v) for v in ref)
+        ):
+            raise ValueError(f"reference = {ref!r} is not {len(_OUTPUTS)} finite temperatures")
+        if type(started) is not bool:
+            raise TypeError(f"started = {started!r} is not a Boolean")
         self.reference = None if ref is None else tuple(float(v) for v in ref)
-        self.started = bool(state["started"])
+        self.started = started

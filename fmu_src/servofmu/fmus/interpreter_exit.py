@@ -43,30 +43,10 @@ from __future__ import annotations
 import ctypes
 import os
 import sys
-from pathlib import Path
+
+from .binary import fmu_binary, loaded
 
 _REGISTERED: set[str] = set()  # real paths of the FMU binaries registered in this process
-
-
-def fmu_binary(resources: str | os.PathLike, model_identifier: str) -> Path:
-    """Path of an FMU's Linux binary from its resources folder (FMI 2.0 layout).
-
-    Parameters
-    ----------
-    resources : the FMU's ``resources`` folder (as pythonfmu passes it to the slave)
-    model_identifier : the FMU's modelIdentifier (servofmu: the slave class name)
-
-    Returns
-    -------
-    Path
-        ``<resources>/../binaries/linux64/<model_identifier>.so``
-
-    Examples
-    --------
-    >>> fmu_binary("/tmp/fmu/resources", "DCMotor").as_posix()
-    '/tmp/fmu/binaries/linux64/DCMotor.so'
-    """
-    return Path(resources).parent / "binaries" / "linux64" / f"{model_identifier}.so"
 
 
 def register_interpreter_finaliser(
@@ -98,11 +78,13 @@ def register_interpreter_finaliser(
     binary = os.path.realpath(fmu_binary(resources, model_identifier))
     if binary in _REGISTERED:
         return True
+    lib = loaded(resources, model_identifier, keep=True)
+    if lib is None:  # not loaded (e.g. imported in a test)
+        return False
     try:
-        lib = ctypes.CDLL(binary, mode=os.RTLD_NOLOAD | os.RTLD_NODELETE)
         finaliser = ctypes.cast(lib.finalizePythonInterpreter, ctypes.c_void_p)
         cxa_atexit = ctypes.CDLL(None)["__cxa_atexit"]
-    except (OSError, AttributeError):  # not loaded (e.g. imported in a test), or no symbol
+    except (OSError, AttributeError):  # no such symbol
         return False
     cxa_atexit.argtypes = (ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p)
     cxa_atexit.restype = ctypes.c_int

@@ -3,7 +3,14 @@
 Each FMU declares its variables once, as a tuple of :class:`Var`; from that one list this
 base class
 
-- registers the variables with pythonfmu (setters store the value and never raise);
+- answers every FMI entry point pythonfmu calls itself (fmi2Get*/fmi2Set* for any value
+  reference, the FMI 2.0 state machine of :mod:`.calls`, fmi2DoStep with any arguments, FMU
+  states handed back by a host): it checks the arguments and the state and answers a host's
+  mistake with fmi2Error and a message naming what was wrong. Under servofmu's export library
+  that is an :class:`~.calls.FMIError` turned into the status; under pythonfmu's own binary,
+  which makes any exception fatal and can then crash the host, nothing is ever raised: the
+  message is logged, the call returns a harmless value, the instance enters the error state
+  and its next fmi2DoStep is discarded with the message (:mod:`.binary`);
 - writes the complete modelDescription (``to_xml``): UnitDefinitions with display units, units,
   min/max, descriptions, variability and initial attributes, TypeDefinitions with the items of
   every choice (see :data:`CHOICES_AS`), ModelStructure with the outputs' direct dependencies
@@ -12,15 +19,23 @@ base class
 - copies a model's result record to the outputs through one map (each output's ``field``);
 - checks inputs and parameters against their declared ranges and items (a choice is an integer
   1…n naming an item, registered with pythonfmu as Integer: FMI 2.0 hosts access
-  enumerations through fmi2Get/SetInteger) and reports a bad value as a
-  logged message naming the variable and its value, with ``fmi2Discard`` from the next
-  ``fmi2DoStep`` (pythonfmu maps any escaping Python exception to ``fmi2Fatal``, and the only
-  non-fatal status a Python slave can return is the discard of a step: so no exception ever
-  leaves an FMI call here);
+  enumerations through fmi2Get/SetInteger): a bad parameter refuses
+  fmi2ExitInitializationMode (or, a tunable one changed later, the next step), a bad input the
+  step, each naming the variable and its value; a model that cannot take a step (or a step
+  longer than it takes in bounded time) discards it with a logged message; an output that is
+  not finite is never returned with fmi2OK;
 - saves and restores the whole state, hidden state included, as JSON (``fmi2GetFMUstate``,
-  ``fmi2SerializeFMUstate``);
+  ``fmi2SerializeFMUstate``); a state handed back is checked (this FMU, this build, these
+  fields) before anything is restored, and a refused one leaves the instance's values as they
+  were;
 - refuses to run (at instantiation, with a clear message) when the servofmu package already
   imported in the process is not the one the FMU was built with.
+
+Time: a stepped FMU's first fmi2DoStep starts at fmi2SetupExperiment's startTime (or, without
+it, defines the start), each later one where the last ended (or at the time of a restored
+state); another currentCommunicationPoint is refused (FMI 2.0: the point and the FMU's state
+must agree), never caught up silently. An algebraic FMU's outputs depend on its inputs alone:
+it takes a step at any point.
 
 Two kinds of FMU: *algebraic* ones (``FEEDTHROUGH = True``: BearingFriction,
 ActuatorStiffness) compute their outputs from the current inputs, lazily, whenever an output
@@ -30,6 +45,7 @@ state in ``do_step`` and their outputs do not depend directly on the inputs.
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import functools
 import hashlib
@@ -42,7 +58,21 @@ from xml.etree.ElementTree import Element, SubElement
 from pythonfmu import Boolean, Fmi2Causality, Fmi2Slave, Fmi2Variability, Integer, Real
 from pythonfmu.enums import Fmi2Initial, Fmi2Status
 
-from .. import __version__
+from .. import __version__, different_build
+from .binary import export_of, reports_statuses
+from .calls import (
+    ERROR,
+    INITIALIZATION,
+    INSTANTIATED,
+    PHASES,
+    READABLE,
+    STEP_COMPLETE,
+    STEP_FAILED,
+    TERMINATED,
+    FMIError,
+    sequence_problem,
+    state_problem,
+)
 from .interpreter_exit import register_interpreter_finaliser
 
 BUILD_INFO = "servofmu_build.json"  # written into resources/ by the build
@@ -94,6 +124,11 @@ CHOICES_AS = "Integer"
 VENDOR_TOOL = "servofmu"  # VendorAnnotations/Tool name that ties choices to their types
 
 _TYPES = {"Real": Real, "Integer": Integer, "Boolean": Boolean, "Enumeration": Integer}
+#: the FMI type through which hosts get and set each kind of variable
+_FMI_TYPE = {"Real": "Real", "Integer": "Integer", "Boolean": "Boolean", "Enumeration": "Integer"}
+_FMI_TYPES = ("Real", "Integer", "Boolean", "String")
+_DEFAULT = {"Real": 0.0, "Integer": 0, "Boolean": False, "String": ""}
+_DESCRIBING = "describing"  # the build writes the modelDescription (reads the start values)
 #: Package parts that run inside an FMU (the build ships and hashes exactly these).
 SHIPPED = ("__init__.py", "physics", "fmus")
 #: Start values (and their provenance) that a build gives an FMU instead of its class's
@@ -117,7 +152,7 @@ class Var:
 
     Attributes
     ----------
-    name : FMI name (public API: DESIGN §3)
+    name : FMI name (public API: tests, SSPs and users depend on it)
     type : "Real", "Integer", "Boolean" or "Enumeration" (a choice: an integer 1…n naming one
         of ``items``)
     causality : "input", "output" or "parameter"
@@ -134,6 +169,7 @@ class Var:
     source : provenance of the default (paper, catalogue, handbook, assumed, calibrated)
     items : Enumeration: the items, numbered 1, 2, … in this order
     declared_type : Enumeration: the name of its item type (variables may share one)
+    allow_inf : Real outputs: +inf is a value (its description says when), not a failure
     """
 
     name: str
@@ -152,6 +188,7 @@ class Var:
     source: str = ""
     items: tuple[Item, ...] = ()
     declared_type: str | None = None
+    allow_inf: bool = False
 
     def item_name(self, value) -> str:
         """The item name of Enumeration value ``value`` (1-based)."""
@@ -288,6 +325,9 @@ class ServoSlave(Fmi2Slave):
     author = "servofmu"
     license = "MIT"
     version = __version__
+    #: whether every instance of this class so far runs under servofmu's export (the class
+    #: methods that (de)serialise states raise only then); None before the first instance
+    _class_reports: bool | None = None
 
     def __init_subclass__(cls, **kwargs):
         super().__init_subclass__(**kwargs)
@@ -302,15 +342,22 @@ class ServoSlave(Fmi2Slave):
         build_start = self._check_build()
         # after every import that loads a C++ extension (servofmu.fmus loads all of them)
         register_interpreter_finaliser(self.resources, type(self).__name__)
+        export = export_of(self.resources, type(self).__name__)
+        self._export = export or "no FMU binary (imported as a library)"
+        self._reports = reports_statuses(export)
+        cls = type(self)
+        if export is not None:  # (an instance made by the build says nothing)
+            cls._class_reports = self._reports and cls._class_reports is not False
         start, stop, step = self.DEFAULT_EXPERIMENT
         self.default_experiment = DefaultExperiment(
             start_time=start, stop_time=stop, step_size=step
         )
-        self.variables = variables_of(type(self), build_start)
+        self.variables = variables_of(cls, build_start)
         self._by_name = {v.name: v for v in self.variables}
         if len(self._by_name) != len(self.variables):
             names = [v.name for v in self.variables]
-            raise ValueError(f"{type(self).__name__}: duplicate variable names {names}")
+            raise ValueError(f"{cls.__name__}: duplicate variable names {names}")
+        self._types = {v.name: v.type for v in self.variables}
         self._inputs = [v for v in self.variables if v.causality == "input"]
         self._params = [v for v in self.variables if v.causality == "parameter"]
         self._outputs = [v for v in self.variables if v.causality == "output"]
@@ -319,14 +366,38 @@ class ServoSlave(Fmi2Slave):
         self._param_checks = _ranges(self._params)
         self._choices = [v for v in self._params + self._inputs if v.type == "Enumeration"]
         self._copy = _copier(tuple((v.name, v.field) for v in self._outputs if v.field))
+        reals = [v for v in self._outputs if v.type == "Real"]
+        self._outputs_finite = _finite_checker(tuple((v.name, v.allow_inf) for v in reals))
+        self._inf_ok = frozenset(v.name for v in reals if v.allow_inf)
         for v in self.variables:
             setattr(self, v.name, v.start if v.causality != "output" else _zero(v.type))
         self._dirty = True  # inputs changed since the outputs were computed
         self._configured = False  # parameters turned into model objects
-        self._error = ""  # why the FMU cannot compute (bad parameter or input)
-        self._initializing = False  # between fmi2EnterInitializationMode and its exit
+        self._error = ""  # why the FMU cannot compute, or why it refused a call
+        self._phase = INSTANTIATED  # the FMI 2.0 state (calls.py)
+        self._start_time: float | None = None  # fmi2SetupExperiment's startTime
+        self._time: float | None = None  # where the next fmi2DoStep must start
         for v in self.variables:
             self._register(v)
+        self._tables()
+        self._announced = False
+        if self._reports:  # pythonfmu's binary would free its logger before this message
+            self._announce()
+
+    def _announce(self):
+        """Say once which export runs the instance (pythonfmu's binary: at the first call
+        after the instantiation; freeing an instance with a message still queued crashes it
+        when logging is on)."""
+        if not self._announced:
+            self._announced = True
+            how = (
+                "a host's mistake gets fmi2Error"
+                if self._reports
+                else "a host's mistake is logged and the next fmi2DoStep discarded (compile "
+                "servofmu's export, then rebuild, for fmi2Error statuses)"
+            )
+            model = type(self).__name__
+            self.log(f"{self.instance_name}: {model} runs under {self._export}: {how}")
 
     # ------------------------------------------------------------------ registration
     def _register(self, v: Var):
@@ -346,40 +417,168 @@ class ServoSlave(Fmi2Slave):
                 Fmi2Variability.continuous if v.type == "Real" else Fmi2Variability.discrete
             )
             kwargs["initial"] = Fmi2Initial.calculated
-        name = v.name
-        if v.causality == "output":
-            getter = self._output_getter(name)
-        else:
+        getter = functools.partial(getattr, self, v.name)
+        setter = functools.partial(setattr, self, v.name)
+        self.register_variable(_TYPES[v.type](v.name, getter=getter, setter=setter, **kwargs))
 
-            def getter(_n=name):
-                return getattr(self, _n)
+    def _tables(self):
+        """The value references each fmi2Get*/fmi2Set* call accepts, per FMI type and state
+        (calls.py): every variable is readable; inputs and parameters are writable until
+        initialization ends, then inputs and tunable parameters."""
+        self._vr = {v.name: vr for vr, v in enumerate(self.variables)}
+        self._readable = {kind: {} for kind in _FMI_TYPES}
+        self._writable = {p: {kind: {} for kind in _FMI_TYPES} for p in PHASES}
+        for vr, v in enumerate(self.variables):
+            kind = _FMI_TYPE[v.type]
+            self._readable[kind][vr] = v.name
+            if v.causality == "output":
+                continue
+            self._writable[INSTANTIATED][kind][vr] = v.name
+            self._writable[INITIALIZATION][kind][vr] = v.name
+            if v.causality == "input" or v.variability == "tunable":
+                self._writable[STEP_COMPLETE][kind][vr] = v.name
+        self._param_vrs = frozenset(self._vr[v.name] for v in self._params)
 
-        # setters store the value and never raise (it is checked when used)
-        if v.causality == "parameter":
+    # ------------------------------------------------------------------ refusals
+    def _refuse(self, call: str, message: str, result=None):
+        """A host's mistake: fmi2Error with the message under servofmu's export; under
+        pythonfmu's binary the message is logged, ``result`` is returned (a step: discarded)
+        and the next fmi2DoStep is refused with the message. Either way the instance is then
+        in the error state (calls.py)."""
+        self._announce()
+        text = f"{call}: {message}"
+        if self._phase != ERROR:
+            self._error = text
+        self._phase = ERROR
+        if self._reports:
+            raise FMIError(f"{self.instance_name}: {text}")
+        self.log(f"{self.instance_name}: {text}", status=Fmi2Status.error)
+        return result
 
-            def setter(value, _n=name):
-                setattr(self, _n, value)
+    def _sequence(self, call: str) -> str:
+        """Why ``call`` is illegal now ("" if it is not), with the failure that led here."""
+        problem = sequence_problem(call, self._phase)
+        if problem and self._phase in (ERROR, STEP_FAILED) and self._error:
+            problem += f"; it failed with: {self._error}"
+        return problem
+
+    def _internal(self, call: str, exc: BaseException, result=None):
+        """An exception of servofmu's own code: never passed on to pythonfmu."""
+        return self._refuse(call, f"internal error {type(exc).__name__}: {exc}", result)
+
+    def _reference_problem(self, kind: str, vrs, writing: bool) -> str:
+        """Why one of ``vrs`` cannot be read or written as ``kind`` now."""
+        table = (self._writable[self._phase] if writing else self._readable)[kind]
+        for vr in vrs:
+            if vr in table:
+                continue
+            if not (type(vr) is int and 0 <= vr < len(self.variables)):
+                return f"valueReference {vr!r} is not a variable of {type(self).__name__}"
+            v = self.variables[vr]
+            if _FMI_TYPE[v.type] != kind:
+                return (
+                    f"valueReference {vr} is {v.name!r}, a{'n' if v.type[0] in 'IE' else ''} "
+                    f"{_FMI_TYPE[v.type]}, not a{'n' if kind[0] == 'I' else ''} {kind}"
+                )
+            if v.causality == "output":
+                return f"{v.name!r} (valueReference {vr}) is an output: a host cannot set it"
+            if self._phase == STEP_COMPLETE:
+                return (
+                    f"{v.name!r} (valueReference {vr}) is a fixed parameter: it can be set "
+                    "only before fmi2ExitInitializationMode"
+                )
+            return f"{v.name!r} (valueReference {vr}) cannot be set in {self._phase}"
+        return "unknown value reference"
+
+    # ------------------------------------------------------------------ fmi2Get*, fmi2Set*
+    def get_real(self, vrs):
+        return self._get("fmi2GetReal", "Real", vrs)
+
+    def get_integer(self, vrs):
+        return self._get("fmi2GetInteger", "Integer", vrs)
+
+    def get_boolean(self, vrs):
+        return self._get("fmi2GetBoolean", "Boolean", vrs)
+
+    def get_string(self, vrs):
+        return self._get("fmi2GetString", "String", vrs)
+
+    def set_real(self, vrs, values):
+        self._set("fmi2SetReal", "Real", vrs, values)
+
+    def set_integer(self, vrs, values):
+        self._set("fmi2SetInteger", "Integer", vrs, values)
+
+    def set_boolean(self, vrs, values):
+        self._set("fmi2SetBoolean", "Boolean", vrs, values)
+
+    def set_string(self, vrs, values):
+        self._set("fmi2SetString", "String", vrs, values)
+
+    def _get(self, call: str, kind: str, vrs):
+        try:
+            phase = self._phase
+            if phase not in READABLE and phase != _DESCRIBING:
+                return self._refuse(
+                    call,
+                    f"values can be read from initialization mode on (now: {phase})",
+                    [_DEFAULT[kind]] * len(vrs),
+                )
+            if self._dirty and (
+                phase == INITIALIZATION or (phase == STEP_COMPLETE and self.FEEDTHROUGH)
+            ):
+                self._update_outputs(call)
+            table = self._readable[kind]
+            try:
+                values = [getattr(self, table[vr]) for vr in vrs]
+            except (KeyError, TypeError):
+                problem = self._reference_problem(kind, vrs, False)
+                return self._refuse(call, problem, [_DEFAULT[kind]] * len(vrs))
+            if kind == "Real":
+                total = sum(values)
+                if total - total != 0.0:  # NaN or an infinity among them (or a huge sum)
+                    bad = [
+                        f"{table[vr]} = {x!r}"
+                        for vr, x in zip(vrs, values, strict=True)
+                        if not (math.isfinite(x) or (x == math.inf and table[vr] in self._inf_ok))
+                    ]
+                    if bad:
+                        return self._refuse(call, f"not finite: {', '.join(bad)}", values)
+            return values
+        except FMIError:
+            raise
+        except (Exception, KeyboardInterrupt) as exc:
+            return self._internal(call, exc, [_DEFAULT[kind]] * len(vrs))
+
+    def _set(self, call: str, kind: str, vrs, values):
+        try:
+            table = self._writable[self._phase][kind]
+            try:
+                names = [table[vr] for vr in vrs]
+            except (KeyError, TypeError):
+                return self._refuse(call, self._reference_problem(kind, vrs, True))
+            for name, value in zip(names, values, strict=True):
+                setattr(self, name, value)
+            self._dirty = True
+            if not self._param_vrs.isdisjoint(vrs):
                 self._configured = False
-                self._dirty = True
+        except FMIError:
+            raise
+        except (Exception, KeyboardInterrupt) as exc:
+            return self._internal(call, exc)
 
-        else:
-
-            def setter(value, _n=name):
-                setattr(self, _n, value)
-                self._dirty = True
-
-        self.register_variable(_TYPES[v.type](name, getter=getter, setter=setter, **kwargs))
-
-    def _output_getter(self, name: str):
-        def getter():
-            if self._dirty:
-                if self.FEEDTHROUGH:
-                    self._refresh()
-                elif self._initializing:
-                    self._initial_outputs()
-            return getattr(self, name)
-
-        return getter
+    def _update_outputs(self, call: str):
+        """The outputs after inputs or parameters changed, before they are read: in
+        Initialization Mode from the values set so far (a problem is left for
+        fmi2ExitInitializationMode to report); an algebraic FMU's from its inputs (a problem
+        refuses the read)."""
+        if self._phase == INITIALIZATION:
+            if self.FEEDTHROUGH:
+                self._refresh()
+            else:
+                self._initial_outputs()
+        elif not self._refresh():
+            self._refuse(call, self._error)
 
     # ------------------------------------------------------------------ checks
     def _bad_input(self) -> str:
@@ -407,6 +606,17 @@ class ServoSlave(Fmi2Slave):
                 return f"{v.name} = {x!r} is not one of the items ({items})"
         return ""
 
+    def _bad_output(self) -> str:
+        """Message naming the first Real output that is not finite (+inf where the variable
+        allows it), else ""."""
+        if self._outputs_finite(self):
+            return ""
+        for v in self._outputs:
+            x = getattr(self, v.name)
+            if v.type == "Real" and not (math.isfinite(x) or (x == math.inf and v.allow_inf)):
+                return f"{v.name} = {x!r} is not finite: the step is not taken"
+        return ""
+
     def item(self, name: str) -> str:
         """The item name of the current value of Enumeration variable ``name``."""
         return self._by_name[name].item_name(getattr(self, name))
@@ -428,14 +638,14 @@ class ServoSlave(Fmi2Slave):
         return _setter(tuple(names))
 
     def _ensure_configured(self) -> bool:
-        """Build the model from the parameters if needed; False (and a log) on failure."""
+        """Build the model from the parameters if needed; False (and ``_error``) on failure."""
         if self._configured:
             return True
         bad = self._bad_parameter()
         if not bad:
             try:
                 self.configure()
-            except (ValueError, KeyError, TypeError) as exc:
+            except (ValueError, KeyError, TypeError, ArithmeticError) as exc:
                 bad = f"parameters rejected: {exc}"
         if bad:
             self._error = bad
@@ -454,15 +664,16 @@ class ServoSlave(Fmi2Slave):
             return False
         try:
             self.compute()
-        except Exception as exc:  # an output getter calls this: no exception may leave it
+        except Exception as exc:  # an output read calls this: no exception may leave it
             self._error = f"{type(exc).__name__}: {exc}"
+            return False
+        bad = self._bad_output()
+        if bad:
+            self._error = bad
             return False
         self._error = ""
         self._dirty = False
         return True
-
-    def _report(self, status: Fmi2Status):
-        self.log(f"{self.instance_name}: {self._error}", status=status)
 
     def _initial_outputs(self):
         """Stepped FMUs in Initialization Mode: the outputs at the start time from the
@@ -476,79 +687,194 @@ class ServoSlave(Fmi2Slave):
             pass
 
     # ------------------------------------------------------------------ FMI calls
+    def setup_experiment(self, start_time, stop_time=None, tolerance=None):
+        call = "fmi2SetupExperiment"
+        try:
+            self._announce()
+            problem = self._sequence(call) or _experiment_problem(start_time, stop_time, tolerance)
+            if problem:
+                return self._refuse(call, problem)
+            self._start_time = self._time = float(start_time)
+        except FMIError:
+            raise
+        except (Exception, KeyboardInterrupt) as exc:
+            return self._internal(call, exc)
+
     def enter_initialization_mode(self):
-        self._initializing = True
+        call = "fmi2EnterInitializationMode"
+        self._announce()
+        problem = self._sequence(call)
+        if problem:
+            return self._refuse(call, problem)
+        self._phase = INITIALIZATION
+        self._dirty = True
 
     def exit_initialization_mode(self):
-        self._initializing = False
+        call = "fmi2ExitInitializationMode"
         try:
+            problem = self._sequence(call)
+            if problem:
+                return self._refuse(call, problem)
             ok = self._ensure_configured() and (
                 self._refresh() if self.FEEDTHROUGH else self._initialise()
             )
+            if ok and not self.FEEDTHROUGH:
+                self._error = self._bad_output()
+                ok = not self._error
             if not ok:
-                # pythonfmu cannot return fmi2Error here without an exception (fmi2Fatal): the
-                # problem is logged now and every fmi2DoStep is discarded until it is fixed
-                self._report(Fmi2Status.error)
-        except Exception as exc:  # no exception may leave an FMI call
-            self._error = f"{type(exc).__name__}: {exc}"
-            self._report(Fmi2Status.error)
+                return self._refuse(call, self._error)
+            self._phase = STEP_COMPLETE
+        except FMIError:
+            raise
+        except (Exception, KeyboardInterrupt) as exc:
+            return self._internal(call, exc)
 
     def do_step(self, current_time: float, step_size: float) -> bool:
+        call = "fmi2DoStep"
         try:
-            if not (math.isfinite(current_time) and math.isfinite(step_size) and step_size >= 0):
-                self._error = (
-                    f"fmi2DoStep(currentCommunicationPoint = {current_time!r}, "
-                    f"communicationStepSize = {step_size!r}): the point must be finite and the "
-                    "step size finite and ≥ 0"
-                )
-                self._report(Fmi2Status.discard)
-                return False
-            if not (self._configured or self._ensure_configured()):
-                self._report(Fmi2Status.discard)
-                return False
+            problem = "" if self._phase == STEP_COMPLETE else self._sequence(call)
+            problem = problem or self._step_problem(current_time, step_size)
+            if not problem and not (self._configured or self._ensure_configured()):
+                problem = self._error
+            problem = problem or self._bad_input()
+            if problem:  # a host's mistake: the step is not carried out at all
+                return self._refuse(call, problem, False)
+            if self._time is None:  # no fmi2SetupExperiment: the first step starts the run
+                self._start_time = self._time = current_time
             if self.FEEDTHROUGH:
                 ok = self._refresh() if self._dirty else True
-            else:
-                bad = self._bad_input()
-                if bad:
-                    self._error = bad
-                    ok = False
-                else:  # a zero step advances nothing (the outputs stay those at the point)
-                    ok = step_size == 0.0 or self.advance(current_time, step_size)
+            else:  # a model failure mid-step (or a step beyond its bound): discarded
+                ok = self.advance(current_time, step_size)
+                if ok:
+                    self._error = self._bad_output()
+                    ok = not self._error
             if not ok:
-                self._report(Fmi2Status.discard)
-            return ok
-        except Exception as exc:
+                return self._discard()
+            self._time = current_time + step_size
+            return True
+        except FMIError:
+            raise
+        except (Exception, KeyboardInterrupt) as exc:
             self._error = f"{type(exc).__name__}: {exc}"
-            self._report(Fmi2Status.discard)
-            return False
+            return self._discard()
+
+    def _step_problem(self, t: float, h: float) -> str:
+        """Why fmi2DoStep(t, h) cannot be carried out: a point or step size that is not a
+        finite number, h ≤ 0 (FMI 2.0: h > 0), or, for a stepped FMU, a point that does not
+        continue the last step (or the start time, or the time of a restored state)."""
+        if not (-math.inf < t < math.inf and 0.0 < h < math.inf):
+            return (
+                f"currentCommunicationPoint = {t!r}, communicationStepSize = {h!r}: the point "
+                "must be finite and the step size finite and > 0"
+            )
+        expected = None if self.FEEDTHROUGH else self._time
+        if expected is not None and abs(t - expected) > 1e-9 * max(abs(t), abs(expected), h):
+            return (
+                f"currentCommunicationPoint = {t!r} s does not continue the last step, which "
+                f"ended at {expected!r} s (FMI 2.0: the point and the FMU's state must agree; "
+                "restore a state saved at that point with fmi2SetFMUstate, or fmi2Reset)"
+            )
+        return ""
+
+    def _discard(self) -> bool:
+        """A step the model could not take: fmi2Discard with a logged message; the instance is
+        then in step failed (calls.py)."""
+        self._phase = STEP_FAILED
+        self.log(f"{self.instance_name}: {self._error}", status=Fmi2Status.discard)
+        return False
+
+    def terminate(self):
+        call = "fmi2Terminate"
+        problem = self._sequence(call)
+        if problem:
+            return self._refuse(call, problem)
+        self._phase = TERMINATED
 
     # ------------------------------------------------------------------ state
     def _get_fmu_state(self):
-        values = {v.name: _CAST[v.type](getattr(self, v.name)) for v in self.variables}
-        return {
-            "values": values,
-            "hidden": self.hidden_state(),
-            "dirty": self._dirty,
-            "error": self._error,
-        }
+        try:
+            return {
+                "fmu": type(self).__name__,
+                "package": _runtime_hash(),
+                "phase": self._phase,
+                "time": self._time,
+                "start_time": self._start_time,
+                "values": {v.name: _CAST[v.type](getattr(self, v.name)) for v in self.variables},
+                "hidden": self.hidden_state(),
+                "dirty": self._dirty,
+                "error": self._error,
+            }
+        except FMIError:
+            raise
+        except (Exception, KeyboardInterrupt) as exc:
+            return self._internal("fmi2GetFMUstate", exc, {"refused": str(exc)})
 
     def _set_fmu_state(self, state):
+        call = "fmi2SetFMUstate"
         try:
-            params_changed = any(
-                state["values"][v.name] != getattr(self, v.name) for v in self._params
-            )
-            for name, value in state["values"].items():
-                setattr(self, name, value)
-            if params_changed or not self._configured:
-                self._configured = False
-                self._ensure_configured()
-            self.restore_hidden_state(state["hidden"])
-            self._dirty = state["dirty"]
-            self._error = state["error"]
-        except Exception as exc:
-            self._error = f"state not restored: {type(exc).__name__}: {exc}"
-            self._report(Fmi2Status.error)
+            if isinstance(state, dict) and set(state) == {"refused"}:
+                problem = str(state["refused"])
+            else:
+                problem = state_problem(state, type(self).__name__, _runtime_hash(), self._types)
+            if not problem and set(state["hidden"]) != set(self.hidden_state()):
+                problem = f"its hidden state has the fields {sorted(state['hidden'])}"
+            if problem:
+                return self._refuse(call, f"the state is refused ({problem}); nothing restored")
+            saved = self._get_fmu_state()
+            try:
+                self._restore(state)
+            except (Exception, KeyboardInterrupt) as exc:
+                self._restore(saved)
+                return self._refuse(
+                    call, f"the state is refused ({type(exc).__name__}: {exc}); nothing restored"
+                )
+        except FMIError:
+            raise
+        except (Exception, KeyboardInterrupt) as exc:
+            return self._internal(call, exc)
+
+    def _restore(self, state: dict):
+        """Every declared field of a checked state (never anything else: the variables by
+        name, the hidden state through the FMU's own :meth:`restore_hidden_state`)."""
+        values = state["values"]
+        params_changed = any(values[v.name] != getattr(self, v.name) for v in self._params)
+        for v in self.variables:
+            setattr(self, v.name, _CAST[v.type](values[v.name]))
+        if params_changed or not self._configured:
+            self._configured = False
+            self._ensure_configured()
+        self.restore_hidden_state(copy.deepcopy(state["hidden"]))
+        self._dirty, self._error = state["dirty"], state["error"]
+        self._phase, self._time, self._start_time = (
+            state["phase"],
+            state["time"],
+            state["start_time"],
+        )
+
+    @classmethod
+    def _fmu_state_to_bytes(cls, state) -> bytes:
+        try:
+            return json.dumps(state, allow_nan=True).encode("utf-8")
+        except (Exception, KeyboardInterrupt) as exc:
+            message = f"fmi2SerializeFMUstate: the state cannot be serialised ({exc})"
+            if cls._class_reports:
+                raise FMIError(message) from None
+            return json.dumps({"refused": message}).encode("utf-8")
+
+    @classmethod
+    def _fmu_state_from_bytes(cls, data) -> dict:
+        try:
+            state = json.loads(bytes(data).decode("utf-8"))
+            types = {v.name: v.type for v in cls.VARIABLES}
+            problem = state_problem(state, cls.__name__, _runtime_hash(), types)
+        except (Exception, KeyboardInterrupt) as exc:
+            problem = f"{type(exc).__name__}: {exc}"
+        if not problem:
+            return state
+        message = f"fmi2DeSerializeFMUstate: not a state of {cls.__name__} ({problem})"
+        if cls._class_reports:
+            raise FMIError(message)
+        return {"refused": message}
 
     # ------------------------------------------------------------------ version
     def _check_build(self) -> dict[str, tuple[object, str]] | None:
@@ -560,22 +886,17 @@ class ServoSlave(Fmi2Slave):
         info = json.loads(info_file.read_text())
         here = _runtime_hash()
         if info["package_hash"] != here:
-            import servofmu
-
-            raise RuntimeError(
-                f"{type(self).__name__}: this FMU was built with servofmu {info['version']} "
-                f"({info['package_hash'][:12]}), but the servofmu already imported in this "
-                f"process ({servofmu.__version__}, {here[:12]}, from "
-                f"{Path(servofmu.__file__).parent}) differs. Python imports a package once per "
-                "process: load FMUs built from one servofmu version together, or rebuild them "
-                "with `servofmu build`."
-            )
+            raise RuntimeError(different_build(type(self).__name__, info, here))
         return {name: (value, "") for name, value in info.get("start", {}).items()}
 
     # ------------------------------------------------------------------ XML
     def to_xml(self, model_options=None):
         """The complete modelDescription (see module docstring)."""
-        root = super().to_xml(model_options or {})
+        phase, self._phase = self._phase, _DESCRIBING  # pythonfmu reads the start values
+        try:
+            root = super().to_xml(model_options or {})
+        finally:
+            self._phase = phase
         variables = root.find("ModelVariables")
         for sv in variables.findall("ScalarVariable"):
             _complete_variable(sv, self._by_name[sv.get("name")])
@@ -600,7 +921,8 @@ class ServoSlave(Fmi2Slave):
         raise NotImplementedError
 
     def advance(self, current_time: float, step_size: float) -> bool:
-        """Stepped FMUs: advance the hidden state over the step and set the outputs."""
+        """Stepped FMUs: advance the hidden state over the step and set the outputs; False
+        (with ``_error`` naming why) when the step cannot be taken."""
         raise NotImplementedError
 
     def _initialise(self) -> bool:
@@ -616,11 +938,12 @@ class ServoSlave(Fmi2Slave):
         """Stepped FMUs: outputs right after initialization."""
 
     def hidden_state(self) -> dict:
-        """JSON-serialisable state not held in FMI variables."""
+        """JSON-serialisable state not held in FMI variables (the same fields every time)."""
         return {}
 
     def restore_hidden_state(self, state: dict):
-        """Inverse of :meth:`hidden_state`."""
+        """Inverse of :meth:`hidden_state`; raises (ValueError, TypeError, KeyError) on a
+        field it cannot take, and the base class then restores what was there."""
 
 
 _CAST = {"Real": float, "Integer": int, "Boolean": bool, "Enumeration": int}
@@ -665,6 +988,31 @@ def _range_checker(checks: tuple[tuple[str, float, float], ...]):
         f"def ok(slave):\n    return {' and '.join(tests) or 'True'}\n", namespace
     )  # names checked
     return namespace["ok"]
+
+
+@functools.cache
+def _finite_checker(outputs: tuple[tuple[str, bool], ...]):
+    """A function ``ok(slave)``: True when every ``slave.<name>`` of ``outputs`` (name,
+    allow_inf) is finite (+inf too where allowed); compiled once like :func:`_range_checker`."""
+    if not all(name.isidentifier() for name, _ in outputs):
+        raise ValueError(f"output names must be identifiers: {outputs}")
+    tests = [f"-inf < slave.{n} {'<=' if inf else '<'} inf" for n, inf in outputs]
+    namespace = {"inf": math.inf}
+    exec(  # names checked above
+        f"def ok(slave):\n    return {' and '.join(tests) or 'True'}\n", namespace
+    )
+    return namespace["ok"]
+
+
+def _experiment_problem(start, stop, tolerance) -> str:
+    """Why fmi2SetupExperiment's arguments are unusable ("" when they are not)."""
+    if not math.isfinite(start):
+        return f"startTime = {start!r} is not finite"
+    if stop is not None and not (math.isfinite(stop) and stop >= start):
+        return f"stopTime = {stop!r} is not a finite time at or after startTime = {start!r}"
+    if tolerance is not None and not (math.isfinite(tolerance) and tolerance >= 0.0):
+        return f"tolerance = {tolerance!r} is not a finite number ≥ 0"
+    return ""
 
 
 def check_variables(variables) -> list[str]:

@@ -597,11 +597,12 @@ def _tolerances(r: _Reader, data: Mapping, mounting: str, nominal: Mapping, note
         except ValueError:
             notes.append(
                 f"tolerances: the catalogue has no tolerance bands for mounting {mounting!r} "
-                "(physics/data/tolerances.toml): no Monte-Carlo draws; give them in "
-                "[tolerances.bands] of the input file"
+                "(physics/data/tolerances.toml, or a user catalogue's [tolerances.MOUNTING]): "
+                "no Monte-Carlo draws; give them in [tolerances.bands] of the input file"
             )
             return None
-        return Tolerances(found, samples, seed, f"catalogue (tolerances.toml, {mounting})")
+        where = catalog.origin("tolerances", mounting)
+        return Tolerances(found, samples, seed, f"catalogue ({where}, {mounting})")
     if not isinstance(bands, Mapping) or not bands:
         r.fail(f'tolerances.bands = {bands!r} must be "catalogue" or a table of bands')
         return None

@@ -1,7 +1,7 @@
 """Reproductions of the source papers: validation reports, CSV curves and PNG figures.
 
-``servofmu paper yu2017|ning|liu2014|validation [--json] [--out DIR]``; see :mod:`.report`
-for the format.
+``servofmu paper yu2017|ning|liu2014|validation [--json] [--out DIR]``; see
+:mod:`servofmu.papers.report` for the format.
 """
 
 PAPERS = ("yu2017", "ning", "liu2014", "validation")

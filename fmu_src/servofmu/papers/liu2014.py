@@ -3,7 +3,7 @@ method of servo mechanism", Navigation Positioning and Timing 2014(2):46–49.
 
 The paper's figures (ratio and compliance shares versus output angle) lost their numbers;
 Table 1 survives: component stiffnesses at +10° for 100/200/300 N·m, the series theory and
-the measurement. Rows, by kind (:mod:`.report`):
+the measurement. Rows, by kind (:mod:`servofmu.papers.report`):
 
 - check: the series total of Table 1 from its own component values (eq 6);
 - calibration: the unknown linkage dimensions on the 100 N·m column (crank length on F3,

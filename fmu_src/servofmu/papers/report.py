@@ -1,4 +1,4 @@
-"""Validation report of a paper reproduction (DESIGN §5).
+"""Validation report of a paper reproduction.
 
 Each published number or statement becomes a :class:`Row` that says what it is (``kind``) and
 how it came out (``status``). The status is computed by comparing the computed value with the

@@ -8,6 +8,7 @@ per step), bearing (the composed model), actuator (Liu 2014), motor, control, th
 (part temperatures of a mechanism), catalog (records kept as data in ``data/*.toml``).
 """
 
+#: The main modules (:func:`load_all` imports every module of the package)
 MODULES = (
     "units",
     "materials",
@@ -46,9 +47,10 @@ def load_all() -> None:
     True
     """
     import importlib
+    import pkgutil
 
-    for name in MODULES:
-        importlib.import_module(f"{__name__}.{name}")
+    for module in pkgutil.iter_modules(__path__):  # every module, not only MODULES
+        importlib.import_module(f"{__name__}.{module.name}")
     from .catalog import preload
 
     preload()

@@ -6,9 +6,14 @@ argument, its offending value and the valid range, instead of returning NaN.
 
 from __future__ import annotations
 
+import difflib
 import math
 
 import numpy as np
+
+#: The temperatures the models accept [K]: the FMUs' declared range of every temperature
+#: input and parameter (−100…+200 °C).
+TEMPERATURE_RANGE = (173.15, 473.15)
 
 
 def _first_bad(values: np.ndarray, bad: np.ndarray) -> float:
@@ -190,6 +195,73 @@ def check_temperature(name: str, value):
     return check_range(name, value, 0.0, None, lo_open=True, unit="K")
 
 
+def check_operating_temperature(name: str, value):
+    """A temperature [K] within :data:`TEMPERATURE_RANGE`, the range the FMUs declare; a value
+    outside it that would lie inside it read as °C gets a hint ("−40 looks like °C: 233.15 K").
+
+    Parameters
+    ----------
+    name : str
+        The variable's name.
+    value : float or array_like
+        Temperature(s) [K].
+
+    Returns
+    -------
+    float or ndarray
+        ``value`` [K] as float (array); ValueError naming the first bad value, the range and,
+        where it fits, the kelvin value it would be in °C.
+
+    Examples
+    --------
+    >>> check_operating_temperature("temperature", 233.15)
+    233.15
+    >>> try:
+    ...     check_operating_temperature("temperature", -40.0)
+    ... except ValueError as e:
+    ...     print(e)
+    temperature = -40.0 K is outside the valid range [173.15, 473.15] K; -40 looks like °C: 233.15 K
+    """
+    lo, hi = TEMPERATURE_RANGE
+    try:
+        return check_range(name, value, lo, hi, unit="K")
+    except ValueError as err:
+        arr = np.asarray(value, dtype=float)
+        bad = arr[~(np.isfinite(arr) & (arr >= lo) & (arr <= hi))]
+        first = float(bad.flat[0]) if bad.size else math.nan
+        kelvin = first + 273.15
+        if math.isfinite(first) and lo <= kelvin <= hi:
+            raise ValueError(f"{err}; {first:g} looks like °C: {kelvin:.10g} K") from None
+        raise
+
+
+def suggest(word, choices) -> str:
+    """ " (did you mean 'x'?)" for the closest of ``choices`` to a mistyped ``word`` (difflib's
+    ratio ≥ 0.6), or "" when none is close.
+
+    Parameters
+    ----------
+    word : str
+        What was typed.
+    choices : iterable of str
+        The valid words.
+
+    Returns
+    -------
+    str
+        The hint, with a leading space, or "".
+
+    Examples
+    --------
+    >>> suggest("friction_vs_temprature", ["friction_vs_temperature", "thermal_cycle"])
+    " (did you mean 'friction_vs_temperature'?)"
+    >>> suggest("xyz", ["bore", "width"])
+    ''
+    """
+    close = difflib.get_close_matches(str(word), [str(c) for c in choices], n=1)
+    return f" (did you mean {close[0]!r}?)" if close else ""
+
+
 def check_choice(name: str, value: str, choices) -> str:
     """One of a fixed set of strings.
 
@@ -213,5 +285,7 @@ def check_choice(name: str, value: str, choices) -> str:
     'grease'
     """
     if value not in choices:
-        raise ValueError(f"{name} = {value!r} is not one of {sorted(choices)}")
+        raise ValueError(
+            f"{name} = {value!r} is not one of {sorted(choices)}{suggest(value, choices)}"
+        )
     return value

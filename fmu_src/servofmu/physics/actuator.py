@@ -1,43 +1,81 @@
-"""Stiffness of an electromechanical actuator: gear train → ball screw → crank-slider linkage
+r"""Stiffness of an electromechanical actuator: gear train → ball screw → crank-slider linkage
 → output shaft, in a housing (Liu Yuan, Wang Yongle, Cao Donghai, Liu Tao 2014, "A stiffness
 calculation method of servo mechanism", Navigation Positioning and Timing 2014(2):46–49),
 plus the screw's support bearings as a Hertzian element (this project's extension).
 
-Geometry of the crank-slider (Liu Fig 5; the figure is lost, this layout satisfies eq 9–16):
-the output shaft C is the origin; the crank CB of length L1 stands at angle θ from the slide
-direction x, B = L1·(cos θ, sin θ); the connecting rod BA of length L2 joins the ball-screw nut
-A, which slides on y = Y1: A = (L1·cos θ + L2·cos γ, Y1) with
+**Geometry of the crank-slider** (Liu Fig 5; the figure is lost, this layout satisfies
+eq 9–16): the output shaft C is the origin; the crank CB of length :math:`L_1` stands at
+angle θ from the slide direction x, :math:`B = L_1(\cos\theta, \sin\theta)`; the connecting
+rod BA of length :math:`L_2` joins the ball-screw nut A, which slides on :math:`y = Y_1`:
+:math:`A = (L_1\cos\theta + L_2\cos\gamma,\; Y_1)` with (eq 9, corrected: printed inverted)
 
-    sin γ = (L1·sin θ − Y1)/L2                       (eq 9, corrected: printed inverted).
+.. math::
 
-The output (rudder) angle is δ = θ − θ0, counter-clockwise positive. The nut position x_A(θ)
-is solved exactly (eq 2–3 without the small-angle expansion), and its derivative
-dx/dθ = −L1·(sin θ + cos θ·tan γ) is the kinematic lever that reflects every axial
-stiffness of the screw line to the output shaft: K_out = (dx/dθ)²·k_axial.
+   \sin\gamma = \frac{L_1\sin\theta - Y_1}{L_2}.
 
-Reduction ratios (eq 1, 4, 5): i_s = 2π·L1/p (eq 1: the nut travel read as the arc of the
-crank of length L1 — Liu names that lever "L", the connecting rod's name in eq 9, but only
-the crank radius makes the ratio dimensionless), i = i_g·(2π/p)·|dx/dθ| (eq 4), and
-i_r = i/(i_g·i_s) = |dx/dθ|/L1 (eq 5): 1 where the rod is square to the crank.
+The output (rudder) angle is :math:`\delta = \theta - \theta_0`, counter-clockwise positive.
+The nut position :math:`x_A(\theta)` is solved exactly (eq 2–3 without the small-angle
+expansion), and its derivative
 
-Series stiffness at the output (eq 6–8):
-    1/K = 1/((i_s·i_r)²·K_gear) + 1/(i_r²·K_screw) + 1/K_rod + 1/K_body (+ 1/K_support)
-with K_gear torsional at the screw shaft, K_screw = k_screw·L1² the screw's axial stiffness
-at the crank radius (so i_r²·K_screw = (dx/dθ)²·k_screw), K_body = (dx/dθ)²·k_body.
+.. math::
 
-Linkage stiffness (eq 9–20): rod force F2 = M/(L1·sin β) (eq 10), screw force
-F3 = F2·cos γ (eq 11), the crank and rod stretch by N·L/(E·A) (eq 12–13), the deformed
-mechanism is closed again with the nut held (eq 14–16, solved exactly as the intersection of
-two circles), the output shaft twists by M·l/(G·I1) (eq 17) and the output arm bends as a
-cantilever by M·l³/(3·E·I·L1) (eq 18, corrected: the printed form lacks the second moment of
-area I), adding arctan(M·l²/(3·E·I·L1)) to the rotation (eq 19), and K_rod = M/Δθ (eq 20).
-Every term is linear in M for small deflections: eq 9–20 give a load-independent K_rod.
+   \frac{dx}{d\theta} = -L_1\,(\sin\theta + \cos\theta\tan\gamma)
 
-Motor side (this project): the motor angle from the neutral position is the nut travel in
-motor radians, φ = ±(i_g·2π/p)·(x_A(θ0 + δ) − x_A(θ0)), with dφ/dδ = i (eq 4). Its inverse is
-closed form: the crank pin lies on the circle of radius L1 about the output shaft and on the
-circle of radius L2 about the nut, so θ = ψ ± arccos((L1² + R² − L2²)/(2·L1·R)) with
-R = |CA|, ψ = atan2(Y1, x_A); the reach ends at the dead centres (R = L1 + L2, |L2 − L1|).
+is the kinematic lever that reflects every axial stiffness of the screw line to the output
+shaft: :math:`K_\mathrm{out} = (dx/d\theta)^2\,k_\mathrm{axial}`.
+
+**Reduction ratios** (eq 1, 4, 5):
+
+.. math::
+
+   i_s = \frac{2\pi L_1}{p}, \qquad
+   i = i_g\,\frac{2\pi}{p}\left|\frac{dx}{d\theta}\right|, \qquad
+   i_r = \frac{i}{i_g\,i_s} = \frac{|dx/d\theta|}{L_1}
+
+(eq 1 reads the nut travel as the arc of the crank of length :math:`L_1`: Liu names that
+lever "L", the connecting rod's name in eq 9, but only the crank radius makes the ratio
+dimensionless); :math:`i_r = 1` where the rod is square to the crank.
+
+**Series stiffness at the output** (eq 6–8):
+
+.. math::
+
+   \frac{1}{K} = \frac{1}{(i_s i_r)^2 K_\mathrm{gear}} + \frac{1}{i_r^2 K_\mathrm{screw}}
+   + \frac{1}{K_\mathrm{rod}} + \frac{1}{K_\mathrm{body}}
+   \;\left(+ \frac{1}{K_\mathrm{support}}\right)
+
+with :math:`K_\mathrm{gear}` torsional at the screw shaft,
+:math:`K_\mathrm{screw} = k_\mathrm{screw} L_1^2` the screw's axial stiffness at the crank
+radius (so :math:`i_r^2 K_\mathrm{screw} = (dx/d\theta)^2 k_\mathrm{screw}`) and
+:math:`K_\mathrm{body} = (dx/d\theta)^2 k_\mathrm{body}`.
+
+**Linkage stiffness** (eq 9–20): rod force :math:`F_2 = M/(L_1\sin\beta)` (eq 10), screw
+force :math:`F_3 = F_2\cos\gamma` (eq 11), the crank and rod stretch by N·L/(E·A)
+(eq 12–13), the deformed mechanism is closed again with the nut held (eq 14–16, solved
+exactly as the intersection of two circles), the output shaft twists by
+:math:`M l/(G I_1)` (eq 17) and the output arm bends as a cantilever by
+:math:`M l^3/(3 E I L_1)` (eq 18, corrected: the printed form lacks the second moment of
+area I), adding :math:`\arctan(M l^2/(3 E I L_1))` to the rotation (eq 19), and
+:math:`K_\mathrm{rod} = M/\Delta\theta` (eq 20). Every term is linear in M for small
+deflections: eq 9–20 give a load-independent :math:`K_\mathrm{rod}`.
+
+**Motor side** (this project): the motor angle from the neutral position is the nut travel in
+motor radians,
+
+.. math::
+
+   \varphi = \pm\,i_g\,\frac{2\pi}{p}\,\bigl(x_A(\theta_0 + \delta) - x_A(\theta_0)\bigr),
+   \qquad \frac{d\varphi}{d\delta} = i \quad \text{(eq 4)}.
+
+Its inverse is closed form: the crank pin lies on the circle of radius :math:`L_1` about the
+output shaft and on the circle of radius :math:`L_2` about the nut, so
+
+.. math::
+
+   \theta = \psi \pm \arccos\frac{L_1^2 + R^2 - L_2^2}{2 L_1 R}, \qquad
+   R = |CA|, \qquad \psi = \operatorname{atan2}(Y_1, x_A);
+
+the reach ends at the dead centres (:math:`R = L_1 + L_2` and :math:`R = |L_2 - L_1|`).
 """
 
 from __future__ import annotations
@@ -49,7 +87,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_finite, check_positive, check_range, check_temperature
+from ._checks import (
+    check_finite,
+    check_operating_temperature,
+    check_positive,
+    check_range,
+)
 from .temperatures import PartTemperatures
 from .units import DEG
 
@@ -653,7 +696,7 @@ def stiffness_breakdown(
     delta, m, t = np.broadcast_arrays(
         np.asarray(check_finite("output_angle", output_angle, "rad"), dtype=float),
         np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float),
-        np.asarray(check_temperature("temperature", temperature), dtype=float),
+        np.asarray(check_operating_temperature("temperature", temperature), dtype=float),
     )
     kin = kinematics(act, delta)
     lever2 = kin.lever**2
@@ -744,7 +787,7 @@ def support_axial_stiffness(act: Actuator, screw_force, temperature):
     """
     f3, t = np.broadcast_arrays(
         np.asarray(check_finite("screw_force", screw_force, "N"), dtype=float),
-        np.asarray(check_temperature("temperature", temperature), dtype=float),
+        np.asarray(check_operating_temperature("temperature", temperature), dtype=float),
     )
     if not act.support_mounting:
         return np.full(f3.shape, np.inf)

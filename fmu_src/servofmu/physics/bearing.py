@@ -2,29 +2,29 @@
 
 Where each part lives (Yu 2017 §1–3; Ning §1–2):
 
-- :mod:`.pair` — the configuration: :class:`BearingPair` (bearing, mounting, lubrication,
+- :mod:`.pair`: the configuration, :class:`BearingPair` (bearing, mounting, lubrication,
   coefficients) and :func:`with_mounting`;
-- :mod:`.pair_state` — the exact state, vectorised over operating points:
+- :mod:`.pair_state`: the exact state, vectorised over operating points:
   :func:`thermal_state` (Yu eq 10–18), :func:`load_state` (Jones; eq 1–7, Ning),
   :func:`bearing_outputs` (eq 8–9, breakaway, regularised sign) and
   :func:`operating_outputs` (all three);
-- :mod:`.continuation` — the same equations solved per step from the previous step's
+- :mod:`.continuation`: the same equations solved per step from the previous step's
   solution, on floats;
 - here, :class:`BearingModel`: the per-step evaluation an FMU calls, continuation first and
   a cold start on the same floats when the warm start fails, and the exact path when that
   fails too.
 
-The names of :mod:`.pair` and :mod:`.pair_state` are re-exported here, so that
-``from servofmu.physics.bearing import BearingPair, thermal_state`` keeps working.
 """
 
 from __future__ import annotations
 
-import math
-
 from . import pair_kernels
+from ._checks import TEMPERATURE_RANGE as _TEMPERATURE_RANGE
+from ._checks import check_operating_temperature
 from .continuation import kernels
 from .mounting import Mounting
+
+# the public names of .pair and .pair_state are importable from here as well
 from .pair import (
     DEFAULT_COEFFICIENTS,
     LUBRICATIONS,
@@ -81,20 +81,21 @@ __all__ = [
     "with_mounting",
 ]
 
-#: Valid range of a part temperature [K] on the per-step path.
-TEMPERATURE_RANGE = (0.0, math.inf)
+#: Valid range of a part temperature [K]: the FMUs' (:data:`._checks.TEMPERATURE_RANGE`).
+TEMPERATURE_RANGE = _TEMPERATURE_RANGE
+_LO, _HI = TEMPERATURE_RANGE
 
 
 def _temperatures(temperature) -> tuple[float, float, float, float]:
     """(housing, shaft, outer ring, inner ring) [K] as floats from a uniform temperature, a
-    :class:`PartTemperatures` or a 4-tuple; ValueError naming a non-finite or non-positive
-    one."""
-    if type(temperature) is float and 0.0 < temperature < math.inf:  # the per-step cases
+    :class:`PartTemperatures` or a 4-tuple; ValueError naming one outside
+    :data:`TEMPERATURE_RANGE` (with a hint when it looks like °C)."""
+    if type(temperature) is float and _LO <= temperature <= _HI:  # the per-step cases
         return (temperature, temperature, temperature, temperature)
     if type(temperature) is tuple and len(temperature) == 4:
         h, s, o, i = temperature
         if type(h) is type(s) is type(o) is type(i) is float and (
-            0.0 < h < math.inf and 0.0 < s < math.inf and 0.0 < o < math.inf and 0.0 < i < math.inf
+            _LO <= h <= _HI and _LO <= s <= _HI and _LO <= o <= _HI and _LO <= i <= _HI
         ):
             return temperature
     if isinstance(temperature, PartTemperatures):
@@ -105,9 +106,9 @@ def _temperatures(temperature) -> tuple[float, float, float, float]:
         t = float(temperature)
         temps = (t, t, t, t)
     for name, t in zip(PARTS, temps, strict=True):
-        if not (0.0 < t < math.inf):
+        if not (_LO <= t <= _HI):
             label = "temperature" if temps.count(t) == 4 else f"{name}_temperature"
-            raise ValueError(f"{label} = {t!r} K is outside the valid range (0, inf) K")
+            check_operating_temperature(label, t)
     return temps
 
 
@@ -202,7 +203,7 @@ class BearingModel:
             Every output of :meth:`evaluate` that does not move with speed (torques [N·m],
             forces [N], angle [rad], lengths [m], stiffness [N/m], pressures [Pa], flags).
         """
-        if type(temperature) is float:  # the per-step case
+        if type(temperature) is float and _LO <= temperature <= _HI:  # the per-step case
             t_h = t_s = t_o = t_i = temperature
         else:
             t_h, t_s, t_o, t_i = _temperatures(temperature)

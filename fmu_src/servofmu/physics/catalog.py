@@ -12,6 +12,7 @@ import functools
 import tomllib
 from importlib import resources
 
+from ._checks import suggest
 from .fits import RadialFit
 from .geometry import (
     BallBearing,
@@ -45,7 +46,10 @@ def _package_table(name: str) -> dict:
 
 
 #: Tables a user catalogue may add entries to (``servofmu build --catalog``).
-USER_TABLES = ("materials", "lubricants", "bearings", "mountings")
+USER_TABLES = ("materials", "lubricants", "bearings", "mountings", "coefficients", "tolerances")
+#: User tables keyed by a mounting whose entries take precedence over the package's for that
+#: mounting (a user's calibration, a user's tolerance bands), so their keys may exist already.
+MOUNTING_TABLES = ("coefficients", "tolerances")
 #: Entries added by user catalogues: {table: {key: (entry, file)}}, in the order added.
 _USER: dict[str, dict[str, tuple[dict, str]]] = {t: {} for t in USER_TABLES}
 _generation = [0]
@@ -105,7 +109,7 @@ def generation() -> int:
 def _changed() -> None:
     _generation[0] += 1
     for cached in (material, lubricant_record, lubricant, bearing, mounting,
-                   mounting_coefficients):  # fmt: skip
+                   mounting_coefficients, calibrated_loop_stiffness):  # fmt: skip
         cached.cache_clear()
 
 
@@ -141,7 +145,8 @@ def add_entries(tables: dict[str, dict], file: str) -> None:
         if not isinstance(entries, dict):
             raise ValueError(f"{file}: [{table}] must be a table of entries")
         for key, entry in entries.items():
-            if key in _table(table):
+            taken = key in _USER[table] if table in MOUNTING_TABLES else key in _table(table)
+            if taken:
                 raise ValueError(
                     f"{file}: {table}.{key} exists already (in {origin(table, key)}): choose "
                     "another key"
@@ -192,9 +197,15 @@ def check_entries(table: str, keys_: list[str]) -> None:
     >>> check_entries("bearings", ["71803", "7002C"])
     """
     loader = {"materials": material, "lubricants": lubricant_record, "bearings": bearing,
-              "mountings": mounting}[table]  # fmt: skip
+              "mountings": mounting, "coefficients": _user_coefficients,
+              "tolerances": tolerances}[table]  # fmt: skip
     for key in keys_:
         try:
+            if table in MOUNTING_TABLES and key not in _table("mountings"):
+                raise ValueError(
+                    f"{table} are given per mounting, and {key!r} is no mounting"
+                    f"{suggest(key, _table('mountings'))}"
+                )
             loader(key)
         except (KeyError, ValueError, TypeError) as err:
             msg = f"field {err.args[0]!r} is missing" if isinstance(err, KeyError) else str(err)
@@ -234,7 +245,9 @@ def quantity(entry: dict, field: str) -> tuple[float, str]:
 def _lookup(table: str, key: str) -> dict:
     data = _table(table)
     if key not in data:
-        raise ValueError(f"{table[:-1]} key = {key!r} is not one of {sorted(data)}")
+        raise ValueError(
+            f"{table[:-1]} key = {key!r} is not one of {sorted(data)}{suggest(key, data)}"
+        )
     return data[key]
 
 
@@ -888,9 +901,10 @@ def actuator_entry(key: str) -> tuple[dict, dict, dict]:
 
 @functools.cache
 def mounting_coefficients(key: str):
-    """The friction coefficients that go with mounting ``key``: the set its entry names
-    (``coefficients = ...``; the variants of one gimbal share one calibration), else the set of
-    its own key, else None.
+    """The friction coefficients that go with mounting ``key``: a user catalogue's set of that
+    mounting (``[coefficients.KEY]``, e.g. written by ``servofmu calibrate``), else the set its
+    entry names (``coefficients = ...``; the variants of one gimbal share one calibration),
+    else the set of its own key, else None.
 
     Returns
     -------
@@ -899,18 +913,57 @@ def mounting_coefficients(key: str):
     >>> mounting_coefficients("yu2017_gimbal_rigid") == coefficients("yu2017_gimbal")
     True
     """
-    name = mounting_entry(key).get("coefficients", key)
+    name = key if key in _USER["coefficients"] else mounting_entry(key).get("coefficients", key)
     return coefficients(name) if name in _table("coefficients") else None
 
 
+def coefficient_set_name(key: str) -> str | None:
+    """The coefficient set mounting ``key`` takes (see :func:`mounting_coefficients`): its
+    key, or None when the mounting has none.
+
+    Returns
+    -------
+    str or None
+
+    >>> coefficient_set_name("yu2017_gimbal_spring"), coefficient_set_name("liu2014_screw_support")
+    ('yu2017_gimbal', None)
+    """
+    name = key if key in _USER["coefficients"] else mounting_entry(key).get("coefficients", key)
+    return name if name in _table("coefficients") else None
+
+
+#: Fields of a coefficient set (``data/coefficients.toml``, a user's ``[coefficients.KEY]``):
+#: the friction coefficients, and the loop stiffness a calibration may have fitted.
+COEFFICIENT_FIELDS = (
+    "hysteresis_loss",
+    "sliding_friction",
+    "static_friction_ratio",
+    "palmgren_s0",
+    "loop_stiffness",
+)
+#: Where a calibration's data are recorded in a set (``servofmu calibrate``): free-form text.
+CALIBRATION_RECORD = "calibrated_on"
+
+
+def _coefficient_quantities(key: str) -> dict[str, tuple[float, str]]:
+    entry = _lookup("coefficients", key)
+    extra = sorted(set(entry) - set(COEFFICIENT_FIELDS) - {CALIBRATION_RECORD})
+    if extra:
+        raise ValueError(
+            f"fields {extra} are not among {list(COEFFICIENT_FIELDS)} (and "
+            f"{CALIBRATION_RECORD!r}){suggest(extra[0], COEFFICIENT_FIELDS)}"
+        )
+    return {f: quantity(spec, f) for f, spec in entry.items() if f in COEFFICIENT_FIELDS}
+
+
 def coefficients(key: str):
-    """The :class:`friction.FrictionCoefficients` of mounting ``key`` from
-    ``data/coefficients.toml``.
+    """The :class:`friction.FrictionCoefficients` of set ``key`` (``data/coefficients.toml``,
+    or a user catalogue's ``[coefficients.KEY]``).
 
     Parameters
     ----------
     key : str
-        A key of ``data/coefficients.toml``.
+        A key of ``data/coefficients.toml`` or of a user catalogue's coefficients.
 
     Returns
     -------
@@ -924,12 +977,52 @@ def coefficients(key: str):
     """
     from .friction import FrictionCoefficients
 
-    entry = _lookup("coefficients", key)
-    values, prov = {}, []
-    for field, spec in entry.items():
-        values[field], src = quantity(spec, field)
-        prov.append((field, src))
-    return FrictionCoefficients(**values, provenance=tuple(prov))
+    q = _coefficient_quantities(key)
+    q.pop("loop_stiffness", None)
+    return FrictionCoefficients(
+        **{f: v for f, (v, _) in q.items()}, provenance=tuple((f, s) for f, (_, s) in q.items())
+    )
+
+
+def _user_coefficients(key: str) -> None:
+    """Check a user catalogue's set ``key``: its friction coefficients and loop stiffness."""
+    coefficients(key)
+    calibrated_loop_stiffness(key)
+
+
+@functools.cache
+def calibrated_loop_stiffness(key: str) -> tuple[float, str] | None:
+    """(loop stiffness [N/m], provenance) that a user catalogue's set of mounting ``key``
+    gives (a calibration that fitted it), else None.
+
+    Returns
+    -------
+    tuple or None
+
+    >>> calibrated_loop_stiffness("yu2017_gimbal") is None
+    True
+    """
+    if key not in _USER["coefficients"]:
+        return None
+    found = _coefficient_quantities(key).get("loop_stiffness")
+    if found is not None and not found[0] > 0:
+        raise ValueError(f"loop_stiffness = {found[0]!r} N/m must be > 0")
+    return found
+
+
+def calibration_record(key: str) -> dict:
+    """The ``calibrated_on`` table of coefficient set ``key`` (what a calibration was fitted
+    on), ``{}`` without one.
+
+    Returns
+    -------
+    dict
+
+    >>> calibration_record("yu2017_gimbal")
+    {}
+    """
+    record = _lookup("coefficients", key).get(CALIBRATION_RECORD, {})
+    return dict(record) if isinstance(record, dict) else {"note": str(record)}
 
 
 def tolerances(key: str) -> dict[str, tuple[float, float, str]]:
@@ -993,21 +1086,9 @@ def thermal(key: str) -> dict:
     }
 
 
-TABLES = (
-    "bearing_rules",
-    "materials",
-    "lubricants",
-    "bearings",
-    "mountings",
-    "actuators",
-    "coefficients",
-    "tolerances",
-    "thermal",
-)
-
-
 def preload() -> None:
-    """Read every data table now (they are cached): see :func:`servofmu.physics.load_all`.
+    """Read every data table now, each ``data/*.toml`` of the package (they are cached): see
+    :func:`servofmu.physics.load_all`.
 
     Returns
     -------
@@ -1016,6 +1097,9 @@ def preload() -> None:
     Examples
     --------
     >>> preload()
+    >>> _package_table.cache_info().currsize >= 12  # the package's twelve tables
+    True
     """
-    for name in TABLES:
-        _package_table(name)
+    for entry in resources.files(__package__).joinpath("data").iterdir():
+        if entry.name.endswith(".toml"):
+            _package_table(entry.name.removesuffix(".toml"))

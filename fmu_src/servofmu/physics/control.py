@@ -1,15 +1,21 @@
-"""Discrete PID controller with output limit and anti-windup (the ServoController FMU's law).
+r"""Discrete PID controller with output limit and anti-windup (the ServoController FMU's law).
 
-Parallel form sampled every T_s, derivative on the measurement (no kick on reference steps)
-with a first-order filter, conditional integration (clamping) as anti-windup (Åström &
-Hägglund, *Advanced PID Control*, 2006, ch. 3):
+Parallel form sampled every :math:`T_s`, derivative on the measurement (no kick on reference
+steps) with a first-order filter (backward Euler), conditional integration (clamping) as
+anti-windup (Åström & Hägglund, *Advanced PID Control*, 2006, ch. 3):
 
-    e_k   = r_k − y_k
-    D_k   = (T_f·D_{k−1} − K_d·(y_k − y_{k−1})) / (T_f + T_s)      backward-Euler filter
-    v_k   = K_p·e_k + I_k + D_k,   u_k = clip(v_k, u_min, u_max)
-    I_{k+1} = I_k + K_i·T_s·e_k   unless u_k is saturated and e_k drives it further.
+.. math::
 
-The same law serves a position loop (r, y in rad) and a speed loop (r, y in rad/s).
+   e_k = r_k - y_k
+
+   D_k = \frac{T_f\,D_{k-1} - K_d\,(y_k - y_{k-1})}{T_f + T_s}
+
+   v_k = K_p\,e_k + I_k + D_k, \qquad u_k = \operatorname{clip}(v_k, u_\mathrm{min}, u_\mathrm{max})
+
+   I_{k+1} = I_k + K_i\,T_s\,e_k
+
+the last unless :math:`u_k` is saturated and :math:`e_k` drives it further. The same law
+serves a position loop (r, y in rad) and a speed loop (r, y in rad/s).
 """
 
 from __future__ import annotations

@@ -1,32 +1,52 @@
-"""Hydrodynamic (EHL) rolling resistance of lubricated ball–race contacts, per contact, and
+r"""Hydrodynamic (EHL) rolling resistance of lubricated ball–race contacts, per contact, and
 the torque it costs a ball bearing.
 
 Per contact (Biboulet & Houpert 2010, "Hydrodynamic force and moment in pure rolling
-lubricated contacts. Part 2: point contacts", Proc. IMechE J 224:777–787, eq 2, 14, 31, 32):
+lubricated contacts. Part 2: point contacts", Proc. IMechE Part J 224:777–787, eq 2, 14, 31,
+32), the rolling force
 
-    F_R = E'·Rx²·T̃*,   T̃* = (2a/Rx)·[(0.77·β^(−1/3)·κ^0.12·U^(−1/12) − 1.8·β^(−1/4))
-                                      / (1 + M/6.6) + 1.8·β^(−1/4)]·U^(3/4)
-    U = 2·η0·u_m/(E'·Rx),  W = w/(E'·Rx²),  M = β^(1/4)·κ·W/U^(3/4),
-    β = (4/π)·ℰ/(1 + Rx/Rz),  κ = b/a,  2/E' = (1 − ν1²)/E1 + (1 − ν2²)/E2,
+.. math::
+
+   F_R = E'\,R_x^2\,\tilde{T}^*, \qquad
+   \tilde{T}^* = \frac{2a}{R_x}\left[\frac{0.77\,\beta^{-1/3}\kappa^{0.12}U^{-1/12}
+   - 1.8\,\beta^{-1/4}}{1 + M/6.6} + 1.8\,\beta^{-1/4}\right] U^{3/4}
+
+with the dimensionless speed, load and their combination
+
+.. math::
+
+   U = \frac{2\,\eta_0\,u_m}{E' R_x}, \qquad W = \frac{w}{E' R_x^2}, \qquad
+   M = \frac{\beta^{1/4}\,\kappa\,W}{U^{3/4}},
+
+and the geometry
+
+.. math::
+
+   \beta = \frac{4}{\pi}\,\frac{\mathcal{E}}{1 + R_x/R_z}, \qquad \kappa = \frac{b}{a},
+   \qquad \frac{2}{E'} = \frac{1 - \nu_1^2}{E_1} + \frac{1 - \nu_2^2}{E_2}:
 
 a smooth, fully flooded, isothermal fit from the isoviscous-rigid (IVR, M → 0) to the EHL
-(M → ∞) asymptote; a, b the Hertz semi-axes across and along the rolling direction, ℰ the
-complete elliptic integral of the second kind of the contact ellipse, u_m the mean of the two
-surface speeds relative to the contact. The force acts on both surfaces against their motion,
-so a contact dissipates 2·F_R·u_m.
+(M → ∞) asymptote; a, b the Hertz semi-axes across and along the rolling direction,
+:math:`\mathcal{E}` the complete elliptic integral of the second kind of the contact ellipse,
+:math:`u_m` the mean of the two surface speeds relative to the contact. The force acts on both
+surfaces against their motion, so a contact dissipates :math:`2 F_R u_m`.
 
 Bearing torque (power balance): with the outer ring fixed and no spin, both contacts of a
-ball roll at u_m = (dm/4)·(1 − γ²)·|ω|, γ = Dw·cos α/dm, so the torque about the axis is
+ball roll at :math:`u_m = (d_m/4)(1 - \gamma^2)\,|\omega|`, :math:`\gamma = D_w\cos\alpha/d_m`,
+so the torque about the axis is
 
-    M = Σ_balls Σ_(inner, outer) 2·F_R·u_m/|ω| = Σ F_R·dm·(1 − γ²)/2.
+.. math::
 
-For a thrust rig (α = 90°, race radius r = dm/2) this is 6·r·F_R for three balls, the
-expression Bălan et al. (2015, Lubricants 3:222, eq 14) use.
+   M = \sum_\mathrm{balls}\;\sum_\mathrm{inner,\,outer} \frac{2 F_R u_m}{|\omega|}
+     = \sum F_R\,\frac{d_m (1 - \gamma^2)}{2}.
+
+For a thrust rig (α = 90°, race radius r = dm/2) this is :math:`6 r F_R` for three balls,
+the expression Bălan et al. (2015, Lubricants 3:222, eq 14) use.
 
 Bălan et al. (2015, eq 1–7) print a simplified version of the same fit, with
-U = η0·v/(E*·Rx), v the mean speed, and coefficients 2.9766 and 7.5826 that absorb
-Biboulet's factor 2 in U: with the same u_m, the two agree within about 10 % (tested), so
-there is no inconsistency, only two parameterisations. This module follows the original.
+:math:`U = \eta_0 v/(E^* R_x)`, v the mean speed, and coefficients 2.9766 and 7.5826 that
+absorb Biboulet's factor 2 in U: with the same :math:`u_m`, the two agree within about 10 %,
+two parameterisations of one fit. This module follows the original.
 """
 
 from __future__ import annotations

@@ -1,18 +1,29 @@
-"""Quasi-static equilibrium of a ball bearing under axial load, radial load and moment.
+r"""Quasi-static equilibrium of a ball bearing under axial load, radial load and moment.
 
 Jones (1960) / Harris & Kotzalas (2007), *Advanced Concepts of Bearing Technology*, ch. 1
 ("distribution of internal loading"), without centrifugal and gyroscopic terms (servo
-mechanisms run slowly). Ball j at azimuth ψ_j = 2πj/Z sees its inner-groove curvature centre
-displaced from the outer one by
+mechanisms run slowly). Ball j at azimuth :math:`\psi_j = 2\pi j/Z` sees its inner-groove
+curvature centre displaced from the outer one by
 
-    A1_j = a + θ·R·cos ψ_j                         (axial; a = axial offset from the centred
-                                                     position, see :mod:`geometry`)
-    A2_j = (A − Pd/2) + δr·cos ψ_j                 (radial)
+.. math::
 
-so that s_j = √(A1² + A2²), the contact deformation is δ_j = s_j − A (no load when ≤ 0), the
-contact angle is α_j = atan2(A1_j, A2_j), and Q_j = K_n(α_j)·δ_j^1.5 with K_n the series
-load–deflection constant of the inner and outer Hertz contacts at α_j. The ring loads are
-Fa = Σ Q sin α, Fr = Σ Q cos α cos ψ, M = Σ Q sin α·R·cos ψ.
+   A_{1j} = a + \theta\,R\cos\psi_j \quad \text{(axial)}, \qquad
+   A_{2j} = (A - P_d/2) + \delta_r\cos\psi_j \quad \text{(radial)},
+
+a being the axial offset from the centred position (see :mod:`.geometry`), so that
+
+.. math::
+
+   s_j = \sqrt{A_{1j}^2 + A_{2j}^2}, \qquad \delta_j = s_j - A, \qquad
+   \alpha_j = \operatorname{atan2}(A_{1j}, A_{2j}), \qquad Q_j = K_n(\alpha_j)\,\delta_j^{1.5}
+
+(no load when :math:`\delta_j \le 0`), with :math:`K_n` the series load–deflection constant
+of the inner and outer Hertz contacts at :math:`\alpha_j`. The ring loads are
+
+.. math::
+
+   F_a = \sum Q\sin\alpha, \qquad F_r = \sum Q\cos\alpha\cos\psi, \qquad
+   M = \sum Q\sin\alpha\,R\cos\psi.
 
 The tilt arm R is a choice (:func:`tilt_arm_radius`, keyword ``tilt_arm``):
 

@@ -1,10 +1,17 @@
-"""Radial thermal coupling of the rings with housing and shaft (Yu 2017 eq 10–13; Ning §2.1).
+r"""Radial thermal coupling of the rings with housing and shaft (Yu 2017 eq 10–13; Ning §2.1).
 
-Free thermal growth (Yu eq 10): D₁ = D·(1 + α·ΔT). An interference fit between a ring and its
-seat creates a contact pressure p given by Lamé's thick-cylinder solution (Yu eq 12–13):
-the seat and the ring deform until their radial displacements close the interference.
+Free thermal growth (Yu eq 10):
 
-Corrections to the printed equations (noted where they apply):
+.. math::
+
+   D_1 = D\,(1 + \alpha\,\Delta T).
+
+An interference fit between a ring and its seat creates a contact pressure p given by Lamé's
+thick-cylinder solution (Yu eq 12–13): the seat and the ring deform until their radial
+displacements close the interference.
+
+Corrections to the printed equations:
+
 - Yu eq 11–13 swap the names of the ring outer diameter and the outer-groove diameter; here the
   ring is an annulus from its groove diameter to its outside diameter, as eq 12's structure
   requires.

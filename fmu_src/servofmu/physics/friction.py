@@ -1,20 +1,41 @@
-"""Friction torque of a ball bearing: elastic hysteresis, ball spin, differential (Heathcote)
+r"""Friction torque of a ball bearing: elastic hysteresis, ball spin, differential (Heathcote)
 sliding and Palmgren's viscous torque, plus the breakaway/running distinction and a smooth
 regularisation through zero speed.
 
-Grease-lubricated bearing (Yu 2017): M = M_R + M_K + M_L (eq 9) with
-  eq 1–3  hysteresis: each contact resists rolling with F = 3·α_r·b·Q/(16·R), R = Dw/2 the
-          ball radius (Johnson 1985, Contact Mechanics, ch. 9: the hysteresis rolling moment
-          3·α·b·Q/16 divided by the rolling radius; Yu calls R the "Hertz contact radius"),
-          acting at the race contact radius d/2 = (dm ∓ Dw·cos α)/2 (eq 2), summed (eq 3);
-  eq 5–7  spin: M'_K = (3/8)·μ·Q·a·E(e) per contact (Harris & Kotzalas 2007), the larger of
-          inner and outer, projected on the bearing axis by sin α (eq 7);
-  eq 8    Palmgren's viscous torque, see :func:`palmgren_viscous_torque`.
-Solid-lubricated bearing (Ning; equations missing from the received text, reconstructed):
-  hysteresis as above at both races (Ning cites Snare / Jones; same rolling-resistance form);
-  differential sliding at both races (Heathcote slip, :func:`heathcote_sliding_force`; Ning's
-  M_di, M_do with the variables f, Q, a, α, μ, dm, Dw he lists); spin at the inner race only
-  ("outer-race control", Jones 1960), projected by sin α_i; no viscous term.
+**Grease-lubricated bearing** (Yu 2017 eq 9): the running torque is the sum of the rolling
+(hysteresis), spin and viscous parts,
+
+.. math::
+
+   M = M_R + M_K + M_L .
+
+- *Hysteresis* (Yu eq 1–3): each contact resists rolling with the force
+
+  .. math::
+
+     F = \frac{3\,\alpha_r\,b\,Q}{16\,R}, \qquad R = D_w/2,
+
+  the ball radius (Johnson 1985, *Contact Mechanics*, ch. 9: the hysteresis rolling moment
+  :math:`3\alpha_r b Q/16` divided by the rolling radius; Yu calls R the "Hertz contact
+  radius"), acting at the race contact radius :math:`d/2 = (d_m \mp D_w\cos\alpha)/2`
+  (eq 2), summed over the contacts (eq 3).
+- *Spin* (Yu eq 5–7): per contact
+
+  .. math::
+
+     M'_K = \tfrac{3}{8}\,\mu\,Q\,a\,\mathcal{E}(e)
+
+  (Harris & Kotzalas 2007), the larger of inner and outer, projected on the bearing axis by
+  :math:`\sin\alpha` (eq 7).
+- *Viscous* (Yu eq 8): Palmgren's load-independent torque, see
+  :func:`palmgren_viscous_torque`.
+
+**Solid-lubricated bearing** (Ning; the equations are missing from the published text and are
+reconstructed here): hysteresis as above at both races (Ning cites Snare and Jones; the same
+rolling-resistance form); differential sliding at both races (Heathcote slip,
+:func:`heathcote_sliding_force`, with the variables f, Q, a, α, μ, dm, Dw that Ning lists for
+his :math:`M_{di}`, :math:`M_{do}`); spin at the inner race only ("outer-race control",
+Jones 1960), projected by :math:`\sin\alpha_i`; no viscous term.
 """
 
 from __future__ import annotations

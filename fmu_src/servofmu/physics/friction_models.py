@@ -1,35 +1,44 @@
-"""The friction model of a bearing pair, one of three (BearingFriction's ``friction_model``),
+r"""The friction model of a bearing pair, one of three (BearingFriction's ``friction_model``),
 and a grease term that any of them can carry. This module composes equations written
-elsewhere; it writes none itself:
+elsewhere; it writes none itself.
 
 - ``yu2017`` (the default; Yu 2017 eq 1–9): per contact the elastic hysteresis, the spin and,
   for a dry film, the differential sliding (:mod:`.friction`), and Palmgren's viscous torque
-  M0 ∝ s0·(ν·n)^(2/3)·dm³ per bearing;
+  :math:`M_0 \propto s_0\,(\nu n)^{2/3} d_m^3` per bearing.
 - ``skf2004`` (SKF 2004, :mod:`.rolling_friction`): each bearing of the pair with its own
-  axial load from the equilibrium (preload included) and its share F_r/2 of the radial load:
-  M = φish·φrs·Mrr + Msl (+ Mseal = 0: open bearings, + Mdrag = 0: no oil bath), starting
-  torque Msl(n → 0); the series constants are numbers (the catalogue's series, or the labelled
-  fallback of :func:`.rolling_friction.series_constants`). The per-contact terms of Yu are
-  not part of it (hysteresis and spin are 0 in its outputs);
+  axial load from the equilibrium (preload included) and its share :math:`F_r/2` of the
+  radial load,
+
+  .. math::
+
+     M = \phi_\mathrm{ish}\,\phi_\mathrm{rs}\,M_\mathrm{rr} + M_\mathrm{sl}
+
+  (:math:`M_\mathrm{seal} = 0`: open bearings; :math:`M_\mathrm{drag} = 0`: no oil bath),
+  starting torque :math:`M_\mathrm{sl}(n \to 0)`. The series constants are numbers (the
+  catalogue's series, or the labelled fallback of :func:`.rolling_friction.series_constants`).
+  The per-contact terms of Yu are not part of it (hysteresis and spin are 0 in its outputs).
 - ``ehl_per_contact`` (:mod:`.ehl_rolling`): the hydrodynamic rolling torque of every
   ball–race contact (Biboulet & Houpert 2010) from that contact's load, contact angle and Hertz
-  ellipse and the lubricant's dynamic viscosity η = ν(T)·ρ at the part temperatures, in place
-  of Palmgren's term, plus Yu's hysteresis and spin (and Ning's sliding for a dry film) per
-  contact. No thermal (inlet shear) or starvation reduction is applied: Biboulet &
-  Houpert's fit is for a fully flooded, isothermal contact, and SKF's factors φish and φrs are
-  empirical for a bearing's total rolling moment, not for one contact. For scale, on the
-  gimbal's 71803 at 10 °/s and −40 °C (Krytox 143AA, ν = 4.1e4 mm²/s) φish is 1 − 1.6e-4
-  (inlet heating is negligible at servo speeds), while SKF's replenishment factor for grease
-  is 0.92 there and 0.0019 at −60 °C for Yu's law extrapolated there (2.9e6 mm²/s; the model
-  holds −40 °C's viscosity below −40 °C, the end of Krytox 143AA's data): a starved, slowly turning
-  grease-packed contact would have less rolling torque than this model gives, by an amount no
-  cited per-contact law gives here (tests/test_friction_models.py checks these numbers).
+  ellipse and the lubricant's dynamic viscosity :math:`\eta = \nu(T)\,\rho` at the part
+  temperatures, in place of Palmgren's term, plus Yu's hysteresis and spin (and Ning's sliding
+  for a dry film) per contact.
 
-The grease term (:mod:`.grease_torque`, 0 = off) adds, per bearing, Palmgren's M0 with a
-factor f0 calibrated on a grease datasheet's low-temperature torque test, at the base oil's
-viscosity ν(T) and the bearing's mean diameter (d + D)/2, to the running torque; and the
-datasheet's starting ratio ks times M0 at the test's speed to the breakaway torque (never
-below the running torque at rest). Its limits are those of :mod:`.grease_torque`.
+No thermal (inlet shear) or starvation reduction is applied to the EHL model: Biboulet &
+Houpert's fit is for a fully flooded, isothermal contact, and SKF's factors
+:math:`\phi_\mathrm{ish}` and :math:`\phi_\mathrm{rs}` are empirical for a bearing's total
+rolling moment, not for one contact. For scale, on the gimbal's 71803 at 10 °/s and −40 °C
+(Krytox 143AA, ν = 4.1e4 mm²/s) :math:`\phi_\mathrm{ish}` is 1 − 1.6e-4 (inlet heating is
+negligible at servo speeds), while SKF's replenishment factor for grease is 0.92 there and
+0.0019 at −60 °C (ν extrapolated to 2.9e6 mm²/s): a starved, slowly turning grease-packed
+contact would have less rolling torque than this model gives, by an amount no cited
+per-contact law gives.
+
+The grease term (:mod:`.grease_torque`, 0 = off) adds, per bearing, Palmgren's
+:math:`M_0` with a factor :math:`f_0` calibrated on a grease datasheet's low-temperature
+torque, at the base oil's viscosity ν(T) and the bearing's mean diameter (d + D)/2, to the
+running torque; and the datasheet's starting ratio :math:`k_s` times :math:`M_0` at the
+test's speed to the breakaway torque (never below the running torque at rest). Its limits are
+those of :mod:`.grease_torque`.
 
 Everything here is elementwise on Python floats (the per-step path) or numpy arrays (the
 exact vectorised path), so both paths compose the same functions.

@@ -1,4 +1,4 @@
-"""Torque of a grease-packed ball bearing at low temperature, calibrated on a grease
+r"""Torque of a grease-packed ball bearing at low temperature, calibrated on a grease
 datasheet's low-temperature torque test and carried to another bearing by Palmgren's law.
 
 The datasheet tests (records with provenance in ``data/grease_torques.toml``, ``[tests]``):
@@ -18,8 +18,11 @@ The datasheet tests (records with provenance in ``data/grease_torques.toml``, ``
 Running torque: Palmgren's load-independent torque (Palmgren 1959, *Ball and Roller Bearing
 Engineering*; the form of Yu 2017 eq 8, :func:`friction.palmgren_viscous_torque`)
 
-    M0 = 1e-7·f0·(ν·n)^(2/3)·dm³ [N·mm]  (ν·n ≥ 2000 mm²/s·r/min; 160e-7·f0·dm³ below),
+.. math::
 
+   M_0 = 10^{-7} f_0\,(\nu n)^{2/3} d_m^3 \quad [\mathrm{N\,mm}]
+
+for :math:`\nu n \ge 2000` mm²/s·r/min (:math:`160\times10^{-7} f_0\,d_m^3` below),
 ν the base oil's kinematic viscosity at the bearing temperature, n in r/min, dm in mm. The
 grease factor f0 is calibrated on one datasheet running torque (:func:`grease_factor`); the
 law then carries it to another temperature (through ν(T)), speed (n^(2/3)) and bearing

@@ -1,19 +1,28 @@
-"""Permanent-magnet DC motor with its load inertia (the DCMotor FMU's equations).
+r"""Permanent-magnet DC motor with its load inertia (the DCMotor FMU's equations):
 
-    L·di/dt = V − R·i − k_e·ω
-    J·dω/dt = k_t·i − b·ω − T_load
-    dφ/dt  = ω
+.. math::
 
-with armature resistance R [Ω], inductance L [H], torque constant k_t [N·m/A], back-EMF
-constant k_e [V·s/rad], inertia J [kg·m²] and viscous damping b [N·m·s/rad] (a textbook
-model, e.g. Franklin, Powell & Emami-Naeini, *Feedback Control of Dynamic Systems*, ch. 2).
+   L\,\frac{di}{dt} = V - R\,i - k_e\,\omega, \qquad
+   J\,\frac{d\omega}{dt} = k_t\,i - b\,\omega - T_\mathrm{load}, \qquad
+   \frac{d\varphi}{dt} = \omega
 
-The equations are linear with constant coefficients, so with the inputs (V, T_load) held over a
-communication step h the exact solution is x(t + h) = Φ(h)·x(t) + Γ(h)·u with Φ = e^{A·h} and
-Γ = ∫₀ʰ e^{A·τ}dτ·B (zero-order hold; both from one matrix exponential of the augmented
-matrix, scipy.linalg.expm). It is exact for any step and unconditionally stable, so one
-"sub-step" per communication step is as accurate as any number of them; the electrical time
-constant L/R (often well below the step) needs no special treatment.
+with armature resistance R [Ω], inductance L [H], torque constant :math:`k_t` [N·m/A],
+back-EMF constant :math:`k_e` [V·s/rad], inertia J [kg·m²] and viscous damping b [N·m·s/rad]
+(a textbook model, e.g. Franklin, Powell & Emami-Naeini, *Feedback Control of Dynamic
+Systems*, ch. 2).
+
+The equations are linear with constant coefficients, so with the inputs
+(V, :math:`T_\mathrm{load}`) held over a communication step h the exact solution is
+
+.. math::
+
+   x(t + h) = \Phi(h)\,x(t) + \Gamma(h)\,u, \qquad \Phi = e^{A h}, \qquad
+   \Gamma = \int_0^h e^{A\tau}\,d\tau\;B
+
+(zero-order hold; both from one matrix exponential of the augmented matrix,
+``scipy.linalg.expm``). It is exact for any step and unconditionally stable, so one sub-step
+per communication step is as accurate as any number of them; the electrical time constant L/R
+(often well below the step) needs no special treatment.
 
 Coulomb friction of the bearings (:func:`step_with_friction`) is applied inside the motor,
 implicitly, on sub-steps of at most ``substep`` seconds: each sub-step first takes the

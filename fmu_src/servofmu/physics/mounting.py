@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ._checks import check_positive, check_temperature
+from ._checks import check_operating_temperature, check_positive
 from .fits import RadialFit
 from .preload import ARRANGEMENTS, TANDEM, PreloadLoop, arrangement_problems
 
@@ -45,7 +45,7 @@ class Mounting:
     arrangement: str = "face_to_face"
 
     def __post_init__(self):
-        check_temperature("assembly_temperature", self.assembly_temperature)
+        check_operating_temperature("assembly_temperature", self.assembly_temperature)
         if self.assembly_preload is not None:
             check_positive("assembly_preload", self.assembly_preload, "N")
         if self.arrangement not in ARRANGEMENTS:

@@ -503,7 +503,7 @@ def _first(c):
 
 @dataclass(slots=True)
 class BearingOutputs:
-    """Everything the BearingFriction FMU reports (DESIGN §3), SI; arrays or floats.
+    """Everything the BearingFriction FMU reports, SI; arrays or floats.
 
     friction_torque [N·m] signed like speed (opposes rotation), running_torque and
     breakaway_torque [N·m], hysteresis/spin/sliding/viscous_torque [N·m] (viscous: the

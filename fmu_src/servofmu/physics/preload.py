@@ -1,4 +1,4 @@
-"""Axial thermal coupling: preload of a bearing pair in a frame–shaft loop (Yu 2017 eq 14–17;
+r"""Axial thermal coupling: preload of a bearing pair in a frame–shaft loop (Yu 2017 eq 14–17;
 Ning §2.2).
 
 The two bearings (A and B, face-to-face or back-to-back: identical for axial and radial
@@ -7,31 +7,39 @@ loads, tilt is not modelled; tandem below) sit in a closed loop of parts: "openi
 (Yu: the shaft L and the two bearing widths; Ning: the bearings and the spacer) whose growth
 increases it.
 
-Compatibility (Yu eq 14–15 rewritten with the general geometry of :mod:`geometry`):
+Compatibility (Yu eq 14–15 rewritten with the general geometry of :mod:`.geometry`):
 
-    a_A + a_B + N/k_loop = C(T),   C(T) = 2·h(T0) + s − Σ_j σ_j·L_j·α_j·(T − T0)
+.. math::
 
-with a_A, a_B the axial offsets of the groove curvature centres of the two bearings, h(T0) the
-first-contact offset at assembly, s the shim (Yu's washer δp: the axial interference added
-after the play is taken up), σ_j = +1 for opening and −1 for closing members, N = (F_A + F_B)/2
-the loop force and k_loop the structural axial stiffness of the loop (Yu eq 15's 1/C1, by
-default Σ L/(E·A) of the members with a section; a compliant yoke is modelled by setting it).
-Equilibrium adds F_A − F_B = F_ext.
+   a_A + a_B + \frac{N}{k_\mathrm{loop}} = C(T), \qquad
+   C(T) = 2\,h(T_0) + s - \sum_j \sigma_j L_j \alpha_j (T - T_0)
+
+with :math:`a_A`, :math:`a_B` the axial offsets of the groove curvature centres of the two
+bearings, :math:`h(T_0)` the first-contact offset at assembly, s the shim (Yu's washer δp: the
+axial interference added after the play is taken up), :math:`\sigma_j = +1` for opening and −1
+for closing members, :math:`N = (F_A + F_B)/2` the loop force and :math:`k_\mathrm{loop}` the
+structural axial stiffness of the loop (Yu eq 15's 1/C1, by default Σ L/(E·A) of the members
+with a section; a compliant yoke is modelled by setting it). Equilibrium adds
+:math:`F_A - F_B = F_\mathrm{ext}`.
 
 A tandem pair (both bearings facing the same way, :data:`ARRANGEMENTS`) has no such loop: a
 spring or a constant force pushes the set, the two bearings share that thrust and the
 external load, and the members between them only set how far B sits along the thrust
 relative to A (:func:`tandem_offsets`, :func:`tandem_equilibrium`):
 
-    F_A(a_A) + F_B(a_A + d) + k_s·a_A = T + F_ext,   d(T) = −Σ_j σ_j·L_j·α_j·(T_j − T0)
+.. math::
+
+   F_A(a_A) + F_B(a_A + d) + k_s\,a_A = T + F_\mathrm{ext}, \qquad
+   d(T) = -\sum_j \sigma_j L_j \alpha_j (T_j - T_0).
 
 Notes on the printed equations:
+
 - Yu eq 14 assigns steel's expansion and modulus to the frame and aluminium's to the shaft,
   against the stated materials (cast-aluminium frame, 45-steel shaft). Both readings are
   offered as data (mountings ``yu2017_gimbal`` and ``yu2017_gimbal_printed``); the stated
   reading also lets the steel bearing widths 2·b0 grow, which eq 14 leaves out.
 - Yu eq 16–17 (Harris's thrust relation in terms of the free contact angle) are singular once
-  the clearance is negative; the general geometry (:func:`equilibrium.axial_state`) replaces
+  the clearance is negative; the general geometry (:func:`.equilibrium.axial_state`) replaces
   them and reduces to them for positive clearance.
 - Yu's Pe (axial play) and δp: read literally, eq 14 with Pe = 2·h (≈ 96 µm for the mounted
   71803) would leave a 0.03 mm washer without any preload; the washer is read here as the

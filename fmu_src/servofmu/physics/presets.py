@@ -400,17 +400,99 @@ def _cached_preset(_generation: int, mounting: str, lubrication: str | None,
             lub_sources[f] = f"not used (solid lubrication): {grease_src[f]}"
     parts.append((lub_values, lub_sources))
     parts.append(_coefficient_values(mounting, lub_values["lubrication"] == "solid"))
+    calibrated = catalog.calibrated_loop_stiffness(mounting)
+    if calibrated is not None:  # a user's calibration fitted the loop's stiffness
+        parts.append(({"loop_stiffness": calibrated[0]}, {"loop_stiffness": calibrated[1]}))
     for v, s in parts:
         values |= v
         sources |= s
     return Preset(values, sources)
 
 
+@dataclass(frozen=True)
+class CoefficientSet:
+    """What a mounting's friction coefficients (α_r, μ, μ_s/μ, s0 of the ``yu2017`` model) are.
+
+    Attributes
+    ----------
+    key : the coefficient set's key (``data/coefficients.toml`` or a user catalogue), or None
+        for the library's defaults
+    kind : "calibrated" (some fitted on measurements), "assumed" (a catalogue set, none
+        fitted) or "uncalibrated" (the library's defaults: no set for the mounting)
+    label : one line for reports, plots and documentation
+    """
+
+    key: str | None
+    kind: str
+    label: str
+
+    @property
+    def calibrated(self) -> bool:
+        """Whether any coefficient of the set was fitted on measurements."""
+        return self.kind == "calibrated"
+
+
+def coefficient_set(mounting: str) -> CoefficientSet:
+    """The friction coefficients mounting ``mounting`` takes, said plainly: the Yu-calibrated
+    set, a user's calibration (``servofmu calibrate``), a catalogue set of assumed values, or
+    the library's uncalibrated defaults (a new bearing until it is calibrated). The other
+    friction models (``skf2004``, ``ehl_per_contact``) use literature constants besides.
+
+    Returns
+    -------
+    CoefficientSet
+
+    Examples
+    --------
+    >>> label = coefficient_set("yu2017_gimbal_spring").label
+    >>> label.split(":")[0], "palmgren_s0 fitted on Yu 2017's −40 °C torques" in label
+    ('Yu-calibrated', True)
+    >>> coefficient_set("liu2014_screw_support").kind
+    'uncalibrated'
+    """
+    name = catalog.coefficient_set_name(mounting)
+    if name is None:
+        d = FrictionCoefficients()
+        return CoefficientSet(
+            None,
+            "uncalibrated",
+            f"uncalibrated: the library's defaults (α_r {d.hysteresis_loss:g}, μ "
+            f"{d.sliding_friction:g}, μ_s/μ {d.static_friction_ratio:g}, s0 "
+            f"{d.palmgren_s0:g}); torques are estimates until calibrated (servofmu calibrate)",
+        )
+    coef = catalog.coefficients(name)
+    fitted = [
+        f for f, src in coef.provenance if src.startswith("calibrated") and f != "loop_stiffness"
+    ]
+    fitted += ["loop_stiffness"] if catalog.calibrated_loop_stiffness(mounting) else []
+    where = catalog.origin("coefficients", name)
+    if not fitted:
+        return CoefficientSet(
+            name, "assumed", f"assumed: set {name} ({where}), none fitted on measurements"
+        )
+    if where.startswith("data/"):  # the package's sets: Yu's is its only calibrated one
+        on = " on Yu 2017's −40 °C torques" if name == DEFAULT_MOUNTING else ""
+        return CoefficientSet(
+            name,
+            "calibrated",
+            f"{'Yu-' if on else ''}calibrated: {', '.join(fitted)} fitted{on}, the others "
+            f"assumed (set {name}, {where})",
+        )
+    record = catalog.calibration_record(name)
+    data = f" on {record['data']}" if "data" in record else ""
+    return CoefficientSet(
+        name,
+        "calibrated",
+        f"calibrated by the user (set {name}, {where}){data}: {', '.join(fitted)} fitted",
+    )
+
+
 def _coefficient_values(mounting: str, solid: bool) -> tuple[dict, dict]:
     coef = catalog.mounting_coefficients(mounting) or FrictionCoefficients()
     fields = ("hysteresis_loss", "sliding_friction", "static_friction_ratio", "palmgren_s0")
     values = {f: float(getattr(coef, f)) for f in fields}
-    sources = {f: coef.source(f) or "assumed: library default" for f in fields}
+    default = "assumed: uncalibrated library default (physics.friction.FrictionCoefficients)"
+    sources = {f: coef.source(f) or default for f in fields}
     if solid:
         values["palmgren_s0"] = 0.0
         sources["palmgren_s0"] = "assumed: dry film, no viscous torque"

@@ -1,35 +1,61 @@
-"""The SKF (2004) model of the frictional moment of a rolling bearing, for deep-groove and
-angular-contact ball bearings.
+r"""The SKF (2004) model of the frictional moment of a rolling bearing, for deep-groove and
+angular-contact ball bearings (SKF, "Friction"):
 
-    M = φish·φrs·Mrr + Msl + Mseal + Mdrag                       (SKF, "Friction")
-    Mrr = Grr·(ν·n)^0.6                       rolling, Grr from Table 2a/2b
-    Msl = Gsl·μsl,  μsl = φbl·μbl + (1 − φbl)·μEHL,  φbl = 1/e^(2.6e-8·(n·ν)^1.4·dm)
-    φish = 1/(1 + 1.84e-9·(n·dm)^1.28·ν^0.64)                 inlet shear heating
-    φrs = 1/e^(Krs·ν·n·(d + D)·√(Kz/(2·(D − d))))              replenishment/starvation
-    Mstart = Msl + Mseal   (n → 0: φbl = 1, μsl = μbl)          starting torque
+.. math::
+
+   M = \phi_\mathrm{ish}\,\phi_\mathrm{rs}\,M_\mathrm{rr} + M_\mathrm{sl}
+       + M_\mathrm{seal} + M_\mathrm{drag}
+
+with the rolling moment (:math:`G_\mathrm{rr}` from Table 2a/2b)
+
+.. math::
+
+   M_\mathrm{rr} = G_\mathrm{rr}\,(\nu n)^{0.6},
+
+the sliding moment
+
+.. math::
+
+   M_\mathrm{sl} = G_\mathrm{sl}\,\mu_\mathrm{sl}, \qquad
+   \mu_\mathrm{sl} = \phi_\mathrm{bl}\,\mu_\mathrm{bl} + (1 - \phi_\mathrm{bl})\,\mu_\mathrm{EHL},
+   \qquad
+   \phi_\mathrm{bl} = \frac{1}{e^{2.6\times10^{-8}\,(n\nu)^{1.4}\,d_m}},
+
+the inlet shear heating and the replenishment/starvation reduction factors
+
+.. math::
+
+   \phi_\mathrm{ish} = \frac{1}{1 + 1.84\times10^{-9}\,(n\,d_m)^{1.28}\,\nu^{0.64}},
+   \qquad
+   \phi_\mathrm{rs} = \frac{1}{e^{K_\mathrm{rs}\,\nu\,n\,(d + D)\sqrt{K_z/(2(D - d))}}},
+
+and the starting torque (:math:`n \to 0`: :math:`\phi_\mathrm{bl} = 1`,
+:math:`\mu_\mathrm{sl} = \mu_\mathrm{bl}`)
+
+.. math::
+
+   M_\mathrm{start} = M_\mathrm{sl} + M_\mathrm{seal}.
 
 The catalogue writes every equation in its own units: dm, d, D [mm], F [N], n [r/min],
 ν [mm²/s], M [N·mm]. The functions here take and return SI (m, N, rad/s, m²/s, N·m) and
-convert at the edge (:data:`servofmu.physics.units`).
+convert at the edge (:mod:`servofmu.physics.units`).
 
-Sources and the printing used (see also ``data/skf_friction.toml``):
+Sources (see also ``data/skf_friction.toml``):
 
-- SKF, *Rolling bearings*, chapter "Friction", section "The SKF model for calculating the
-  frictional moment": the sliding moment, μsl, φbl, μbl ≈ 0.15 and the μEHL values, and
-  Table 2a "Geometric and load dependent variables for rolling and sliding frictional
-  moments – radial bearings" (on printed p. 104, as the sliding-moment page cites it) were read
-  from the stored copy "SKF - Rolling Bearings" (yumpu document 55668573, pages 105–106). Its
-  title and its Table 2a/2b numbering are those of PUB BU/P1 10000 EN (2012/2013); the cover
-  was not among the stored pages. The model first appeared in the General Catalogue 6000 EN
+- SKF, *Rolling bearings*, PUB BU/P1 10000 EN (2012), chapter "Friction", section "The SKF
+  model for calculating the frictional moment", pp. 104–106: the sliding moment,
+  :math:`\mu_\mathrm{sl}`, :math:`\phi_\mathrm{bl}`, :math:`\mu_\mathrm{bl} \approx 0.15`,
+  the :math:`\mu_\mathrm{EHL}` values and Table 2a "Geometric and load dependent variables
+  for rolling and sliding frictional moments – radial bearings" (value as transcribed,
+  original not checked). The model first appeared in the SKF General Catalogue 6000 EN
   (2005, "The new SKF model", pp. 89–103) and is unchanged in PUB BU/P1 17000 EN (2018).
-- The starting torque Mstart = Msl + Mseal, "at an ambient temperature of 20 to 30 °C":
-  skf.com, "Friction – Starting torque" (stored page).
-- φish and φrs: the catalogue's variables and their units were read on skf.com ("Inlet shear
-  heating reduction factor"); the printed formulas (an image there) are the ones above, as
-  also transcribed in two independent open implementations (stored code). They are cited to
-  the catalogue but were not read from a catalogue page.
+- The starting torque, "at an ambient temperature of 20 to 30 °C": SKF, "Friction – Starting
+  torque", https://www.skf.com (value as transcribed, original not checked).
+- :math:`\phi_\mathrm{ish}` and :math:`\phi_\mathrm{rs}`: the variables and their units as
+  SKF's web pages on the inlet shear heating and replenishment factors define them; the
+  formulas above as printed in the catalogue (value as transcribed, original not checked).
 - The geometry constants R1…S3 and Kz are data with per-value provenance in
-  ``data/skf_friction.toml``; which of them were verified is stated there.
+  ``data/skf_friction.toml``, which states which of them were verified.
 
 The catalogue's model is for a single bearing under its own radial and axial load. For a
 preloaded pair, evaluate each bearing with its own (Fr, Fa) and add the moments.
@@ -52,7 +78,7 @@ BEARING_TYPES = ("deep_groove", "angular_contact")
 REPLENISHMENT_KRS = {"oil_bath": 3.0e-8, "oil_jet": 3.0e-8, "grease": 6.0e-8, "oil_air": 6.0e-8}
 
 #: μbl, the boundary (additive-dependent) sliding coefficient, "generally ≈ 0,15" (SKF 10000 EN
-#: p. 103, stored copy p. 105).
+#: p. 103).
 MU_BOUNDARY = 0.15
 #: μEHL, the full-film sliding coefficient of ball bearings (SKF 10000 EN p. 103): mineral
 #: oils 0.05, synthetic oils 0.04, transmission fluids 0.1.
@@ -753,8 +779,8 @@ def series_constants(designation: str, contact_angle: float) -> SkfConstants:
     -------
     :class:`SkfConstants` with per-value provenance
 
-    >>> series_constants("7205B", math.radians(40.0)).source("r1")[:32]
-    'catalogue: SKF 10000 EN Table 2b'
+    >>> series_constants("7205B", math.radians(40.0)).source("r1")[:40]
+    'catalogue: SKF, Rolling bearings, PUB BU'
     >>> series_constants("71803", math.radians(15.0)).source("r1")[:20]
     'fallback (assumed): '
     """

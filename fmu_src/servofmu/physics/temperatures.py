@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_temperature
+from ._checks import check_operating_temperature
 
 #: The temperature inputs of a mounting, in the order of :class:`PartTemperatures`.
 PARTS = ("housing", "shaft", "outer_ring", "inner_ring")
@@ -56,7 +56,7 @@ class PartTemperatures:
         >>> PartTemperatures.uniform(293.15).shaft
         293.15
         """
-        t = check_temperature("temperature", temperature)
+        t = check_operating_temperature("temperature", temperature)
         return cls(t, t, t, t)
 
     @property
@@ -89,7 +89,7 @@ class PartTemperatures:
 
 def part_temperatures(temperature) -> PartTemperatures:
     """``temperature`` as a checked :class:`PartTemperatures`: a float or array [K] is a
-    uniform temperature; a record has each of its parts checked (finite, > 0 K).
+    uniform temperature; a record has each of its parts checked (within the FMUs' 173.15…473.15 K).
 
     Returns
     -------
@@ -101,6 +101,9 @@ def part_temperatures(temperature) -> PartTemperatures:
     """
     if isinstance(temperature, PartTemperatures):
         return PartTemperatures(
-            *(check_temperature(f"{p}_temperature", getattr(temperature, p)) for p in PARTS)
+            *(
+                check_operating_temperature(f"{p}_temperature", getattr(temperature, p))
+                for p in PARTS
+            )
         )
     return PartTemperatures.uniform(temperature)

@@ -1,23 +1,26 @@
-"""Lumped-capacitance thermal network of a bearing mechanism (the ThermalNetwork FMU's equations).
+r"""Lumped-capacitance thermal network of a bearing mechanism (the ThermalNetwork FMU's equations).
 
 Nodes (each part isothermal; SI throughout): housing (frame), shaft, outer rings, inner rings of
 the bearing pair. The balls are not a node: each ball's capacity goes half to each ring, and its
 two contacts are conductances in series between the rings. The lubricant's capacity is
 neglected: a 30 % fill of a 71803's free space with PFPE grease (≈ 1.9 g/cm³, ≈ 1 J/(g·K))
 holds about 0.4 J/K per bearing (an estimate), a tenth of its rings and balls and 0.2 % of
-frame and shaft; a MoS2 film holds nothing. Energy balance of node k (capacity C_k [J/K],
-temperature T_k [K]):
+frame and shaft; a MoS2 film holds nothing. Energy balance of node k (capacity
+:math:`C_k` [J/K], temperature :math:`T_k` [K]):
 
-    C_k·dT_k/dt = Σ_j G_kj·(T_j − T_k)                       conduction between parts [W/K]
-                + G_k,a·(T_a − T_k)                          convection, mounting [W/K]
-                − σ·ε_k·A_k·(T_k⁴ − T_s⁴)                     radiation to the sink [m²]
-                − Σ_j σ·𝓔_kj·(T_k⁴ − T_j⁴)                   radiation between parts [m²]
-                + s_k·P                                      the bearing's power loss [W]
+.. math::
 
-with the ambient (chamber air, mounting plate) temperature T_a, the radiative sink (chamber
+   C_k\,\frac{dT_k}{dt} = \sum_j G_{kj}\,(T_j - T_k) + G_{k,a}\,(T_a - T_k)
+   - \sigma\,\varepsilon_k A_k\,(T_k^4 - T_s^4)
+   - \sum_j \sigma\,\mathcal{F}_{kj}\,(T_k^4 - T_j^4) + s_k\,P
+
+with the conductances between parts :math:`G_{kj}` and to the ambient (convection, mounting)
+:math:`G_{k,a}` [W/K], the radiating areas :math:`\varepsilon_k A_k` and exchange areas
+:math:`\mathcal{F}_{kj}` [m²], the share :math:`s_k` of the bearing's power loss P [W], the
+ambient (chamber air, mounting plate) temperature T_a, the radiative sink (chamber
 walls, shroud, space) T_s and σ = 5.670374419e-8 W/(m²·K⁴). The conductances:
 
-- ring fits: G = h_c·π·D·B per bearing seat; h_c from the thermal contact resistances of
+- ring fits: :math:`G = h_c\,\pi D B` per bearing seat; h_c from the thermal contact resistances of
   Incropera et al. (2007), *Fundamentals of Heat and Mass Transfer*, 6th ed., Table 3.1(a):
   stainless steel in vacuum, 6–25e-4 m²·K/W at 100 kPa and 0.7–4.0e-4 at 10 MPa (geometric
   means), interpolated as a power of the Lamé fit pressure of the assembly (:mod:`.fits`;
@@ -25,11 +28,12 @@ walls, shroud, space) T_s and σ = 5.670374419e-8 W/(m²·K⁴). The conductance
   clearance fit; in air the air-filled interface of Table 3.1(b) (2.75e-4) is the lower
   bound. The stainless rows are scaled with the harmonic-mean conductivity of the two metals,
   as the contact conductance of Mikic/Yovanovich, h_c = 1.25·k_s·(m/σ)·(P/H_c)^0.95, is
-  proportional to it (Yovanovich & Marotta 2003, in Bejan & Kraus, *Heat Transfer Handbook*,
-  ch. 4). The fit pressure changes with temperature; the conductances stay at their assembly
-  values.
+  proportional to it (Yovanovich & Marotta 2003, in Bejan & Kraus, *Heat Transfer
+  Handbook*, ch. 4). The fit pressure changes with temperature; the conductances stay at
+  their assembly values.
 - ball contacts: the constriction resistance of an isothermal elliptical contact (semi-axes
-  a ≥ b) on a half-space, R = K(m)/(2·π·λ·a), m = 1 − b²/a², K the complete elliptic integral
+  a ≥ b) on a half-space, :math:`R = K(m)/(2\pi\lambda a)`, :math:`m = 1 - b^2/a^2`, K the
+  complete elliptic integral
   of the first kind (Yovanovich 1976, "Thermal constriction resistance of contacts on a
   half-space: integral formulation", AIAA Prog. Astronaut. Aeronaut. 49; for a circle it is
   Holm's 1/(4·λ·a)), on the ball side and the race side of each contact, with the Hertz
@@ -40,9 +44,10 @@ walls, shroud, space) T_s and σ = 5.670374419e-8 W/(m²·K⁴). The conductance
   it is evaluated once, at the reference preload, and vanishes when the preload is lost,
   which the constant value does not follow.
 - shaft to frame: conduction through the gas in the annulus between shaft and housing bore
-  between the bearings, G = 2·π·k_gas·L/ln(r_o/r_i) (conduction regime: the gap Rayleigh
-  number of a few-millimetre annulus is far below the onset of convection; Incropera §9.8),
-  absent in vacuum; and gray-body radiation across it, 𝓔 = A_i/(1/ε_i + (1 − ε_o)/ε_o·r_i/r_o)
+  between the bearings, :math:`G = 2\pi k_\mathrm{gas} L/\ln(r_o/r_i)` (conduction regime:
+  the gap Rayleigh number of a few-millimetre annulus is far below the onset of convection;
+  Incropera §9.8), absent in vacuum; and gray-body radiation across it,
+  :math:`\mathcal{F} = A_i/(1/\varepsilon_i + (1 - \varepsilon_o)/\varepsilon_o\cdot r_i/r_o)`
   (long concentric cylinders, Incropera Table 13.3).
 - convection to the chamber air: forced convection over the housing as a cylinder in cross
   flow, Churchill & Bernstein (Incropera eq 7.54), air properties at 300 K (Table A.4); none
@@ -50,11 +55,14 @@ walls, shroud, space) T_s and σ = 5.670374419e-8 W/(m²·K⁴). The conductance
   light contact (Table 3.1, 100 kPa row) in series with conduction through half the housing.
 
 Integration over a communication step h with the inputs held (zero-order hold): with
-f(T) = dT/dt and J its Jacobian at the reference temperatures T_ref,
+:math:`f(T) = dT/dt` and J its Jacobian at the reference temperatures :math:`T_\mathrm{ref}`,
 
-    T(t + h) = T(t) + h·φ1(h·J)·f(T(t)),   φ1(z) = (e^z − 1)/z,
+.. math::
 
-where h·φ1(h·J) is the top-right block of expm([[J, I], [0, 0]]·h) (Van Loan 1978; the
+   T(t + h) = T(t) + h\,\varphi_1(hJ)\,f(T(t)), \qquad \varphi_1(z) = \frac{e^z - 1}{z},
+
+where :math:`h\,\varphi_1(hJ)` is the top-right block of
+:math:`\exp\left(h\begin{bmatrix} J & I \\ 0 & 0 \end{bmatrix}\right)` (Van Loan 1978; the
 exponential Rosenbrock–Euler method, Hochbruck & Ostermann 2010, Acta Numerica 19). Without
 radiation the network is linear, J is its system matrix and this is the exact solution for
 any step, stiff or not (the rings' time constants are seconds, the frame's minutes), as in
@@ -63,11 +71,10 @@ exact solution of the network linearised about T_ref (radiation replaced by its 
 fluxes themselves taken at T(t)); the steady state is exact and the error is second order in
 h when T_ref = T(t). T_ref is renewed once a node has moved more than a tolerance from it
 (0: every step); each renewal costs one matrix exponential. Measured against Radau at
-rtol = atol = 1e-11 over 3 h after the ambient and the sink jump by 140 K
-(benchmarks/bench_thermal_network.py), largest error of any part with per-step linearisation:
-Yu's gimbal 4.4e-7, 4.5e-5, 1.7e-3 and 0.24 K at 1, 10, 60 and 600 s steps; Ning's bearing
-5.4e-7, 5.4e-5, 2.0e-3 and 0.26 K (second order); renewed every 0.1 K at 1 s steps, 1.4e-6 K
-with a seventh of the exponentials.
+rtol = atol = 1e-11 over 3 h after the ambient and the sink jump by 140 K, largest error of
+any part with per-step linearisation: Yu's gimbal 4.4e-7, 4.5e-5, 1.7e-3 and 0.24 K at 1, 10,
+60 and 600 s steps; Ning's bearing 5.4e-7, 5.4e-5, 2.0e-3 and 0.26 K (second order); renewed
+every 0.1 K at 1 s steps, 1.4e-6 K with a seventh of the exponentials.
 """
 
 from __future__ import annotations

@@ -1,16 +1,27 @@
-"""Lubricant viscosity versus temperature, and the range of temperatures a lubricant's data
+r"""Lubricant viscosity versus temperature, and the range of temperatures a lubricant's data
 cover.
 
 Two laws, each written once (kinematic viscosity ν, absolute temperature T):
 
-- **Walther** (ASTM D341-20 §5; Yu 2017 eq 18): lg lg(ν + c) = a − b·lg T, ν in cSt, T in K,
-  lg = log10; c = 0.7 cSt in ASTM D341, 0.932 in Yu's least-squares fit to DuPont's Krytox
+- **Walther** (ASTM D341-20 §5; Yu 2017 eq 18), ν in cSt, T in K, lg = log10:
+
+  .. math::
+
+     \lg\,\lg(\nu + c) = a - b\,\lg T
+
+  c = 0.7 cSt in ASTM D341, 0.932 in Yu's least-squares fit to DuPont's Krytox
   143AA data (catalogue key ``krytox_143aa``: Yu's a, b, c stay his). Two viscosities fix a and
   b (:func:`walther_from_two_points`): the ASTM D341 line through a datasheet's ν40 and ν100.
 - **Vogel** (Vogel H., "Das Temperaturabhängigkeitsgesetz der Viskosität von Flüssigkeiten",
   Physikalische Zeitschrift 22 (1921) 645–646; reviewed with the Walther form by Seeton C. J.,
   "Viscosity–temperature correlation for liquids", Tribology Letters 22 (2006) 67–78,
-  doi:10.1007/s11249-006-9071-2, §2): ln ν = a + b/(T − T∞), applied to the kinematic viscosity
+  doi:10.1007/s11249-006-9071-2, §2):
+
+  .. math::
+
+     \ln \nu = a + \frac{b}{T - T_\infty}
+
+  applied to the kinematic viscosity
   (the datasheets' quantity; a density change of a few per cent over the range goes into the
   constants). Three viscosities fix a, b and T∞ (:func:`vogel_from_points`).
 
