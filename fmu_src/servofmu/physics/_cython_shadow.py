@@ -11,6 +11,8 @@ Examples
 (False, True, True)
 """
 
+import dataclasses  # noqa: F401  (``cython.dataclasses``: the standard library's, as in Cython.Shadow)
+
 compiled = False
 
 # type names (read in annotations and typedefs only)
