@@ -7,8 +7,9 @@ OUT    ?= out
 
 .PHONY: run test test-long bench lint docs clean system-deps
 
-# setup.py compiles the FMU export library (build/export/) at install: an edit there reinstalls
-$(STAMP): pyproject.toml setup.py $(wildcard build/export/src/*/*)
+# setup.py compiles the FMU export library (build/export/) and the pair kernels
+# (physics/pair_kernels.py) at install: an edit there reinstalls
+$(STAMP): pyproject.toml setup.py $(wildcard build/export/src/*/*) fmu_src/servofmu/physics/pair_kernels.py
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[test]'

@@ -1,13 +1,19 @@
-"""Per-step cost of each servofmu FMU next to an empty pythonfmu FMU, in one run (on demand:
-``make bench``; not part of the tests).
+"""Per-step cost of each servofmu FMU next to an empty pythonfmu FMU, in one run, for both
+implementations of the per-step kernels (on demand: ``make bench``; not part of the tests).
 
 Each loop is what a co-simulation master does per communication step through fmpy's
 FMU2Slave: set the FMU's real inputs, fmi2DoStep, get one output. The empty FMU has four real
 inputs, one output and a do_step that returns True. Reported: µs per step (median of
 ``--repeat`` runs of ``--steps`` steps; the loops take turns, and each run continues its
-loop's input history where the last one stopped) and the ratio to the empty FMU.
+loop's input history where the last one stopped) and the ratio to the empty FMU, with the
+aims of the speed table (:data:`AIMS`).
 
-``--clock cpu`` (the default) times the CPU time of this process (time.process_time): the
+The FMUs are built once; each implementation runs in its own process (a process imports
+servofmu once): the compiled kernels (``servofmu.physics._pair_kernels``, when built) and the
+Python ones (``SERVOFMU_PURE_PYTHON=1``), each with its own empty FMU, so that every ratio is
+measured within one process.
+
+``--clock cpu`` (the default) times the CPU time of the process (time.process_time): the
 FMUs run in-process, so that is their cost, and other work on a shared machine does not
 enter it; ``--clock wall`` times wall-clock time (time.perf_counter). On an idle machine the
 two agree.
@@ -18,7 +24,10 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import statistics
+import subprocess
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -29,6 +38,8 @@ from results import save  # benchmarks/ is the script's folder
 from trajectories import BEARING_LOOPS  # benchmarks/ is the script's folder
 
 from servofmu.build.fmu import FMUS, build_all
+from servofmu.physics.bearing_parameters import PARAMETERS
+from servofmu.physics.continuation import PURE_PYTHON
 
 EMPTY = """
 from pythonfmu import Fmi2Causality, Fmi2Slave, Real
@@ -50,8 +61,31 @@ class Empty(Fmi2Slave):
 
 # BearingFriction's inputs changed every step (value at step k) and the output read back
 _BEARING_INPUTS = ("temperature", "speed", "axial_load", "radial_load")
+_SPEC = {p.name: p for p in PARAMETERS}
+
+
+def _choice(name: str, key: str) -> int:
+    """The enumeration value of BearingFriction's choice ``name`` = ``key``."""
+    return _SPEC[name].item(key)
+
+
 #: The other friction models (parameter friction_model: item) and their loops (--models).
-OTHER_MODELS = {"skf2004": 2, "ehl_per_contact": 3}
+OTHER_MODELS = {m: _choice("friction_model", m) for m in ("skf2004", "ehl_per_contact")}
+#: A tandem pair under a constant 40 N (parameters set before initialization).
+TANDEM = {
+    "arrangement": _choice("arrangement", "tandem"),
+    "preload_method": _choice("preload_method", "force"),
+    "assembly_preload": 40.0,
+}
+#: The speed table's aims: loop label → largest ratio to the empty FMU.
+AIMS = {
+    "BearingFriction (speed changes)": 1.2,
+    "BearingFriction (ramp -60..+80 degC, 20 N axial)": 1.5,
+    "BearingFriction (ramp, axial 10-30 N, radial 0-20 N)": 2.0,
+    "BearingFriction tandem (ramp -60..+80 degC, 20 N axial)": 2.0,
+    "ThermalNetwork (chamber ramp, power loss changes)": 1.3,
+    "ActuatorStiffness": 1.5,
+}
 
 # inputs changed every step (value at step k), the output read back, parameters set
 LOOPS = {
@@ -60,6 +94,12 @@ LOOPS = {
         f"BearingFriction ({what})": (_BEARING_INPUTS, values, "friction_torque", {})
         for what, values in BEARING_LOOPS.items()
     },
+    "BearingFriction tandem (ramp -60..+80 degC, 20 N axial)": (
+        _BEARING_INPUTS,
+        BEARING_LOOPS["ramp -60..+80 degC, 20 N axial"],
+        "friction_torque",
+        TANDEM,
+    ),
     "ActuatorStiffness": (
         ("temperature", "speed", "load_torque", "angle"),
         lambda k: (293.15, 0.0, 150.0 + 50.0 * math.sin(1e-3 * k), 0.17),
@@ -97,7 +137,7 @@ def _model_loops() -> dict:
     }
 
 
-def _slave(path: Path, integers: dict):
+def _slave(path: Path, parameters: dict):
     md = read_model_description(str(path))
     slave = FMU2Slave(
         guid=md.guid,
@@ -109,8 +149,11 @@ def _slave(path: Path, integers: dict):
     slave.instantiate()
     slave.setupExperiment(startTime=0.0)
     slave.enterInitializationMode()
-    if integers:  # choices: FMI Integers
-        slave.setInteger([vr[n] for n in integers], list(integers.values()))
+    for name, value in parameters.items():  # choices are FMI Integers
+        if isinstance(value, int):
+            slave.setInteger([vr[name]], [value])
+        else:
+            slave.setReal([vr[name]], [value])
     slave.exitInitializationMode()
     return slave, vr
 
@@ -120,8 +163,8 @@ class Loop:
     ``steps`` steps of it (the history continues from one call to the next, so that no call
     starts with a jump of its inputs)."""
 
-    def __init__(self, path: Path, inputs, values, output, integers, total: int):
-        self.slave, vr = _slave(path, integers)
+    def __init__(self, path: Path, inputs, values, output, parameters, total: int):
+        self.slave, vr = _slave(path, parameters)
         self.ins, self.out = [vr[n] for n in inputs], [vr[output]]
         self.series = [values(k) for k in range(total)]
         self.k, self.t = 0, 0.0
@@ -144,6 +187,68 @@ class Loop:
         self.slave.freeInstance()
 
 
+def measure(paths: dict, steps: int, repeat: int, clock, models: bool) -> dict:
+    """{loop label: seconds per step} of every loop, in this process (the loops take turns)."""
+    specs = LOOPS | (_model_loops() if models else {})
+    loops = {
+        label: Loop(paths[label.split(" ")[0]], *spec, steps * repeat)
+        for label, spec in specs.items()
+    }
+    # the loops take turns, so that every one sees the same spells of other load
+    runs = {label: [] for label in loops}
+    for _ in range(repeat):
+        for label, loop in loops.items():
+            runs[label].append(loop.run(steps, clock))
+    for loop in loops.values():
+        loop.close()
+    return {label: statistics.median(r) for label, r in runs.items()}
+
+
+def _worker(args) -> None:
+    """Measure the loops in this process and print {label: {"us", "ratio"}} as JSON."""
+    from servofmu.physics import continuation
+
+    clock = time.process_time if args.clock == "cpu" else time.perf_counter
+    paths = {p.stem: p for p in Path(args.fmus).glob("*.fmu")}
+    figures = measure(paths, args.steps, args.repeat, clock, args.models)
+    empty = figures["Empty"]
+    table = {k: {"us": v * 1e6, "ratio": v / empty} for k, v in figures.items()}
+    print(json.dumps({"implementation": continuation.describe(), "loops": table}))
+
+
+def _run_worker(fmus: Path, implementation: str, args) -> dict:
+    env = dict(os.environ)
+    env[PURE_PYTHON] = "1" if implementation == "python" else ""
+    cmd = [sys.executable, __file__, "--worker", str(fmus), "--steps", str(args.steps),
+           "--repeat", str(args.repeat), "--clock", args.clock]  # fmt: skip
+    if args.models:
+        cmd.append("--models")
+    out = subprocess.run(cmd, env=env, capture_output=True, text=True)
+    if out.returncode != 0:
+        sys.exit(f"the {implementation} worker failed:\n{out.stderr}")
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+#: The implementations of the per-step kernels measured, each in its own process.
+IMPLEMENTATIONS = ("compiled", "python")
+
+
+def figures_of(results: dict) -> dict:
+    """The saved figures: which kernels each process ran, and one row per loop with µs per
+    step and the ratio to the empty FMU of each implementation, and the aim."""
+    rows = []
+    for label in results["python"]["loops"]:
+        row = {"loop": label}
+        for impl in IMPLEMENTATIONS:
+            fig = results[impl]["loops"][label]
+            row[f"{impl} µs"] = fig["us"]
+            row[f"{impl} ×"] = fig["ratio"]
+        row["aim ×"] = AIMS.get(label, "")
+        rows.append(row)
+    kernels = {impl: results[impl]["implementation"] for impl in IMPLEMENTATIONS}
+    return {"kernels": kernels, "loops": rows}
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--steps", type=int, default=20000)
@@ -160,37 +265,34 @@ def main() -> None:
         action="store_true",
         help="also BearingFriction's loops under friction_model skf2004 and ehl_per_contact",
     )
+    parser.add_argument("--worker", metavar="FMUS", help=argparse.SUPPRESS)
     args = parser.parse_args()
-    clock = time.process_time if args.clock == "cpu" else time.perf_counter
+    if args.worker:
+        args.fmus = args.worker
+        _worker(args)
+        return
     from pythonfmu.builder import FmuBuilder
 
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        paths = {p.stem: p for p in build_all(tmp / "fmus", FMUS)}
+        fmus = tmp / "fmus"
+        build_all(fmus, FMUS, systems=False)
         (tmp / "Empty.py").write_text(EMPTY)
-        paths["Empty"] = Path(FmuBuilder.build_FMU(tmp / "Empty.py", dest=tmp / "fmus"))
-        specs = LOOPS | (_model_loops() if args.models else {})
-        loops = {
-            label: Loop(paths[label.split(" ")[0]], *spec, args.steps * args.repeat)
-            for label, spec in specs.items()
-        }
-        # the loops take turns, so that every one sees the same spells of other load
-        runs = {label: [] for label in loops}
-        for _ in range(args.repeat):
-            for label, loop in loops.items():
-                runs[label].append(loop.run(args.steps, clock))
-        for loop in loops.values():
-            loop.close()
-        figures = {label: statistics.median(r) for label, r in runs.items()}
-    empty = figures["Empty"]
-    table = {k: {"us": v * 1e6, "ratio": v / empty} for k, v in figures.items()}
+        FmuBuilder.build_FMU(tmp / "Empty.py", dest=fmus)
+        results = {impl: _run_worker(fmus, impl, args) for impl in IMPLEMENTATIONS}
+    table = figures_of(results)
     if args.save:
         save(args.save, table)
     if args.json:
-        print(json.dumps(table, indent=2))
+        print(json.dumps(table, indent=2, ensure_ascii=False))
         return
-    for label, secs in figures.items():
-        print(f"{label:60s} {secs * 1e6:8.2f} µs/step   {secs / empty:5.2f} × empty")
+    for impl, what in table["kernels"].items():
+        print(f"{impl}: kernels {what}")
+    print(f"{'loop':62s} {'compiled':>18s} {'python':>18s} {'aim':>6s}")
+    for row in table["loops"]:
+        cells = [f"{row[f'{i} µs']:7.2f} µs {row[f'{i} ×']:5.2f}×" for i in IMPLEMENTATIONS]
+        aim = "" if row["aim ×"] == "" else f"≤ {row['aim ×']}"
+        print(f"{row['loop']:62s} {cells[0]:>18s} {cells[1]:>18s} {aim:>6s}")
 
 
 if __name__ == "__main__":

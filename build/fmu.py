@@ -95,7 +95,8 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
 
 def stage_package(dest: Path) -> Path:
     """Copy the parts of the servofmu package that run inside an FMU (:data:`SHIPPED`: .py
-    and .toml files, no caches) to ``dest/servofmu``; returns that folder."""
+    and .toml files and the compiled kernels built for this platform, if any; no caches) to
+    ``dest/servofmu``; returns that folder."""
     target = Path(dest) / "servofmu"
     target.mkdir(parents=True)
     keep = shutil.ignore_patterns("__pycache__", "*.pyc")

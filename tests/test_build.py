@@ -40,7 +40,10 @@ def test_fmu_ships_only_what_it_runs(fmus):
             if (PACKAGE_DIR / part).is_file()
             else (PACKAGE_DIR / part).rglob("*")
         )
-        if f.is_file() and f.suffix in (".py", ".toml") and "__pycache__" not in f.parts
+        # sources, data and the compiled modules built for this platform (the pair kernels)
+        if f.is_file()
+        and f.suffix in (".py", ".toml", ".so", ".pyd")
+        and "__pycache__" not in f.parts
     }
     assert shipped == expected
 

@@ -1,21 +1,31 @@
-"""The per-step continuation (physics/continuation.py) against the exact vectorised path.
+"""The per-step continuation (physics/pair_kernels.py, compiled and not) against the exact
+vectorised path.
 
 Every BearingFriction output of BearingModel.evaluate must equal operating_outputs (bracketing
 root finders, no warm start) to a relative 1e-9, or an absolute floor near zero: 1e-12 N·m for
 torques and power, 1e-9 N for forces, 1e-15 m for the shaft displacement (the exact path solves
-offsets to 1e-16 m).
+offsets to 1e-16 m), 1e-12 rad for the contact angle (1e-16 m over the curvature-centre
+distance A = 0.1·D ≈ 2.4e-4 m, twice). Both implementations run side by side on every
+trajectory (tests/kernels.py); "bit for bit" compares a build with itself.
 """
 
 import dataclasses
 import itertools
 import json
 import math
+import os
+import re
+import subprocess
+import sys
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from kernels import implementations, models
 from scipy.special import ellipe, ellipk
 
-from servofmu.physics import catalog, continuation
+from servofmu.physics import catalog, pair_kernels
 from servofmu.physics.bearing import (
     BearingModel,
     BearingPair,
@@ -24,6 +34,7 @@ from servofmu.physics.bearing import (
     with_mounting,
 )
 from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
+from servofmu.physics.continuation import PURE_PYTHON
 from servofmu.physics.friction import ball_torque_terms
 from servofmu.physics.grease_torque import GreaseTorqueTerm
 from servofmu.physics.hertz import curvature_difference_of_ellipticity, ellipticity
@@ -31,9 +42,12 @@ from servofmu.physics.hertz import curvature_difference_of_ellipticity, elliptic
 REL = 1e-9
 # the axial play is h − a near zero clearance, h = √(A·Pd) there: Pd's rounding (1e-17 m on
 # groove diameters of 20 mm) moves h by 3e-11 m
-FLOORS = {"N.m": 1e-12, "N": 1e-9, "m": 1e-15, "W": 1e-12, "play": 1e-10}
+# near zero clearance the contact angle is a few µrad, a difference of offsets within their
+# tolerance over A
+FLOORS = {"N.m": 1e-12, "N": 1e-9, "m": 1e-15, "W": 1e-12, "play": 1e-10, "rad": 1e-12}
 UNIT = {
     "axial_play": "play",
+    "contact_angle": "rad",
     "preload": "N",
     "force_a": "N",
     "force_b": "N",
@@ -105,18 +119,20 @@ PAIRS = {
 @pytest.mark.parametrize("name", sorted(PAIRS))
 def test_axial_trajectory_equals_the_exact_path(name):
     pair = PAIRS[name]()
-    model = BearingModel(pair)
+    runs = models(pair)
     t, fa, _, w = _trajectory(1, 160, radial=False)
     seen, flags = set(), None
     for i in range(len(t)):
-        out = model.evaluate(float(t[i]), float(w[i]), float(fa[i]))
-        now = {f for f in FLAGS if getattr(out, f)}
+        outs = {k: m.evaluate(float(t[i]), float(w[i]), float(fa[i])) for k, m in runs.items()}
+        now = {f for f in FLAGS if getattr(outs["python"], f)}
         if i % 5 == 0 or now != flags:  # every 5th step, and every change of a flag
             exact = operating_outputs(pair, float(t[i]), float(w[i]), float(fa[i]))
-            assert_equal_outputs(out, exact, f"step {i}")
+            for k, out in outs.items():
+                assert_equal_outputs(out, exact, f"{k}, step {i}")
         seen |= now
         flags = now
-    assert model.exact_steps == 0  # the continuation carries the trajectory, from its start
+    for model in runs.values():  # the continuation carries the trajectory, from its start
+        assert model.exact_steps == 0
     if name == "yu_stated":  # the trajectory crosses the preload loss and the overload
         assert {"overloaded", "unloaded"} <= seen
     if name == "yu_tight":
@@ -142,17 +158,20 @@ def test_axial_trajectory_of_each_friction_model_equals_the_exact_path(name, mod
     pair = PAIRS[name]()
     grease = GREASE if pair.lubrication == "grease" else None
     pair = _with_model(pair, model, grease)
-    model_ = BearingModel(pair)
+    runs = models(pair)
     t, fa, _, w = _trajectory(1, 100, radial=False)
     flags = None
     for i in range(len(t)):
-        out = model_.evaluate(float(t[i]), float(w[i]), float(fa[i]))
+        outs = {k: m.evaluate(float(t[i]), float(w[i]), float(fa[i])) for k, m in runs.items()}
+        out = outs["python"]
         now = {f for f in FLAGS if getattr(out, f)}
         if i % 5 == 0 or now != flags:
             exact = operating_outputs(pair, float(t[i]), float(w[i]), float(fa[i]))
-            assert_equal_outputs(out, exact, f"step {i}")
+            for k, got in outs.items():
+                assert_equal_outputs(got, exact, f"{k}, step {i}")
         flags = now
-    assert model_.exact_steps <= 0.1 * len(t)
+    for model_ in runs.values():
+        assert model_.exact_steps <= 0.1 * len(t)
     if grease is not None:
         assert out.grease_torque > 0.0
     if model == "skf2004":
@@ -162,21 +181,25 @@ def test_axial_trajectory_of_each_friction_model_equals_the_exact_path(name, mod
 @pytest.mark.parametrize("model", ["skf2004", "ehl_per_contact"])
 def test_radial_trajectory_of_each_friction_model_equals_the_exact_path(model):
     pair = _with_model(PAIRS["yu_printed"](), model, GREASE)
-    model_ = BearingModel(pair)
+    runs = models(pair)
     t, fa, fr, w = _trajectory(2, 16, radial=True)
     fr = fr + 1.0
     for i in range(len(t)):
         args = (float(t[i]), float(w[i]), float(fa[i]), float(fr[i]))
-        assert_equal_outputs(model_.evaluate(*args), operating_outputs(pair, *args), f"step {i}")
-    assert model_.exact_steps <= 2
+        exact = operating_outputs(pair, *args)
+        for k, m in runs.items():
+            assert_equal_outputs(m.evaluate(*args), exact, f"{k}, step {i}")
+    for model_ in runs.values():
+        assert model_.exact_steps <= 2
 
 
-@pytest.mark.parametrize("model", ["skf2004", "ehl_per_contact"])
-def test_speed_alone_and_a_restored_state_give_the_same_numbers(model):
+@pytest.mark.parametrize("impl", implementations())
+@pytest.mark.parametrize("model", ["yu2017", "skf2004", "ehl_per_contact"])
+def test_speed_alone_and_a_restored_state_give_the_same_numbers(model, impl):
     # the FMU's speed-only path (speed_outputs on the kept state) and a state restored from
     # JSON (the EHL terms and SKF loads are floats in it) give evaluate's numbers bit for bit
     pair = _with_model(PAIRS["yu_yoke"](), model, GREASE)
-    a = BearingModel(pair)
+    a = BearingModel(pair, impl)
     a.evaluate(243.15, 0.1, 4.0, 2.0)
     for w in (0.0, -0.05, 0.3):
         out = a.evaluate(243.15, w, 4.0, 2.0)
@@ -190,7 +213,7 @@ def test_speed_alone_and_a_restored_state_give_the_same_numbers(model):
             out.power_loss,
         )
     saved = json.loads(json.dumps(a.state()))
-    b = BearingModel(pair)
+    b = BearingModel(pair, impl)
     b.restore(saved)
     assert b.evaluate(243.15, 0.3, 4.0, 2.0) == a.evaluate(243.15, 0.3, 4.0, 2.0)
     assert b.evaluate(243.5, 0.2, 4.5, 2.1) == a.evaluate(243.5, 0.2, 4.5, 2.1)
@@ -201,39 +224,44 @@ def test_speed_alone_and_a_restored_state_give_the_same_numbers(model):
 )
 def test_radial_trajectory_equals_the_exact_path(name):
     pair = PAIRS[name]()
-    model = BearingModel(pair)
+    runs = models(pair)
     t, fa, fr, w = _trajectory(2, 40, radial=True)
     fr = fr + 1.0  # keep a radial load on every step
     for i in range(len(t)):
-        out = model.evaluate(float(t[i]), float(w[i]), float(fa[i]), float(fr[i]))
-        exact = operating_outputs(pair, float(t[i]), float(w[i]), float(fa[i]), float(fr[i]))
-        assert_equal_outputs(out, exact, f"step {i}")
-    assert model.exact_steps == 0
+        args = (float(t[i]), float(w[i]), float(fa[i]), float(fr[i]))
+        exact = operating_outputs(pair, *args)
+        for k, m in runs.items():
+            assert_equal_outputs(m.evaluate(*args), exact, f"{k}, step {i}")
+    for model in runs.values():
+        assert model.exact_steps == 0
 
 
 def test_part_temperatures_equal_the_exact_path():
     pair = PAIRS["yu_printed"]()
-    model = BearingModel(pair)
+    runs = models(pair)
     rng = np.random.default_rng(3)
     base = 253.15
     for i in range(60):
         base += rng.normal(0.0, 2.0)
         temps = PartTemperatures(*(base + rng.normal(0.0, 3.0, 4)))
-        out = model.evaluate(temps, 0.1, 10.0)
-        assert_equal_outputs(out, operating_outputs(pair, temps, 0.1, 10.0), f"step {i}")
+        exact = operating_outputs(pair, temps, 0.1, 10.0)
+        for k, m in runs.items():
+            assert_equal_outputs(m.evaluate(temps, 0.1, 10.0), exact, f"{k}, step {i}")
 
 
-def test_equal_part_temperatures_give_the_uniform_result_exactly():
+@pytest.mark.parametrize("impl", implementations())
+def test_equal_part_temperatures_give_the_uniform_result_exactly(impl):
     pair = PAIRS["yu_printed"]()
     for t in (223.15, 293.15, 343.15):
-        uniform = BearingModel(pair).evaluate(t, 0.2, 7.0)
-        parts = BearingModel(pair).evaluate(PartTemperatures(t, t, t, t), 0.2, 7.0)
+        uniform = BearingModel(pair, impl).evaluate(t, 0.2, 7.0)
+        parts = BearingModel(pair, impl).evaluate(PartTemperatures(t, t, t, t), 0.2, 7.0)
         assert uniform == parts
 
 
-def test_a_jump_starts_the_continuation_again_and_it_continues():
+@pytest.mark.parametrize("impl", implementations())
+def test_a_jump_starts_the_continuation_again_and_it_continues(impl):
     pair = PAIRS["yu_stated"]()
-    model = BearingModel(pair)
+    model = BearingModel(pair, impl)
     model.evaluate(233.15, 0.1)
     out = model.evaluate(353.15, 0.1, 400.0, 30.0)  # everything jumps at once
     assert_equal_outputs(out, operating_outputs(pair, 353.15, 0.1, 400.0, 30.0))
@@ -244,15 +272,16 @@ def test_a_jump_starts_the_continuation_again_and_it_continues():
     assert model.exact_steps == 0
 
 
-def test_state_restore_mid_ramp_repeats_bit_for_bit():
+@pytest.mark.parametrize("impl", implementations())
+def test_state_restore_mid_ramp_repeats_bit_for_bit(impl):
     pair = PAIRS["yu_yoke"]()
     ramp = np.linspace(223.15, 333.15, 60)
-    a = BearingModel(pair)
+    a = BearingModel(pair, impl)
     for t in ramp[:30]:
         a.evaluate(float(t), 0.1, 5.0)
     saved = json.loads(json.dumps(a.state()))
     rest_a = [a.evaluate(float(t), 0.1, 5.0 + 0.1 * k) for k, t in enumerate(ramp[30:])]
-    b = BearingModel(pair)
+    b = BearingModel(pair, impl)
     b.restore(saved)
     rest_b = [b.evaluate(float(t), 0.1, 5.0 + 0.1 * k) for k, t in enumerate(ramp[30:])]
     assert rest_a == rest_b  # dataclass equality: every float identical
@@ -272,8 +301,8 @@ def test_state_restore_mid_ramp_repeats_bit_for_bit():
 def test_anchor_expansion_error_at_its_thresholds(f_rho, threshold, rel):
     # k, K(m), E(m) from the second-order anchor expansion against scipy at Δk/k = threshold
     k0 = ellipticity(f_rho)
-    anchor = continuation.Anchor(k0)
-    k_true = k0 * (1.0 + getattr(continuation, threshold))
+    anchor = pair_kernels.Anchor(k0)
+    k_true = k0 * (1.0 + getattr(pair_kernels, threshold))
     q = (curvature_difference_of_ellipticity(k_true) - anchor.f) / anchor.f1
     k = anchor.k + q * (1.0 - 0.5 * anchor.f2 * q / anchor.f1)
     dm = (1.0 - 1.0 / k**2) - anchor.m
@@ -287,7 +316,7 @@ def test_anchor_expansion_error_at_its_thresholds(f_rho, threshold, rel):
 
 def test_anchor_derivatives_against_finite_differences():
     k0 = 8.0
-    a = continuation.Anchor(k0)
+    a = pair_kernels.Anchor(k0)
     h = 1e-5 * k0
     f = curvature_difference_of_ellipticity
     assert a.f1 == pytest.approx((f(k0 + h) - f(k0 - h)) / (2 * h), rel=1e-7)
@@ -299,8 +328,9 @@ def test_anchor_derivatives_against_finite_differences():
     )
 
 
-def test_bad_input_names_the_variable_and_keeps_the_state():
-    model = BearingModel(PAIRS["yu_printed"]())
+@pytest.mark.parametrize("impl", implementations())
+def test_bad_input_names_the_variable_and_keeps_the_state(impl):
+    model = BearingModel(PAIRS["yu_printed"](), impl)
     good = model.evaluate(293.15, 0.1, 5.0)
     with pytest.raises(ValueError, match=r"housing_temperature = -1\.0 K"):
         model.evaluate(PartTemperatures(-1.0, 293.15, 293.15, 293.15), 0.1, 5.0)
@@ -309,16 +339,17 @@ def test_bad_input_names_the_variable_and_keeps_the_state():
     assert model.evaluate(293.15, 0.1, 5.0) == good
 
 
-def test_state_restore_right_after_an_exact_solve_repeats_bit_for_bit():
+@pytest.mark.parametrize("impl", implementations())
+def test_state_restore_right_after_an_exact_solve_repeats_bit_for_bit(impl):
     # the fuzzing's case: save right after the exact path solved a radial step, restore, and
     # ask for the same operating point again
     pair = PAIRS["yu_stated"]()
-    a = BearingModel(pair)
+    a = BearingModel(pair, impl)
     a.evaluate(293.15, 0.0)
     first = a.evaluate(322.0, 0.0, 0.0, 1.0)
     saved = json.loads(json.dumps(a.state()))
     nxt = a.evaluate(322.5, 0.0, 0.0, 1.0)
-    b = BearingModel(pair)
+    b = BearingModel(pair, impl)
     b.restore(saved)
     assert b.evaluate(322.0, 0.0, 0.0, 1.0) == first
     assert b.evaluate(322.5, 0.0, 0.0, 1.0) == nxt
@@ -335,7 +366,7 @@ def test_radial_load_through_zero_while_bearing_b_unloads():
     # B almost off, and the radial load passes within 2e-5 N of zero: B's balls leave contact
     # between steps, and the solver moves B radially back into touch (no exact fallback)
     pair = pair_from_parameters(default_parameters("yu2017_gimbal"))
-    model = BearingModel(pair)
+    runs = models(pair)
     for k in range(2700, 2725):
         args = (
             _bench_ramp(k),
@@ -343,37 +374,43 @@ def test_radial_load_through_zero_while_bearing_b_unloads():
             20.0 + 10.0 * math.sin(7e-3 * k),
             10.0 + 10.0 * math.sin(1.1e-2 * k),
         )
-        out = model.evaluate(*args)
-        assert_equal_outputs(out, operating_outputs(pair, *args), f"step {k}")
-    assert model.exact_steps == 0  # the first step is a cold start
+        exact = operating_outputs(pair, *args)
+        for impl, model in runs.items():
+            assert_equal_outputs(model.evaluate(*args), exact, f"{impl}, step {k}")
+    for model in runs.values():
+        assert model.exact_steps == 0  # the first step is a cold start
 
 
 def test_radial_load_changing_sign_and_axial_load_crossing_zero():
     pair = PAIRS["yu_yoke"]()
-    model = BearingModel(pair)
+    runs = models(pair)
     n = 30
     t = np.linspace(263.15, 283.15, n)
     fa = np.linspace(-6.0, 8.0, n)  # through zero: bearing A takes over from B
     fr = 3.0 * np.cos(np.linspace(0.0, np.pi, n))  # +3 N → −3 N, never exactly 0
     for i in range(n):
         args = (float(t[i]), 0.1, float(fa[i]), float(fr[i]))
-        out = model.evaluate(*args)
+        outs = {impl: model.evaluate(*args) for impl, model in runs.items()}
         if i % 3 == 0:
-            assert_equal_outputs(out, operating_outputs(pair, *args), f"step {i}")
-    assert model.exact_steps <= 2
+            exact = operating_outputs(pair, *args)
+            for impl, out in outs.items():
+                assert_equal_outputs(out, exact, f"{impl}, step {i}")
+    for model in runs.values():
+        assert model.exact_steps <= 2
 
 
-def test_state_restore_mid_radial_ramp_repeats_bit_for_bit():
+@pytest.mark.parametrize("impl", implementations())
+def test_state_restore_mid_radial_ramp_repeats_bit_for_bit(impl):
     # the restored state carries the balls' anchors and bases, the last Jacobian (load
     # predictor) and the secant of the temperature change
     pair = PAIRS["yu_printed"]()
     steps = [(253.15 + 0.2 * k, 0.1, 10.0 + 0.3 * k, 5.0 + 0.2 * math.sin(k)) for k in range(40)]
-    a = BearingModel(pair)
+    a = BearingModel(pair, impl)
     for args in steps[:20]:
         a.evaluate(*args)
     saved = json.loads(json.dumps(a.state()))
     rest_a = [a.evaluate(*args) for args in steps[20:]]
-    b = BearingModel(pair)
+    b = BearingModel(pair, impl)
     b.restore(saved)
     rest_b = [b.evaluate(*args) for args in steps[20:]]
     assert rest_a == rest_b
@@ -385,21 +422,21 @@ def test_hertz_constants_follow_a_base_within_its_spans(key):
     # c_δ, a_coef, k and E from a ball's base at (γ0, 1/f0), moved by up to GAMMA_SPAN in γ and
     # INV_F_SPAN in 1/f, against contact_terms anchored exactly at the new point: relative
     # error below 2e-12 (second order in γ, first in 1/f)
-    c = continuation.PairConstants(PAIRS["yu_printed"]())  # steel on steel
+    c = pair_kernels.PairConstants(PAIRS["yu_printed"]())  # steel on steel
     geom = catalog.bearing(key).race_geometry()
     gs = float(geom.ball_diameter / geom.pitch_diameter)
-    spans = (continuation.GAMMA_SPAN, continuation.INV_F_SPAN)
+    spans = (pair_kernels.GAMMA_SPAN, pair_kernels.INV_F_SPAN)
     worst = 0.0
     for alpha in np.radians([0.0, 15.0, 25.0, 40.0]):
         g0 = gs * float(np.cos(alpha))
         for inner, curvature in ((True, geom.inner_curvature), (False, geom.outer_curvature)):
             f0 = 1.0 / float(curvature)
-            anchor = continuation.Anchor(_exact_k(g0, f0, inner))
-            t0 = continuation.contact_terms(c, g0, f0, inner, anchor)
+            anchor = pair_kernels.Anchor(_exact_k(g0, f0, inner))
+            t0 = pair_kernels.contact_terms(c, g0, f0, inner, anchor)
             for dg, df in itertools.product((-spans[0], spans[0]), (-spans[1], 0.0, spans[1])):
                 g1, f1 = g0 + dg, f0 + df
-                t1 = continuation.contact_terms(
-                    c, g1, f1, inner, continuation.Anchor(_exact_k(g1, f1, inner))
+                t1 = pair_kernels.contact_terms(
+                    c, g1, f1, inner, pair_kernels.Anchor(_exact_k(g1, f1, inner))
                 )
                 for q in range(4):  # c_δ, a_coef, k, E
                     v0, v1, v2, vf = t0[4 * q : 4 * q + 4]
@@ -414,13 +451,13 @@ def _exact_k(gamma, inv_f, inner):
 
 
 def test_contact_terms_derivatives_against_finite_differences():
-    c = continuation.PairConstants(PAIRS["yu_printed"]())
+    c = pair_kernels.PairConstants(PAIRS["yu_printed"]())
     g0, f0, h = 0.107, 1.92, 1e-6
     for inner in (True, False):
-        anchor = continuation.Anchor(_exact_k(g0, f0, inner))
+        anchor = pair_kernels.Anchor(_exact_k(g0, f0, inner))
 
         def terms(g, f, inner=inner, anchor=anchor):
-            return continuation.contact_terms(c, g, f, inner, anchor)
+            return pair_kernels.contact_terms(c, g, f, inner, anchor)
 
         t0, gp, gm = terms(g0, f0), terms(g0 + h, f0), terms(g0 - h, f0)
         fp, fm = terms(g0, f0 + h), terms(g0, f0 - h)
@@ -439,10 +476,10 @@ def test_ring_torques_equal_ball_torque_terms(name):
     # ring_sums writes the torques as coefficients × products; friction.ball_torque_terms is
     # the definition: the same numbers ball by ball, radial load (8 different balls)
     pair = PAIRS[name]()
-    model = BearingModel(pair)
+    model = BearingModel(pair, "python")  # its balls and thermal state are Python objects
     model.evaluate(273.15, 0.1, 15.0, 6.0)
     model.evaluate(273.25, 0.1, 15.2, 6.1)  # a continuation step: the balls hold its state
-    th, c = model._th, model.solver.c
+    th, c = model.solver.thermal, model.solver.constants
     for ring in model.solver.rings:
         expected = np.zeros(5)
         for b in ring:
@@ -478,31 +515,97 @@ def test_ring_torques_equal_ball_torque_terms(name):
                 [h_i + h_o, sp_i + sp_o, sl_i + sl_o, h_i + sl_i + sp_i, h_o + sl_o + sp_o]
             )
         anchors = [(b.anc_i.k, b.anc_o.k) for b in ring]
-        got = continuation.ring_sums(th, c, ring)[:5]
+        got = pair_kernels.ring_sums(th, c, ring)[:5]
         assert [(b.anc_i.k, b.anc_o.k) for b in ring] == anchors  # no renewal in between
         np.testing.assert_allclose(got, expected, rtol=1e-13, atol=0.0)
 
 
-def test_failed_warm_start_and_failed_exact_solve_name_the_point(monkeypatch):
-    # a warm start and a cold start that fail fall back to the exact path; when that fails too,
-    # the call raises a ValueError naming temperatures and loads, and the model keeps its state
+@pytest.mark.parametrize("impl", implementations())
+def test_failed_warm_start_and_failed_exact_solve_name_the_point(monkeypatch, impl):
+    # an axial load of 1e12 N on Yu's printed pair: the continuation fails (its warm start,
+    # then its cold start in stages) and the exact path solves the step; when that fails
+    # too, the call raises a ValueError naming temperatures and loads, and the model keeps
+    # its state. The kernels fail by themselves, compiled or not (nothing replaced in them).
     from servofmu.physics import bearing as bm
 
     pair = PAIRS["yu_printed"]()
-    model = BearingModel(pair)
+    model = BearingModel(pair, impl)
     good = model.evaluate(293.15, 0.1, 5.0)
-    monkeypatch.setattr(model.solver, "solve", lambda *a: None)
-    fallback = model.evaluate(294.15, 0.1, 6.0)
+    fallback = model.evaluate(293.15, 0.1, 1e12)
     assert model.exact_steps == 1 and model.cold_starts == 2
-    assert_equal_outputs(fallback, operating_outputs(pair, 294.15, 0.1, 6.0))
+    assert_equal_outputs(fallback, operating_outputs(pair, 293.15, 0.1, 1e12))
 
     def broken(*a, **k):
         raise ArithmeticError("no equilibrium")
 
     monkeypatch.setattr(bm, "load_state", broken)
-    where = r"\(295\.15, 295\.15, 295\.15, 295\.15\) K, axial_load = 7\.0 N, radial_load = 0\.0 N"
-    with pytest.raises(ValueError, match=where + ": no equilibrium"):
-        model.evaluate(295.15, 0.1, 7.0)
-    assert model.evaluate(294.15, 0.1, 6.0) == fallback  # the last state is kept
+    where = re.escape("(294.15, 294.15, 294.15, 294.15) K, axial_load = 1000000000000.0 N, ")
+    with pytest.raises(ValueError, match=where + r"radial_load = 0\.0 N: no equilibrium"):
+        model.evaluate(294.15, 0.1, 1e12)
+    assert model.exact_steps == 2
+    assert model.evaluate(293.15, 0.1, 1e12) == fallback  # the last state is kept
     monkeypatch.undo()
     assert_equal_outputs(model.evaluate(293.15, 0.1, 5.0), good)  # and it carries on
+
+
+_STEP = st.tuples(
+    st.floats(-3.0, 3.0),  # change of the base temperature [K]
+    st.tuples(*(st.floats(-4.0, 4.0) for _ in range(4))),  # parts about the base [K]
+    st.floats(-8.0, 8.0),  # change of the axial load [N]
+    st.one_of(st.just(0.0), st.floats(0.5, 30.0)),  # radial load [N]
+    st.floats(-0.4, 0.4),  # speed [rad/s]
+)
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    name=st.sampled_from(sorted(PAIRS)),
+    model=st.sampled_from(["yu2017", "skf2004", "ehl_per_contact"]),
+    grease=st.booleans(),
+    parts=st.booleans(),
+    start=st.floats(213.15, 353.15),
+    steps=st.lists(_STEP, min_size=2, max_size=6),
+)
+def test_random_trajectories_equal_the_exact_path(name, model, grease, parts, start, steps):
+    # every arrangement (the loop pairs, rigid to 1 N/m, and the tandem sets), every friction
+    # model with and without the grease term, uniform and part temperatures, loads that switch
+    # between axial and radial: both implementations equal the exact path at every step
+    pair = PAIRS[name]()
+    pair = _with_model(pair, model, GREASE if grease and pair.lubrication == "grease" else None)
+    runs = models(pair)
+    base, axial = start, 0.0
+    for i, (d_t, spread, d_fa, radial, w) in enumerate(steps):
+        base = min(max(base + d_t, 213.15), 353.15)
+        axial = min(max(axial + d_fa, -150.0), 150.0)
+        temps = PartTemperatures(*(base + s for s in spread)) if parts else base
+        exact = operating_outputs(pair, temps, w, axial, radial)
+        for impl, m in runs.items():
+            assert_equal_outputs(m.evaluate(temps, w, axial, radial), exact, f"{impl}, step {i}")
+
+
+_WITHOUT_CYTHON = """
+import json, sys
+sys.modules["cython"] = None  # as on a host without Cython: the package's own shadow names
+from servofmu.physics import continuation, pair_kernels
+from servofmu.physics.bearing import BearingModel, BearingPair
+assert pair_kernels.cython.__name__ == "servofmu.physics._cython_shadow", pair_kernels.cython
+pair = BearingPair.from_catalog("yu2017_gimbal_printed", "krytox_143aa")
+model = BearingModel(pair, "python")
+outs = [model.evaluate(t, 0.1, 5.0, 2.0).running_torque for t in (233.15, 233.5, 234.0)]
+print(json.dumps({"implementation": continuation.IMPLEMENTATION, "outs": outs}))
+"""
+
+
+def test_the_python_path_runs_without_cython_and_gives_the_same_numbers():
+    # an FMU's host has numpy and scipy, not Cython: pair_kernels then takes Cython's
+    # pure-Python names from servofmu.physics._cython_shadow, with the same numbers
+    env = {k: v for k, v in os.environ.items() if k != PURE_PYTHON}
+    proc = subprocess.run(
+        [sys.executable, "-c", _WITHOUT_CYTHON], capture_output=True, text=True, env=env
+    )
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    got = json.loads(proc.stdout.splitlines()[-1])
+    pair = BearingPair.from_catalog("yu2017_gimbal_printed", "krytox_143aa")
+    model = BearingModel(pair, "python")
+    expected = [model.evaluate(t, 0.1, 5.0, 2.0).running_torque for t in (233.15, 233.5, 234.0)]
+    assert got["outs"] == expected  # bit for bit: the same Python code

@@ -217,16 +217,21 @@ def test_bad_input_is_refused_with_a_message_and_the_instance_recovers(fmus, nam
 
 def test_bearing_step_without_a_state_is_discarded_naming_the_point(fmus, monkeypatch):
     # the warm start fails and the exact solve fails too: the step is discarded with a message
-    # naming temperatures and loads, and the instance carries on once a state exists again
+    # naming temperatures and loads, and the instance carries on once a state exists again.
+    # The instance runs the Python kernels with a continuation that always fails (the FMU's
+    # handling does not depend on the kernels; the compiled kernels failing by themselves:
+    # tests/test_continuation.py)
     from servofmu.physics import bearing as bm
+    from servofmu.physics import pair_kernels
 
+    monkeypatch.setattr(bm, "kernels", lambda implementation=None: pair_kernels)
+    monkeypatch.setattr(pair_kernels.PairSolver, "solve", lambda *args: None)
     fmu = Fmu(fmus["BearingFriction"], "nostate").init(temperature=293.15, axial_load=5.0)
 
     def no_equilibrium(*args, **kwargs):
         raise ArithmeticError("no equilibrium")
 
     saved = fmu.slave.getFMUstate()
-    monkeypatch.setattr(bm.PairSolver, "solve", lambda *args: None)
     monkeypatch.setattr(bm, "load_state", no_equilibrium)
     fmu.set(temperature=300.0, axial_load=6.0)
     with pytest.raises(FMICallException, match="status 2"):
@@ -543,3 +548,20 @@ def test_motor_friction_sticks_and_does_not_depend_on_the_step(fmus):
     ss = (0.05 * 3.0 / 2.0 - 0.02) / (1e-5 + 0.05 * 0.05 / 2.0)
     assert fmu.get("speed") == pytest.approx(ss, rel=1e-4)
     fmu.close()
+
+
+def test_the_package_hash_covers_the_compiled_kernels(tmp_path):
+    # an FMU's version check (servofmu_build.json's package_hash against the imported package)
+    # changes with a compiled module of the package, as it does with a source file
+    from servofmu.build.fmu import stage_package
+    from servofmu.fmus.slave import package_hash
+
+    package = stage_package(tmp_path / "staged")
+    for f in (package / "physics").glob("_pair_kernels*"):
+        f.unlink()
+    plain = package_hash(package)
+    module = package / "physics" / "_pair_kernels.cpython-311-x86_64-linux-gnu.so"
+    module.write_bytes(b"one build")
+    one = package_hash(package)
+    module.write_bytes(b"another build")
+    assert len({plain, one, package_hash(package)}) == 3

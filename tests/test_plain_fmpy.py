@@ -23,6 +23,7 @@ from pathlib import Path
 import pytest
 
 from servofmu.build.exportlib import compiled_export
+from servofmu.physics import continuation
 
 PLAIN = Path(__file__).resolve().parent / "robustness" / "plain_fmpy.py"
 NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
@@ -116,3 +117,58 @@ def test_the_environment_is_plain(plain_python):
     installed = {p["name"].lower() for p in json.loads(names)}
     assert {"fmpy", "numpy", "scipy"} <= installed
     assert not installed & {"servofmu", "pythonfmu", "dask", "matplotlib"}, sys.version
+
+
+def _kernels_said(stdout: str) -> list[str]:
+    """The FMU's messages that say which per-step kernels run."""
+    return [line for line in stdout.splitlines() if "per-step kernels" in line]
+
+
+def _shipped_kernels(fmu: Path) -> list[str]:
+    with zipfile.ZipFile(fmu) as z:
+        return [n for n in z.namelist() if n.startswith("resources/servofmu/physics/_pair_kernels")]
+
+
+def test_the_fmu_ships_its_compiled_kernels_and_says_which_run(plain_python, fmus):
+    # the compiled kernels of this platform travel in the FMU's copy of the package, and a
+    # fresh interpreter (no Cython, no servofmu installed) runs them and logs it
+    proc = _plain(plain_python, "log", fmus["BearingFriction"])
+    assert proc.returncode == 0 and proc.stdout.rstrip().endswith("done"), proc.stderr[-2000:]
+    said = _kernels_said(proc.stdout)
+    shipped = _shipped_kernels(fmus["BearingFriction"])
+    if continuation.IMPLEMENTATION == "compiled":
+        assert len(shipped) == 1, shipped
+        assert said and f"per-step kernels compiled ({Path(shipped[0]).name})" in said[0], said
+    else:  # an install without a compiler: nothing to ship, and the FMU says why
+        assert shipped == [] and said and "per-step kernels Python (" in said[0], said
+
+
+def test_an_fmu_built_without_compiled_kernels_runs_python_and_says_so(
+    plain_python, fmus, tmp_path
+):
+    # as a build on a machine without a C compiler makes it: the FMU's copy of the package
+    # has no compiled module, and servofmu_build.json records the hash of that copy
+    from servofmu.fmus.slave import package_hash
+
+    built = fmus["BearingFriction"]
+    copy = tmp_path / "copy"
+    with zipfile.ZipFile(built) as z:
+        z.extractall(copy)
+    for f in (copy / "resources" / "servofmu" / "physics").glob("_pair_kernels*"):
+        f.unlink()
+    info_file = copy / "resources" / "servofmu_build.json"
+    info = json.loads(info_file.read_text())
+    info["package_hash"] = package_hash(copy / "resources" / "servofmu")
+    info_file.write_text(json.dumps(info))
+    path = tmp_path / "BearingFriction.fmu"
+    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as z:
+        for f in sorted(copy.rglob("*")):
+            if f.is_file():
+                z.write(f, f.relative_to(copy).as_posix())
+    assert _shipped_kernels(path) == []
+    proc = _plain(plain_python, "log", path)
+    assert proc.returncode == 0 and proc.stdout.rstrip().endswith("done"), proc.stderr[-2000:]
+    said = _kernels_said(proc.stdout)
+    assert said and "per-step kernels Python (no compiled module for this platform" in said[0]
+    runs = [json.loads(line) for line in proc.stdout.splitlines() if line.startswith("{")]
+    assert runs and runs[0]["rows"] >= 10 and runs[0]["finite"], runs

@@ -21,6 +21,7 @@ import pytest
 
 import servofmu
 from servofmu.build.ssp import SSP_DIR, systems
+from servofmu.physics import continuation
 
 ROOT = Path(__file__).resolve().parents[1]
 BIN = Path(sys.executable).parent
@@ -102,6 +103,24 @@ def test_the_wheel_holds_what_every_command_reads(dist):
         assert f"servofmu/physics/data/{f.name}" in names
     with tarfile.open(sdist) as tf:  # the sdist keeps the project's own build/ package
         assert any(n.endswith("/build/fmu.py") for n in tf.getnames())
+
+
+def test_the_sdist_carries_the_kernels_source_and_the_wheel_their_build(dist, user):
+    # the wheel is built from the sdist: pair_kernels.py compiles there (Cython is a build
+    # requirement only); an installed wheel without Cython runs the compiled module
+    sdist, wheel = dist
+    with tarfile.open(sdist) as tf:
+        names = tf.getnames()
+    for source in ("setup.py", "physics/pair_kernels.py", "physics/_cython_shadow.py"):
+        assert any(n.endswith(f"/{source}") for n in names), source
+    assert not any("/.setuptools-build/" in n for n in names)  # generated copies stay out
+    with zipfile.ZipFile(wheel) as zf:
+        compiled = [n for n in zf.namelist() if n.startswith("servofmu/physics/_pair_kernels")]
+    if continuation.IMPLEMENTATION == "compiled":  # this machine compiles the kernels
+        assert len(compiled) == 1 and compiled[0].endswith(".so"), compiled
+    code = "from servofmu.physics import continuation as c; print(c.describe())"
+    said = _run([user[0], "-c", code], cwd="/").stdout
+    assert said.startswith("compiled (" if compiled else "Python ("), said
 
 
 @pytest.fixture(scope="module")

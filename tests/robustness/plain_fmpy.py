@@ -5,6 +5,7 @@ scipy (``tests/test_plain_fmpy.py`` runs it in such a virtual environment):
     python plain_fmpy.py side_by_side FMU_A FMU_B  # both instantiated, A's folder deleted
     python plain_fmpy.py both FMU_A FMU_B          # sequence, then side by side
     python plain_fmpy.py visible CASE FMU [...]    # a mistake, with fmpy's defaults
+    python plain_fmpy.py log FMU                    # simulate_fmu, printing the FMU's messages
 
 ``sequence`` and ``side_by_side`` print one JSON line per FMU run (rows, outputs finite) and
 "done"; ``visible`` runs ``simulate_fmu`` with its defaults (logging off, no logger) on a
@@ -93,6 +94,18 @@ def visible(case: str, path: str) -> None:
         print(f"raised: {type(exc).__name__}: {exc}")
 
 
+def log(path: str) -> None:
+    """simulate_fmu with logging on and a logger that prints every message of the FMU."""
+
+    def printed(env, instance, status, category, message):
+        print(f"log: {message.decode(errors='replace')}", flush=True)
+
+    result = simulate_fmu(
+        path, stop_time=0.01, output_interval=1e-3, debug_logging=True, logger=printed
+    )
+    print(json.dumps({"fmu": Path(path).stem, "rows": len(result), "finite": _finite(result)}))
+
+
 def two_builds(first: str, other: str) -> None:
     """An FMU of another build after one of this build, in one process."""
     simulate_fmu(first, stop_time=0.01, output_interval=1e-3)
@@ -114,6 +127,8 @@ def main(argv: list[str]) -> int:
         side_by_side(*args)
     elif mode == "visible":
         visible(*args)
+    elif mode == "log":
+        log(*args)
     elif mode == "two_builds":
         two_builds(*args)
     else:

@@ -64,6 +64,7 @@ from servofmu.fmus.part_temperatures import (  # noqa: E402
     temperatures,
 )
 from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter  # noqa: E402
+from servofmu.physics import continuation  # noqa: E402
 from servofmu.physics.bearing import BearingModel  # noqa: E402
 from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in  # noqa: E402
 from servofmu.physics.pair_state import PointState  # noqa: E402
@@ -328,6 +329,13 @@ class BearingFriction(ServoSlave):
     )
     _SPEED_OUTPUTS = _outputs_of(_SPEED_FIELDS, VARIABLES)  # those that move with speed alone
     _set_speed = staticmethod(ServoSlave.output_setter(_SPEED_OUTPUTS))
+
+    def _announce(self):
+        # with the export: which per-step path runs here, the compiled kernels shipped for
+        # this platform, or the same equations in Python where none matches (and why)
+        if not self._announced:
+            super()._announce()
+            self.log(f"{self.instance_name}: per-step kernels {continuation.describe()}")
 
     def configure(self):
         values = {p.name: getattr(self, p.name) for p in PARAMETERS}

@@ -278,15 +278,20 @@ def variables_of(cls, start: dict[str, tuple[object, str]] | None = None) -> tup
 
 
 def package_hash(root: Path | None = None) -> str:
-    """SHA-256 over the relative paths and contents of the .py and .toml files of the parts
-    of the servofmu package an FMU runs (:data:`SHIPPED`): identifies the code an FMU was
-    built with. The same for the development tree and an FMU's staged copy."""
+    """SHA-256 over the relative paths and contents of the .py and .toml files and the
+    compiled extension modules (.so, .pyd) of the parts of the servofmu package an FMU runs
+    (:data:`SHIPPED`): identifies the code an FMU was built with, compiled parts included. The
+    same for the development tree and an FMU's staged copy."""
     root = Path(__file__).resolve().parents[1] if root is None else Path(root)
     digest = hashlib.sha256()
     for f in sorted(_shipped_files(root)):
         digest.update(f.relative_to(root).as_posix().encode())
         digest.update(f.read_bytes())
     return digest.hexdigest()
+
+
+#: The files of the shipped parts that make up its code: sources, data, compiled modules.
+_HASHED = (".py", ".toml", ".so", ".pyd")
 
 
 def _shipped_files(root: Path) -> list[Path]:
@@ -297,7 +302,7 @@ def _shipped_files(root: Path) -> list[Path]:
         files += [
             f
             for f in candidates
-            if f.is_file() and f.suffix in (".py", ".toml") and "__pycache__" not in f.parts
+            if f.is_file() and f.suffix in _HASHED and "__pycache__" not in f.parts
         ]
     return files
 

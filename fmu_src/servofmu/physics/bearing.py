@@ -18,11 +18,10 @@ Where each part lives (Yu 2017 §1–3; Ning §1–2):
 
 from __future__ import annotations
 
-import math
-
+from . import pair_kernels
 from ._checks import TEMPERATURE_RANGE as _TEMPERATURE_RANGE
 from ._checks import check_operating_temperature
-from .continuation import PairSolver, thermal_floats
+from .continuation import kernels
 from .mounting import Mounting
 
 # the public names of .pair and .pair_state are importable from here as well
@@ -42,12 +41,13 @@ from .pair import (
 from .pair_state import (
     BearingOutputs,
     LoadState,
-    PointState,
     ThermalState,
     axial_load_state,
     bearing_outputs,
+    exact_point,
     load_state,
     operating_outputs,
+    point_outputs,
     state_flags,
     thermal_state,
     to_floats,
@@ -117,64 +117,61 @@ class BearingModel:
     radial load), as floats: the path of the BearingFriction FMU.
 
     The thermal and load state is solved by continuation from the previous call
-    (:class:`continuation.PairSolver`); the first call, and any call whose warm start fails,
-    is solved from scratch on the same floats (:meth:`continuation.PairSolver.start`), and
-    the exact path (:func:`thermal_state`, :func:`load_state`) solves a call that fails too and
-    seeds the continuation again (a tandem pair, :func:`is_tandem`, alike: its offsets move
-    together, :func:`continuation.tandem_step`). A call whose temperatures and
-    loads equal the previous call's reuses its state (:class:`~.pair_state.PointState`): a
-    change of speed alone costs only the speed terms; a call whose temperatures equal the
-    previous call's reuses the thermal state.
+    (:class:`~.pair_kernels.PairSolver`, compiled when the build could compile it:
+    :mod:`.continuation`); the first call, and any call whose warm start fails, is solved from
+    scratch on the same floats (:meth:`~.pair_kernels.PairSolver.start`), and the exact path
+    (:func:`thermal_state`, :func:`load_state`) solves a call that fails too and seeds the
+    continuation again. Every arrangement alike (:class:`~.pair_kernels.PairRows`). A call
+    whose temperatures and loads equal the previous call's reuses its state
+    (:class:`~.pair_kernels.PointState`): a change of speed alone costs only the speed
+    terms; a call whose temperatures equal the previous call's reuses the thermal state.
+
+    Parameters
+    ----------
+    pair : BearingPair
+    implementation : "compiled", "python" or None (the one :mod:`.continuation` chose)
 
     Attributes
     ----------
     steps : calls that solved a new state
-    cold_starts : of those, the ones the continuation solved from scratch
-        (:meth:`continuation.PairSolver.start`: the first call, or a failed warm start)
+    cold_starts : of those, the ones the continuation solved from scratch (the first call,
+        or a failed warm start)
     exact_steps : of those, the ones solved by the exact path (a failed cold start)
     """
 
-    def __init__(self, pair: BearingPair):
+    def __init__(self, pair: BearingPair, implementation: str | None = None):
         self.pair = pair
-        self.solver = PairSolver(pair)
-        self._temps = None  # the parts' temperatures of the current state [K]
-        self._axial = self._radial = None  # the loads of the current state [N]
-        self._th = None  # thermal state (floats) at self._temps
-        self._point: PointState | None = None
-        self.steps = 0
-        self.cold_starts = 0
+        self.kernels = kernels(implementation)
+        self.solver = self.kernels.PairSolver(pair)
         self.exact_steps = 0
+
+    @property
+    def implementation(self) -> str:
+        """ "compiled" or "python"."""
+        return "python" if self.kernels is pair_kernels else "compiled"
+
+    @property
+    def steps(self) -> int:
+        return self.solver.steps
+
+    @property
+    def cold_starts(self) -> int:
+        return self.solver.cold_starts
 
     # ---------------------------------------------------------------- state
     def state(self) -> dict:
         """The per-step state (JSON-serialisable): the continuation, the operating point and
         the state there. With :meth:`restore`, a model continues bit for bit."""
-        if self._point is None:
-            return {"solver": self.solver.state(), "point": None, "values": None}
-        return {
-            "solver": self.solver.state(),
-            "point": [*self._temps, self._axial, self._radial],
-            "values": self._point.as_dict(),
-        }
+        return self.solver.state()
 
     def restore(self, state: dict | None) -> None:
         """Continue from a :meth:`state`: the state at its operating point as it was, and the
         continuation from there, so that the next steps repeat bit for bit."""
-        state = state or {"solver": None, "point": None, "values": None}
-        self._temps = self._axial = self._radial = self._th = self._point = None
-        self.solver.restore(state["solver"])
-        point = state["point"]
-        if point is None:
-            return
-        self._temps = tuple(float(t) for t in point[:4])
-        self._axial, self._radial = float(point[4]), float(point[5])
-        self._th = thermal_floats(self.solver.c, self._temps)
-        self._point = PointState(**state["values"])
+        self.solver.restore(state)
 
     # ---------------------------------------------------------------- per step
-    def _exact(self, th, temps, axial_load: float, radial_load: float) -> PointState:
-        """The exact path's state, seeding the continuation at the thermal state ``th``
-        (floats; None: no seed)."""
+    def _exact(self, temps, axial_load: float, radial_load: float):
+        """The exact path's state, seeding the continuation at the solver's thermal state."""
         try:
             th_exact = to_floats(thermal_state(self.pair, PartTemperatures(*temps)))
             ls = to_floats(load_state(self.pair, th_exact, axial_load, radial_load))
@@ -184,8 +181,7 @@ class BearingModel:
                 f"{temps} K, axial_load = {axial_load!r} N, radial_load = "
                 f"{radial_load!r} N: {exc}"
             ) from exc
-        if th is None:
-            return PointState.exact(self.pair, th_exact, ls)
+        th = self.solver.thermal
         p = 0.5 * (ls.offset_a + ls.offset_b)
         z = 0.5 * (ls.offset_a - ls.offset_b)
         inputs = (*temps, axial_load, radial_load)
@@ -193,21 +189,11 @@ class BearingModel:
             self.solver.seed(th, inputs, (p, z))
         else:
             self.solver.seed(th, inputs, (p, z, ls.radial_a, ls.radial_b), ls.ball_cosines)
-        return PointState.exact(self.pair, th_exact, ls)
-
-    def _solve(self, temps, axial_load: float, radial_load: float) -> PointState:
-        th = self._th if temps == self._temps else thermal_floats(self.solver.c, temps)
-        point = self.solver.solve(th, axial_load, radial_load)
-        if point is None:  # no last solution, or the warm start failed: a cold start
-            self.cold_starts += 1
-            point = self.solver.start(th, axial_load, radial_load)
-        if point is None:
-            self.exact_steps += 1
-            point = self._exact(th, temps, axial_load, radial_load)
-        self._th = th
+        point = exact_point(self.kernels.PointState, self.pair, th_exact, ls)
+        self.solver.accept(th, point, axial_load, radial_load)
         return point
 
-    def update(self, temperature, axial_load: float = 0.0, radial_load: float = 0.0) -> PointState:
+    def update(self, temperature, axial_load: float = 0.0, radial_load: float = 0.0):
         """The state at (temperature, axial_load, radial_load) (arguments as :meth:`evaluate`):
         solved when it is a new operating point, else the last one.
 
@@ -217,17 +203,16 @@ class BearingModel:
             Every output of :meth:`evaluate` that does not move with speed (torques [N·m],
             forces [N], angle [rad], lengths [m], stiffness [N/m], pressures [Pa], flags).
         """
-        temps = _temperatures(temperature)
-        if temps == self._temps and axial_load == self._axial and radial_load == self._radial:
-            return self._point
-        for name, v in (("axial_load", axial_load), ("radial_load", radial_load)):
-            if not math.isfinite(v):
-                raise ValueError(f"{name} = {v!r} N is outside the valid range (-inf, inf)")
+        if type(temperature) is float and _LO <= temperature <= _HI:  # the per-step case
+            t_h = t_s = t_o = t_i = temperature
+        else:
+            t_h, t_s, t_o, t_i = _temperatures(temperature)
         fa, fr = float(axial_load), float(radial_load)
-        self._point = self._solve(temps, fa, fr)
-        self._temps, self._axial, self._radial = temps, fa, fr
-        self.steps += 1
-        return self._point
+        point = self.solver.update(t_h, t_s, t_o, t_i, fa, fr)
+        if point is None:
+            self.exact_steps += 1
+            point = self._exact((t_h, t_s, t_o, t_i), fa, fr)
+        return point
 
     def evaluate(
         self, temperature, speed: float, axial_load: float = 0.0, radial_load: float = 0.0
@@ -254,20 +239,14 @@ class BearingModel:
         0.301
         """
         point = self.update(temperature, axial_load, radial_load)
-        if not math.isfinite(speed):
-            raise ValueError(f"speed = {speed!r} rad/s is outside the valid range (-inf, inf)")
-        return point.outputs(self.pair, float(speed))
+        return point_outputs(point, self.solver.speed_outputs(float(speed)))
 
     def speed_outputs(self, speed: float) -> tuple[float, float, float, float, float, float]:
         """(friction_torque, running_torque, sliding_torque, viscous_torque, grease_torque
         [N·m], power_loss [W]) at ``speed`` [rad/s] for the state of the last :meth:`evaluate`
         call: the per-step path when only the speed changed (the same equations, so the same
         numbers as evaluate)."""
-        if not math.isfinite(speed):
-            raise ValueError(f"speed = {speed!r} rad/s is outside the valid range (-inf, inf)")
-        w = float(speed)
-        signed, running, sliding, viscous, grease = self._point.speed_terms(self.pair, w)
-        return signed, running, sliding, viscous, grease, signed * w
+        return self.solver.speed_outputs(speed)
 
     # ---------------------------------------------------------------- exact
     def thermal(self, temperature) -> ThermalState:

@@ -30,6 +30,7 @@ import numpy as np
 from ._checks import check_finite, check_nonnegative, check_positive, check_temperature
 from .geometry import BallBearing, RaceGeometry
 from .materials import Material, reduced_compliance
+from .pair_kernels import lame_ratio
 
 
 @dataclass(frozen=True)
@@ -61,10 +62,6 @@ class RadialFit:
         check_finite("outer_interference", self.outer_interference, "m")
         check_nonnegative("shaft_bore", self.shaft_bore, "m")
         check_finite("inner_interference", self.inner_interference, "m")
-
-
-def _annulus_ratio(d_small, d_large):
-    return (d_large**2 + d_small**2) / (d_large**2 - d_small**2)
 
 
 def fit_pressure(
@@ -118,8 +115,8 @@ def fit_pressure(
 
 
 def _fit_pressure(delta, d, d_b, d_o, m_in: Material, m_out: Material):
-    k_in = d / m_in.youngs_modulus * (_annulus_ratio(d_b, d) - m_in.poisson_ratio)
-    k_out = d / m_out.youngs_modulus * (_annulus_ratio(d, d_o) + m_out.poisson_ratio)
+    k_in = d / m_in.youngs_modulus * (lame_ratio(d_b, d) - m_in.poisson_ratio)
+    k_out = d / m_out.youngs_modulus * (lame_ratio(d, d_o) + m_out.poisson_ratio)
     return np.maximum(delta, 0.0) / (k_in + k_out)
 
 

@@ -40,11 +40,10 @@ Jones 1960), projected by :math:`\sin\alpha_i`; no viscous term.
 
 from __future__ import annotations
 
-import math
+import math  # noqa: F401  (the examples use it)
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ._checks import (
     check_choice,
@@ -53,7 +52,19 @@ from ._checks import (
     check_positive,
     check_range,
 )
-from .units import CST, MM, NMM, RPM
+from .pair_kernels import (  # the kernels (floats or arrays) shared with the per-step path
+    HEATHCOTE as HEATHCOTE,
+)
+from .pair_kernels import (
+    PALMGREN_THRESHOLD as PALMGREN_THRESHOLD,
+)
+from .pair_kernels import (
+    _heathcote,
+    _hysteresis,
+    _palmgren,
+    _regularised,
+    _spin,
+)
 
 
 def race_contact_radius(pitch_diameter, ball_diameter, contact_angle, race: str):
@@ -120,10 +131,6 @@ def hysteresis_rolling_force(load, semi_minor_axis, ball_diameter, loss_factor):
     return _hysteresis(load, semi_minor_axis, ball_diameter, loss_factor)
 
 
-def _hysteresis(load, semi_minor_axis, ball_diameter, loss_factor):
-    return 3.0 * loss_factor * semi_minor_axis * load / (8.0 * ball_diameter)
-
-
 def spin_moment(load, semi_major_axis, e_integral, friction_coefficient):
     """Spin friction moment of one contact about its normal, M'_K = (3/8)·μ·Q·a·E(e) [N·m]
     (Yu 2017 eq 6; Harris & Kotzalas 2007). load Q [N], semi_major_axis a [m], e_integral E(e)
@@ -144,23 +151,6 @@ def spin_moment(load, semi_major_axis, e_integral, friction_coefficient):
     check_range("e_integral", e_integral, 1.0, np.pi / 2)
     check_nonnegative("friction_coefficient", friction_coefficient)
     return _spin(load, semi_major_axis, e_integral, friction_coefficient)
-
-
-def _spin(load, semi_major_axis, e_integral, friction_coefficient):
-    return 0.375 * friction_coefficient * load * semi_major_axis * e_integral
-
-
-def _heathcote_constant() -> float:
-    # Rolling lines at |y| = u0·a where the Hertz line load (1 − u²) splits the contact into
-    # equal halves: u0 − u0³/3 = 1/3 (Heathcote 1921; Johnson 1985 ch. 8: u0 ≈ 0.347).
-    u0 = brentq(lambda u: u - u**3 / 3.0 - 1.0 / 3.0, 0.0, 1.0, xtol=1e-15)
-    c = u0 * u0
-    inner = c * u0 - (c + 1.0) * u0**3 / 3.0 + u0**5 / 5.0  # ∫0^u0 (1−u²)(c−u²) du
-    full = c - (c + 1.0) / 3.0 + 0.2  # ∫0^1 (1−u²)(c−u²) du
-    return 0.75 * 2.0 * (2.0 * inner - full)  # (3/4)·∫_{-1}^{1} (1−u²)|c−u²| du
-
-
-HEATHCOTE = _heathcote_constant()  # ≈ 0.1611
 
 
 def heathcote_sliding_force(load, semi_major_axis, ball_diameter, groove_radius, friction):
@@ -206,28 +196,6 @@ def heathcote_sliding_force(load, semi_major_axis, ball_diameter, groove_radius,
     return _heathcote(load, semi_major_axis, ball_diameter, groove_radius, friction)
 
 
-def _heathcote(load, semi_major_axis, ball_diameter, groove_radius, friction):
-    r_c = 2.0 * groove_radius * ball_diameter / (2.0 * groove_radius + ball_diameter)
-    return HEATHCOTE * friction * load * semi_major_axis**2 / (r_c * ball_diameter)
-
-
-PALMGREN_THRESHOLD = 2000.0  # ν·n [cSt·rpm] below which eq 8 is speed-independent
-
-
-# Elementary operations that take Python floats through the math module (a per-step call
-# inside an FMU costs a fraction of a microsecond) and arrays through numpy.
-def _maximum(a, b):
-    return max(a, b) if type(a) is float else np.maximum(a, b)
-
-
-def _tanh(x):
-    return math.tanh(x) if type(x) is float else np.tanh(x)
-
-
-def _exp(x):
-    return math.exp(x) if type(x) is float else np.exp(x)
-
-
 def palmgren_viscous_torque(kinematic_viscosity, speed, pitch_diameter, s0):
     """Viscous friction torque of one grease-lubricated bearing [N·m] (Palmgren; Yu 2017 eq 8):
 
@@ -258,12 +226,6 @@ def palmgren_viscous_torque(kinematic_viscosity, speed, pitch_diameter, s0):
     check_positive("pitch_diameter", pitch_diameter, "m")
     check_nonnegative("s0", s0)
     return _palmgren(kinematic_viscosity, speed, pitch_diameter, s0)
-
-
-def _palmgren(kinematic_viscosity, speed, pitch_diameter, s0):
-    nu_n = kinematic_viscosity / CST * abs(speed) / RPM
-    dm_mm = pitch_diameter / MM
-    return 1e-7 * s0 * _maximum(nu_n, PALMGREN_THRESHOLD) ** (2.0 / 3.0) * dm_mm**3 * NMM
 
 
 def regularised_friction_torque(
@@ -299,10 +261,6 @@ def regularised_friction_torque(
     return _regularised(
         speed, running_torque, breakaway_excess, regularisation_speed, stribeck_speed
     )
-
-
-def _regularised(speed, running, excess, w_reg, w_stribeck):
-    return _tanh(speed / w_reg) * (running + excess * _exp(-abs(speed) / w_stribeck))
 
 
 @dataclass(frozen=True)

@@ -8,14 +8,18 @@ import dataclasses
 import functools
 from dataclasses import dataclass
 
+import numpy as np
+
 from . import catalog
-from ._checks import check_choice, check_positive
+from ._checks import check_choice, check_positive, check_temperature
 from .fits import mounted_geometry
 from .friction import FrictionCoefficients
 from .friction_models import DEFAULT_FRICTION, FrictionModel, preset
 from .geometry import BallBearing, RaceGeometry
 from .mounting import Mounting
-from .preload import TANDEM, PreloadLoop, loop_interference, shim_for_preload, tandem_offsets
+from .pair_kernels import PairRows, loop_closure_at
+from .preload import ROLES, TANDEM, shim_for_preload, tandem_offsets
+from .temperatures import part_temperatures
 from .viscosity import ViscosityRange
 
 LUBRICATIONS = ("grease", "solid")
@@ -264,7 +268,8 @@ def loop_closure(pair: BearingPair, temperature):
     """C(T) = 2·h(T0) + s − Σ σ·L·α·(T_j − T0) [m] at a uniform temperature [K] or the parts'
     temperatures (each member j at its part's T_j; see :mod:`preload`). For a tandem pair the
     mismatch d(T) = −Σ σ·L·α·(T_j − T0) [m] of bearing B along the thrust relative to A (a
-    matched set: 0 at T0; :func:`~.preload.tandem_offsets`).
+    matched set: 0 at T0; :func:`~.preload.tandem_offsets`). The members are summed by part
+    (:func:`closure_coefficients`, :func:`~.pair_kernels.loop_closure_at`).
 
     Parameters
     ----------
@@ -285,14 +290,75 @@ def loop_closure(pair: BearingPair, temperature):
     >>> round(float(c[1] - c[0]) * 1e6, 3)  # µm: the loop closes on cooling
     47.2
     """
+    temps = part_temperatures(temperature)
+    t0 = check_temperature("assembly_temperature", pair.mounting.assembly_temperature)
+    return loop_closure_at(
+        *closure_coefficients(pair),
+        t0,
+        np.asarray(temps.housing),
+        np.asarray(temps.shaft),
+        np.asarray(temps.of("rings")),
+    )
+
+
+@functools.lru_cache(maxsize=64)
+def closure_coefficients(pair: BearingPair) -> tuple[float, float, float, float]:
+    """(C0 [m], c_housing, c_shaft, c_rings [m/K]) of the loop closure
+    C(T) = C0 − Σ_parts c_part·(T_part − T0): C0 = 2·h(T0) + s (a tandem pair: 0, the
+    mismatch vanishing at T0), c_part = Σ σ·L·α of the loop members that take the part's
+    temperature (Yu 2017 eq 14–15; :func:`~.preload.loop_interference`).
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+
+    Returns
+    -------
+    tuple of float
+        (C0 [m], housing, shaft, rings [m/K]).
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> c0, housing, shaft, rings = closure_coefficients(pair)
+    >>> housing > 0.0 > shaft  # m/K: a face-to-face pair's frame opens it, its shaft closes it
+    True
+    """
     m = pair.mounting
-    loop = m.loop
-    if effective_shim(pair) != loop.shim:
-        loop = PreloadLoop(loop.members, effective_shim(pair), loop.stiffness)
+    sums = {"housing": 0.0, "shaft": 0.0, "rings": 0.0}
+    for member in m.loop.members:
+        sums[member.part] += ROLES[member.role] * member.length * member.material.expansion
+    c0 = 0.0 if is_tandem(pair) else 2.0 * float(assembly_geometry(pair).first_contact_offset)
+    if not is_tandem(pair):
+        c0 += effective_shim(pair)
+    return c0, sums["housing"], sums["shaft"], sums["rings"]
+
+
+@functools.lru_cache(maxsize=64)
+def pair_rows(pair: BearingPair) -> PairRows:
+    """The equilibrium rows of the pair in its arrangement (:class:`~.pair_kernels.PairRows`):
+    a face-to-face or back-to-back pair in its loop of stiffness :func:`loop_stiffness`, or a
+    tandem pair under its preload spring and thrust (:func:`tandem_preload`).
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+
+    Returns
+    -------
+    PairRows
+
+    Examples
+    --------
+    >>> rows = pair_rows(BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"))
+    >>> rows.is_tandem, round(rows.stiffness / 1e6, 3)  # N/µm: the yoke arms and the shaft
+    (False, 0.37)
+    """
     if is_tandem(pair):
-        return loop_interference(loop, temperature, m.assembly_temperature)
-    h0 = float(assembly_geometry(pair).first_contact_offset)
-    return 2.0 * h0 + loop_interference(loop, temperature, m.assembly_temperature)
+        return PairRows(True, *tandem_preload(pair))
+    return PairRows(False, loop_stiffness(pair), 0.0)
 
 
 @functools.lru_cache(maxsize=64)

@@ -28,7 +28,7 @@ from ._checks import check_finite
 from .ehl_rolling import contact_rolling_terms
 from .equilibrium import _axial_state, _ring_stiffness
 from .fits import mounted_geometry
-from .friction import BallSetTorques, _palmgren, _regularised, ball_set_torques
+from .friction import BallSetTorques, ball_set_torques
 from .friction_models import (
     ehl_torque,
     grease_rest_and_start,
@@ -38,15 +38,17 @@ from .friction_models import (
     skf_torques,
 )
 from .geometry import RaceGeometry
-from .pair import BearingPair, is_tandem, loop_closure, loop_stiffness, tandem_preload
-from .preload import (
-    pair_axial_stiffness,
-    pair_equilibrium,
-    pair_offsets,
-    tandem_axial_stiffness,
-    tandem_equilibrium,
-    tandem_offsets,
+from .pair import BearingPair, is_tandem, loop_closure, pair_rows
+from .pair_kernels import (  # the kernels (floats or arrays) shared with the per-step path
+    PointState,  # noqa: F401  (re-exported: the output record)
+    _flags,
+    _palmgren,
+    _regularised,
+    axial_play,
+    preload_force,
 )
+from .pair_kernels import _coulomb_excess as _kernel_coulomb_excess
+from .preload import axial_offsets, pair_equilibrium
 from .temperatures import PARTS, PartTemperatures, part_temperatures
 
 
@@ -135,12 +137,9 @@ def thermal_state(pair: BearingPair, temperature) -> ThermalState:
         pair.bearing, m.fit, temps, m.assembly_temperature, pair.thermal_coupling
     )
     closure = loop_closure(pair, temps)
-    if is_tandem(pair):
-        k, thrust = tandem_preload(pair)
-        offsets = tandem_offsets(mounted.race, closure, k, thrust, 0.0)
-    else:
-        k = loop_stiffness(pair)
-        offsets = pair_offsets(mounted.race, closure, k, 0.0)
+    rows = pair_rows(pair)
+    k = rows.stiffness
+    offsets = axial_offsets(mounted.race, rows, closure, 0.0)
     t_lub = np.asarray(temps.lubricant)
     lub = pair.lubricant
     visc = np.zeros_like(t_lub) if lub is None else lub.operating_viscosity(t_lub)
@@ -242,81 +241,15 @@ def state_flags(
     >>> state_flags(pair, 2e-6, 1.5e9, 40.0, 0.0)  # m, Pa, N, N: B lost its load
     {'overloaded': False, 'locked': False, 'unloaded': True, 'reverse_loaded': False}
     """
+    overloaded, locked, unloaded, reverse = _flags(
+        pair.pressure_limit, clearance, max_contact_pressure, force_a, force_b
+    )
     return {
-        "overloaded": max_contact_pressure >= pair.pressure_limit,
-        "locked": (clearance <= 0.0) | (not converged),
-        "unloaded": (force_a <= 0.0) | (force_b <= 0.0),
-        "reverse_loaded": (force_a < 0.0) | (force_b < 0.0),
+        "overloaded": overloaded,
+        "locked": locked | (not converged),
+        "unloaded": unloaded,
+        "reverse_loaded": reverse,
     }
-
-
-def preload_force(force_a, force_b):
-    """The preload [N]: the mean axial force of the two bearings, (F_A + F_B)/2, the loop's
-    compression (a tandem pair: half the thrust the set carries, the spring's or force's plus
-    the external load), and 0 where that mean is not a compression (both bearings pushed onto
-    the other flanks of their grooves, ``reverse_loaded``). Under an external load one bearing
-    carries more than the preload, the other less; once one carries nothing (``unloaded``) the
-    mean is half the load the other carries, and :func:`axial_play` says how far the shaft can
-    move.
-
-    Parameters
-    ----------
-    force_a, force_b : float or ndarray
-        Axial forces of bearings A and B [N] (negative: on the other flanks).
-
-    Returns
-    -------
-    float or ndarray
-        [N], ≥ 0.
-
-    Examples
-    --------
-    >>> preload_force(60.0, 20.0), preload_force(-10.0, -30.0)  # N
-    (40.0, 0.0)
-    """
-    n = 0.5 * (force_a + force_b)
-    if type(n) is float:  # the per-step path
-        return n if n > 0.0 else 0.0
-    return np.maximum(n, 0.0)
-
-
-def axial_play(first_contact_offset, offset_a, offset_b, force_a, force_b):
-    """Axial play of the pair [m]: for each bearing that carries no axial load (F ≤ 0), the
-    axial offset its groove centres lack to first contact, h − a (the balls' gap to the flanks
-    that carry a preload); summed over the two bearings, 0 when both carry load. At zero
-    external load it is how far the loop is short of closing on the two bearings, 2h − C (loop
-    closure C); under a load, how far the shaft can move back before the unloaded bearing
-    touches (its elastic deflections aside). Harris & Kotzalas 2007 ch. 2 (axial play 2h).
-
-    Parameters
-    ----------
-    first_contact_offset : float or ndarray
-        h [m] (:func:`.geometry.first_contact_offset`).
-    offset_a, offset_b : float or ndarray
-        Axial offsets of bearings A and B [m].
-    force_a, force_b : float or ndarray
-        Their axial forces [N].
-
-    Returns
-    -------
-    float or ndarray
-        [m], ≥ 0.
-
-    Examples
-    --------
-    >>> round(axial_play(60e-6, 40e-6, 40e-6, 0.0, 0.0) * 1e6, 9)  # µm: two 20 µm gaps
-    40.0
-    >>> axial_play(60e-6, 65e-6, 50e-6, 30.0, 10.0)  # both in contact
-    0.0
-    """
-    h = first_contact_offset
-    if type(offset_a) is float:  # the per-step path
-        play_a = h - offset_a if force_a <= 0.0 and offset_a < h else 0.0
-        play_b = h - offset_b if force_b <= 0.0 and offset_b < h else 0.0
-        return play_a + play_b
-    play_a = np.where(np.asarray(force_a) <= 0.0, np.maximum(h - np.asarray(offset_a), 0.0), 0.0)
-    play_b = np.where(np.asarray(force_b) <= 0.0, np.maximum(h - np.asarray(offset_b), 0.0), 0.0)
-    return play_a + play_b
 
 
 def _torques(pair: BearingPair, geom: RaceGeometry, load, alpha, inner, outer, count=1):
@@ -433,12 +366,8 @@ def load_state(pair: BearingPair, thermal: ThermalState, axial_load=0.0, radial_
     if np.all(np.asarray(f_ext) == 0):  # the thermal state holds the unloaded offsets
         a_a = thermal.preload_offset
         a_b = a_a + thermal.closure if is_tandem(pair) else a_a
-    elif is_tandem(pair):
-        k, thrust = tandem_preload(pair)
-        off = tandem_offsets(thermal.geometry, thermal.closure, k, thrust, f_ext)
-        a_a, a_b = off.offset_a, off.offset_b
     else:
-        off = pair_offsets(thermal.geometry, thermal.closure, thermal.loop_stiffness, f_ext)
+        off = axial_offsets(thermal.geometry, pair_rows(pair), thermal.closure, f_ext)
         a_a, a_b = off.offset_a, off.offset_b
     return axial_load_state(pair, thermal, a_a, a_b)
 
@@ -504,9 +433,7 @@ def axial_load_state(pair: BearingPair, thermal: ThermalState, offset_a, offset_
 def _pair_stiffness(pair: BearingPair, ka, kb, k):
     """Axial stiffness of the shaft [N/m] from the bearings' ``ka``, ``kb`` and the loop's
     (a tandem pair: the spring's) ``k`` [N/m]."""
-    if is_tandem(pair):
-        return tandem_axial_stiffness(ka, kb, k)
-    return pair_axial_stiffness(ka, kb, k)
+    return pair_rows(pair).axial_stiffness(ka, kb)
 
 
 def _displacement(pair: BearingPair, thermal: ThermalState, offset_a, offset_b):
@@ -522,11 +449,7 @@ def _combined_load_state(pair, thermal, f_ext, f_r) -> LoadState:
     if np.ndim(thermal.temperature):
         raise ValueError("a radial load needs a scalar temperature (one thermal state)")
     geom, k = thermal.geometry, thermal.loop_stiffness
-    if is_tandem(pair):
-        st = tandem_equilibrium(geom, float(thermal.closure), k, tandem_preload(pair)[1],
-                                f_ext, f_r)  # fmt: skip
-    else:
-        st = pair_equilibrium(geom, float(thermal.closure), k, f_ext, f_r)
+    st = pair_equilibrium(geom, float(thermal.closure), pair_rows(pair), f_ext, f_r)
     la, lb = st.balls_a, st.balls_b
     t = _add(
         _torques(pair, geom, la.load, la.contact_angle, la.inner, la.outer),
@@ -662,8 +585,9 @@ def _speed_terms(pair: BearingPair, viscosity, pitch_diameter, coulomb, excess, 
 def _coulomb_excess(pair: BearingPair, hysteresis, spin, sliding):
     """(Coulomb torque hysteresis + spin + sliding, breakaway excess (μ_s/μ − 1)·(spin +
     sliding)) [N·m] (Yu 2017 eq 9; the static friction of spin and sliding)."""
-    excess = (pair.coefficients.static_friction_ratio - 1.0) * (spin + sliding)
-    return hysteresis + spin + sliding, excess
+    return _kernel_coulomb_excess(
+        pair.coefficients.static_friction_ratio, hysteresis, spin, sliding
+    )
 
 
 def contact_terms(pair: BearingPair, hysteresis, spin, sliding, inner, outer):
@@ -849,183 +773,132 @@ def bearing_outputs(
     )
 
 
-@dataclass(slots=True)
-class PointState:
-    """Everything BearingFriction reports at one operating point except what moves with speed,
-    as floats: the per-step state of :class:`~.bearing.BearingModel` (from the continuation or
-    the exact path), with the Coulomb torque, breakaway excess, pitch diameter [m], kinematic
-    viscosity [m²/s] and friction model data (``rolling``, :func:`rolling_data` as floats:
-    JSON-serialisable) that the speed terms need. Fields as :class:`BearingOutputs`
-    (torques [N·m], forces [N], angle [rad], lengths [m], stiffness [N/m], pressures [Pa]);
-    ``sliding_torque`` is that of the contacts (the SKF model's moves with speed)."""
+def point_state(cls, pair: BearingPair, thermal, torques, load, flags, rest=None,
+                rolling=None):  # fmt: skip
+    """A :class:`~.pair_kernels.PointState` (of class ``cls``: the compiled or the Python one)
+    from the thermal state ``thermal`` (clearance, viscosity, pitch diameter, fits, the
+    lubricant's range flag), ``torques`` = (hysteresis, spin, sliding, inner ring, outer ring)
+    [N·m], ``load`` = (preload [N], contact angle [rad], axial stiffness [N/m], largest
+    pressure [Pa], force_a, force_b [N], axial displacement [m], axial play [m]), ``flags`` =
+    (overloaded, locked, unloaded, reverse_loaded) (:func:`state_flags`), the viscous torque at
+    rest [N·m] (:func:`rest_torque`, evaluated when not given) and the friction model's
+    ``rolling`` data (:func:`rolling_data`, floats).
 
-    hysteresis_torque: float
-    spin_torque: float
-    sliding_torque: float
-    inner_ring_torque: float
-    outer_ring_torque: float
-    coulomb_torque: float
-    breakaway_excess: float
-    breakaway_torque: float
-    preload: float
-    contact_angle: float
-    radial_clearance: float
-    kinematic_viscosity: float
-    pitch_diameter: float
-    axial_stiffness: float
-    max_contact_pressure: float
-    outer_fit_pressure: float
-    inner_fit_pressure: float
-    outer_interference: float
-    inner_interference: float
-    force_a: float
-    force_b: float
-    axial_displacement: float
-    overloaded: bool
-    locked: bool
-    unloaded: bool
-    reverse_loaded: bool
-    outside_lubricant_range: bool
-    axial_play: float
-    rolling: tuple | list | None = None
+    Returns
+    -------
+    PointState
 
-    @classmethod
-    def of(cls, pair: BearingPair, thermal, torques, load, flags, rest=None,
-           rolling=None) -> PointState:  # fmt: skip
-        """From the thermal state ``thermal`` (clearance, viscosity, pitch diameter, fits, the
-        lubricant's range flag), ``torques`` = (hysteresis, spin, sliding, inner ring, outer
-        ring) [N·m], ``load`` = (preload [N], contact angle [rad], axial stiffness [N/m],
-        largest pressure [Pa], force_a, force_b [N], axial displacement [m], axial play [m]),
-        ``flags`` = (overloaded, locked, unloaded, reverse_loaded) (:func:`state_flags`), the
-        viscous torque at rest [N·m]
-        (:func:`rest_torque`, evaluated when not given) and the friction model's ``rolling``
-        data (:func:`rolling_data`, floats)."""
-        nu, dm = thermal.kinematic_viscosity, thermal.pitch_diameter
-        fm = pair.friction
-        if fm.model == "yu2017" and fm.grease is None:  # the default: the per-step hot path
-            hyst, spin, slide, inner, outer = torques
-            coulomb, excess = _coulomb_excess(pair, hyst, spin, slide)
-            rest = rest_torque(pair, nu, dm) if rest is None else rest
-            breakaway = coulomb + excess + rest
-        else:
-            hyst, spin, slide, inner, outer = contact_terms(pair, *torques)
-            coulomb, excess, breakaway = state_torques(
-                pair, hyst, spin, slide, nu, dm, rolling, rest
-            )
-        return cls(
-            hyst,
-            spin,
-            slide,
-            inner,
-            outer,
-            coulomb,
-            excess,
-            breakaway,
-            load[0],
-            load[1],
-            thermal.clearance,
-            nu,
-            dm,
-            load[2],
-            load[3],
-            thermal.outer_fit_pressure,
-            thermal.inner_fit_pressure,
-            thermal.outer_interference,
-            thermal.inner_interference,
-            load[4],
-            load[5],
-            load[6],
-            *flags,
-            thermal.outside_lubricant_range,
-            load[7],
-            rolling,
-        )
+    Examples
+    --------
+    >>> from servofmu.physics.pair_kernels import PointState
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> th = to_floats(thermal_state(pair, 293.15))
+    >>> pt = point_state(PointState, pair, th, (1e-4, 2e-4, 0.0, 1e-4, 2e-4),
+    ...                  (40.0, 0.26, 3e7, 1e9, 40.0, 40.0, 0.0, 0.0), (False,) * 4)
+    >>> round(pt.coulomb_torque * 1e3, 6)  # N·mm: hysteresis + spin + sliding
+    0.3
+    """
+    nu, dm = thermal.kinematic_viscosity, thermal.pitch_diameter
+    hyst, spin, slide, inner, outer = contact_terms(pair, *torques)
+    coulomb, excess, breakaway = state_torques(pair, hyst, spin, slide, nu, dm, rolling, rest)
+    return cls(
+        hyst, spin, slide, inner, outer, coulomb, excess, breakaway, load[0], load[1],
+        thermal.clearance, nu, dm, load[2], load[3], thermal.outer_fit_pressure,
+        thermal.inner_fit_pressure, thermal.outer_interference, thermal.inner_interference,
+        load[4], load[5], load[6], *flags, thermal.outside_lubricant_range, load[7], rolling,
+    )  # fmt: skip
 
-    @classmethod
-    def exact(cls, pair: BearingPair, thermal: ThermalState, load: LoadState) -> PointState:
-        """From the exact path's thermal and load state (fields as floats, :func:`to_floats`)."""
-        t = load.torques
-        return cls.of(
-            pair,
-            thermal,
-            (t.hysteresis, t.spin, t.sliding, t.inner_ring, t.outer_ring),
-            (
-                load.preload,
-                load.contact_angle,
-                load.axial_stiffness,
-                load.max_contact_pressure,
-                load.force_a,
-                load.force_b,
-                load.axial_displacement,
-                load.axial_play,
-            ),
-            (load.overloaded, load.locked, load.unloaded, load.reverse_loaded),
-            rolling=_rolling_floats(load.rolling),
-        )
 
-    def speed_terms(self, pair: BearingPair, w: float):
-        """(signed friction, running, sliding, viscous, grease torque) [N·m] at speed ``w``
-        [rad/s]."""
-        return _speed_terms(
-            pair,
-            self.kinematic_viscosity,
-            self.pitch_diameter,
-            self.coulomb_torque,
-            self.breakaway_excess,
-            self.sliding_torque,
-            self.rolling,
-            w,
-        )
+def exact_point(cls, pair: BearingPair, thermal: ThermalState, load: LoadState):
+    """:func:`point_state` from the exact path's thermal and load state (fields as floats,
+    :func:`to_floats`).
 
-    def outputs(self, pair: BearingPair, w: float) -> BearingOutputs:
-        """:class:`BearingOutputs` at speed ``w`` [rad/s] (float): the same numbers as
-        :func:`bearing_outputs` on the exact path's state."""
-        signed, running, sliding, viscous, grease = _speed_terms(
-            pair,
-            self.kinematic_viscosity,
-            self.pitch_diameter,
-            self.coulomb_torque,
-            self.breakaway_excess,
-            self.sliding_torque,
-            self.rolling,
-            w,
-        )  # (speed_terms inlined: the per-step path)
-        return BearingOutputs(
-            signed,
-            running,
-            self.breakaway_torque,
-            self.hysteresis_torque,
-            self.spin_torque,
-            sliding,
-            viscous,
-            grease,
-            self.preload,
-            self.contact_angle,
-            self.radial_clearance,
-            self.kinematic_viscosity,
-            self.axial_stiffness,
-            signed * w,
-            self.overloaded,
-            self.locked,
-            self.unloaded,
-            self.inner_ring_torque,
-            self.outer_ring_torque,
-            self.max_contact_pressure,
-            self.outer_fit_pressure,
-            self.inner_fit_pressure,
-            self.outer_interference,
-            self.inner_interference,
-            self.force_a,
-            self.force_b,
-            self.axial_displacement,
-            self.axial_play,
-            self.reverse_loaded,
-            self.outside_lubricant_range,
-        )
+    Returns
+    -------
+    PointState
 
-    def as_dict(self) -> dict:
-        """The fields as a JSON-serialisable dict."""
-        return {f.name: getattr(self, f.name) for f in fields(self)}
+    Examples
+    --------
+    >>> from servofmu.physics.pair_kernels import PointState
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> th = to_floats(thermal_state(pair, 293.15))
+    >>> ls = to_floats(load_state(pair, th))
+    >>> exact_point(PointState, pair, th, ls).preload == ls.preload  # N
+    True
+    """
+    t = load.torques
+    return point_state(
+        cls,
+        pair,
+        thermal,
+        (t.hysteresis, t.spin, t.sliding, t.inner_ring, t.outer_ring),
+        (
+            load.preload,
+            load.contact_angle,
+            load.axial_stiffness,
+            load.max_contact_pressure,
+            load.force_a,
+            load.force_b,
+            load.axial_displacement,
+            load.axial_play,
+        ),
+        (load.overloaded, load.locked, load.unloaded, load.reverse_loaded),
+        rolling=_rolling_floats(load.rolling),
+    )
+
+
+def point_outputs(point, speed_outputs) -> BearingOutputs:
+    """:class:`BearingOutputs` of the state ``point`` (:class:`~.pair_kernels.PointState`) with
+    the speed outputs ``speed_outputs`` = (friction, running, sliding, viscous, grease torque
+    [N·m], power loss [W]) (:meth:`~.pair_kernels.PairSolver.speed_outputs`): the same numbers
+    as :func:`bearing_outputs` on the exact path's state.
+
+    Returns
+    -------
+    BearingOutputs
+
+    Examples
+    --------
+    >>> from servofmu.physics.pair_kernels import PointState
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> th = to_floats(thermal_state(pair, 293.15))
+    >>> pt = exact_point(PointState, pair, th, to_floats(load_state(pair, th)))
+    >>> point_outputs(pt, (1e-3, 1e-3, 0.0, 5e-4, 0.0, 1e-4)).power_loss  # W
+    0.0001
+    """
+    signed, running, sliding, viscous, grease, power = speed_outputs
+    return BearingOutputs(
+        signed,
+        running,
+        point.breakaway_torque,
+        point.hysteresis_torque,
+        point.spin_torque,
+        sliding,
+        viscous,
+        grease,
+        point.preload,
+        point.contact_angle,
+        point.radial_clearance,
+        point.kinematic_viscosity,
+        point.axial_stiffness,
+        power,
+        point.overloaded,
+        point.locked,
+        point.unloaded,
+        point.inner_ring_torque,
+        point.outer_ring_torque,
+        point.max_contact_pressure,
+        point.outer_fit_pressure,
+        point.inner_fit_pressure,
+        point.outer_interference,
+        point.inner_interference,
+        point.force_a,
+        point.force_b,
+        point.axial_displacement,
+        point.axial_play,
+        point.reverse_loaded,
+        point.outside_lubricant_range,
+    )
 
 
 def _rolling_floats(rolling):

@@ -64,6 +64,7 @@ from ._checks import (
 from .equilibrium import _geometry_args, _geometry_from_args, axial_force, offset_for_axial_force
 from .geometry import RaceGeometry
 from .materials import Material
+from .pair_kernels import PairRows
 from .temperatures import MEMBER_PARTS, part_temperatures
 
 ROLES = {"opening": 1.0, "closing": -1.0}
@@ -553,6 +554,41 @@ def pair_offsets(geom: RaceGeometry, closure, loop_stiffness: float, external_lo
     return PairOffsets(a_a, a_b, axial_force(a_a, geom), axial_force(a_b, geom))
 
 
+def axial_offsets(geom: RaceGeometry, rows, closure, external_load=0.0) -> PairOffsets:
+    """Offsets and forces of the pair under an axial load F_ext [N] in its arrangement
+    (elementwise over arrays): :func:`pair_offsets` for a face-to-face or back-to-back pair in
+    its loop, :func:`tandem_offsets` for a tandem pair, from the arrangement's rows
+    (:class:`~.pair_kernels.PairRows`).
+
+    Parameters
+    ----------
+    geom : RaceGeometry
+        Operating geometry.
+    rows : PairRows
+        The arrangement (:func:`.pair.pair_rows`).
+    closure : float or array_like
+        Loop closure C [m] (a tandem pair: the mismatch d [m]).
+    external_load : float or array_like
+        F_ext [N].
+
+    Returns
+    -------
+    PairOffsets
+        offset_a, offset_b [m]; force_a, force_b [N]; loop_force [N].
+
+    Examples
+    --------
+    >>> from servofmu.physics import catalog
+    >>> g = catalog.bearing("71803").race_geometry()
+    >>> o = axial_offsets(g, PairRows(True, 0.0, 40.0), 0.0)
+    >>> round(float(o.force_a), 6), round(float(o.force_b), 6)  # a tandem set: equal shares, N
+    (20.0, 20.0)
+    """
+    if rows.is_tandem:
+        return tandem_offsets(geom, closure, rows.spring, rows.thrust, external_load)
+    return pair_offsets(geom, closure, rows.k_loop, external_load)
+
+
 def pair_axial_stiffness(stiffness_a, stiffness_b, loop_stiffness: float):
     """Axial stiffness of the shaft in the pair [N/m] from the bearings' dFa/da [N/m] and the
     loop stiffness k [N/m]: K = k_A + k_B − (k_A − k_B)²/(4k + k_A + k_B) (differentiating the
@@ -572,10 +608,7 @@ def pair_axial_stiffness(stiffness_a, stiffness_b, loop_stiffness: float):
     """
     ka = np.asarray(check_nonnegative("stiffness_a", stiffness_a, "N/m"))
     kb = np.asarray(check_nonnegative("stiffness_b", stiffness_b, "N/m"))
-    loop_stiffness = check_loop_stiffness(loop_stiffness)
-    if np.isinf(loop_stiffness):
-        return ka + kb
-    return ka + kb - (ka - kb) ** 2 / (4.0 * loop_stiffness + ka + kb)
+    return PairRows(False, check_loop_stiffness(loop_stiffness), 0.0).axial_stiffness(ka, kb)
 
 
 def shim_for_preload(geom_assembly: RaceGeometry, preload: float, loop_stiffness: float) -> float:
@@ -625,17 +658,33 @@ class PairState:
     converged: bool
 
 
-def pair_equilibrium(
-    geom: RaceGeometry, closure: float, loop_stiffness: float, axial_load: float, radial_load: float
-) -> PairState:
-    """Equilibrium of the pair under an axial load F_ext [N] (pressing bearing A) and a radial
-    load F_r [N] shared equally by A and B (load midway between them; the tilt of each
-    bearing is neglected, the span being long against the ball set). Scalar geometry.
+def pair_equilibrium(geom: RaceGeometry, closure: float, rows, axial_load: float,
+                     radial_load: float) -> PairState:  # fmt: skip
+    """Equilibrium of the pair under an axial load F_ext [N] (pressing bearing A; a tandem
+    pair: along its thrust) and a radial load F_r [N] shared equally by A and B (load midway
+    between them; the tilt of each bearing is neglected, the span being long against the ball
+    set). Scalar geometry; every arrangement.
 
-    Unknowns: mean offset p (when the loop is compliant), shaft displacement z, radial
-    displacements δr_A, δr_B; equations F_A − F_B = F_ext, Fr_A = Fr_B = F_r/2 and the loop
-    compatibility of :func:`pair_offsets`. Newton–Powell (scipy.optimize.root, hybr) with the
-    analytic stiffness, started from the axial solution. Jones (1960) ball loads per bearing.
+    Unknowns: mean offset p and shaft displacement z (a_A = p + z, a_B = p − z), radial
+    displacements δr_A, δr_B; the conditions are the arrangement's rows
+    (:class:`~.pair_kernels.PairRows`: F_A − F_B = F_ext and the loop compatibility of
+    :func:`pair_offsets` for a pair in its loop, p = C/2 held in a rigid one; F_A + F_B +
+    k_s·a_A = T + F_ext with z = −d/2 held for a tandem pair, :func:`tandem_offsets`) and
+    Fr_A = Fr_B = F_r/2. Newton–Powell (scipy.optimize.root, hybr) with the analytic
+    stiffness, started from the axial solution (:func:`axial_offsets`). Jones (1960) ball
+    loads per bearing.
+
+    Parameters
+    ----------
+    geom : RaceGeometry
+        Operating geometry (scalar fields).
+    closure : float
+        Loop closure C [m] (a tandem pair: the mismatch d [m]).
+    rows : PairRows or float
+        The arrangement's rows, or the loop stiffness k [N/m] of a face-to-face or
+        back-to-back pair (inf: rigid).
+    axial_load, radial_load : float
+        F_ext, F_r [N].
 
     Returns
     -------
@@ -658,54 +707,59 @@ def pair_equilibrium(
     f_ext = check_finite("axial_load", axial_load, "N")
     f_r = check_finite("radial_load", radial_load, "N")
     closure = check_finite("closure", closure, "m")
-    k = check_loop_stiffness(loop_stiffness)
-    rigid = np.isinf(k)
-    start = pair_offsets(geom, closure, k, f_ext)
+    if not isinstance(rows, PairRows):
+        rows = PairRows(False, check_loop_stiffness(rows), 0.0)
+    start = axial_offsets(geom, rows, closure, f_ext)
     a_len = float(geom.curvature_distance)
-    scale = max(abs(f_ext), abs(f_r), float(start.loop_force), 1e-3)
+    a0, b0 = float(start.offset_a[()]), float(start.offset_b[()])
+    scale = max(abs(rows.thrust + f_ext), abs(f_r), float(start.loop_force), 1e-3)
     zero = np.zeros(1)
+    # the free unknowns of (p, z, δr_A, δr_B) and the rows that hold the others (r4 counts as
+    # a force, k·r4, in a compliant loop)
+    held = rows.held
+    free = [i for i, name in enumerate("pz") if name != held] + [2, 3]
+    r4_force = rows.held == ""
+    fixed = {"p": 0.5 * closure, "z": -0.5 * closure}.get(held)
 
     def loads(p, z, da, db):
         la = _ball_loads(geom, np.atleast_1d(p + z)[:, None], np.atleast_1d(da)[:, None], zero)
         lb = _ball_loads(geom, np.atleast_1d(p - z)[:, None], np.atleast_1d(db)[:, None], zero)
         return la, lb
 
-    p0 = 0.5 * float(start.offset_a[()] + start.offset_b[()])
-    dr0 = _radial_start(geom, p0, f_r)
-    z0 = 0.5 * float(start.offset_a[()] - start.offset_b[()])
-
     def unpack(x):
-        if rigid:
-            return 0.5 * closure, x[0] * a_len, x[1] * a_len, x[2] * a_len
-        return x[0] * a_len, x[1] * a_len, x[2] * a_len, x[3] * a_len
+        full = [0.0, 0.0, 0.0, 0.0]
+        for i, v in zip(free, x * a_len, strict=True):
+            full[i] = float(v)
+        if held == "p":
+            full[0] = fixed
+        elif held == "z":
+            full[1] = fixed
+        return full
 
     def fun(x):
         p, z, da, db = unpack(x)
         la, lb = loads(p, z, da, db)
         ja, jb = _ring_stiffness(geom, la)[0], _ring_stiffness(geom, lb)[0]
-        fa, fb = la.axial_force[0], lb.axial_force[0]
-        res = [fa - fb - f_ext, la.radial_force[0] - 0.5 * f_r, lb.radial_force[0] - 0.5 * f_r]
-        jac = [
-            [ja[0, 0] - jb[0, 0], ja[0, 0] + jb[0, 0], ja[0, 1], -jb[0, 1]],
-            [ja[1, 0], ja[1, 0], ja[1, 1], 0.0],
-            [jb[1, 0], -jb[1, 0], 0.0, jb[1, 1]],
-        ]
-        if not rigid:
-            res.append(0.5 * (fa + fb) - k * (closure - 2.0 * p))
-            jac.append(
-                [
-                    0.5 * (ja[0, 0] + jb[0, 0]) + 2.0 * k,
-                    0.5 * (ja[0, 0] - jb[0, 0]),
-                    0.5 * ja[0, 1],
-                    0.5 * jb[0, 1],
-                ]
-            )
-        jac = np.array(jac) * a_len
-        if rigid:
-            jac = jac[:, 1:]
-        return np.array(res) / scale, jac / scale
+        r = rows.residuals(
+            la.axial_force[0], lb.axial_force[0], la.radial_force[0], lb.radial_force[0],
+            p, z, closure, f_ext, f_r,
+        )  # fmt: skip
+        jac = rows.jacobian(((ja[0, 0], ja[0, 1]), (ja[1, 0], ja[1, 1])),
+                            ((jb[0, 0], jb[0, 1]), (jb[1, 0], jb[1, 1])))  # fmt: skip
+        if r4_force:  # the loop's row as a force, k·r4
+            res, jac = [*r[:3], rows.k_loop * r[3]], [*jac[:3], [rows.k_loop * v for v in jac[3]]]
+        else:
+            res, jac = list(r[:3]), jac[:3]
+        jac = np.array(jac)[:, free] * a_len
+        return np.array(res, dtype=float) / scale, jac / scale
 
-    x0 = np.array([z0, dr0, dr0]) / a_len if rigid else np.array([p0, z0, dr0, dr0]) / a_len
+    x0 = (
+        np.array(
+            [(0.5 * (a0 + b0), 0.5 * (a0 - b0))[i] for i in free[:-2]]
+            + [_radial_start(geom, a0, f_r), _radial_start(geom, b0, f_r)]
+        )
+        / a_len
+    )
     x, resid = _best_root(fun, x0)
     p, z, da, db = unpack(x)
     la, lb = loads(p, z, da, db)
@@ -820,7 +874,8 @@ def tandem_axial_stiffness(stiffness_a, stiffness_b, spring_stiffness: float):
     """
     ka = np.asarray(check_nonnegative("stiffness_a", stiffness_a, "N/m"))
     kb = np.asarray(check_nonnegative("stiffness_b", stiffness_b, "N/m"))
-    return ka + kb + check_nonnegative("spring_stiffness", spring_stiffness, "N/m")
+    ks = float(check_nonnegative("spring_stiffness", spring_stiffness, "N/m"))
+    return PairRows(True, ks, 0.0).axial_stiffness(ka, kb)
 
 
 def tandem_equilibrium(
@@ -853,42 +908,7 @@ def tandem_equilibrium(
     >>> st.converged, round(float(st.balls_a.radial_force[0]), 9)  # each carries half, N
     (True, 10.0)
     """
-    from .equilibrium import _ball_loads, _ring_stiffness
-
-    f_ext = check_finite("axial_load", axial_load, "N")
-    f_r = check_finite("radial_load", radial_load, "N")
     d = float(check_finite("mismatch", mismatch, "m"))
     ks = float(check_nonnegative("spring_stiffness", spring_stiffness, "N/m"))
     thrust = float(check_finite("thrust", thrust, "N"))
-    start = tandem_offsets(geom, d, ks, thrust, f_ext)
-    a_len = float(geom.curvature_distance)
-    a0 = float(start.offset_a[()])
-    scale = max(abs(thrust + f_ext), abs(f_r), 1e-3)
-    zero = np.zeros(1)
-
-    def loads(x):
-        a, da, db = x * a_len
-        la = _ball_loads(geom, np.atleast_1d(a)[:, None], np.atleast_1d(da)[:, None], zero)
-        lb = _ball_loads(geom, np.atleast_1d(a + d)[:, None], np.atleast_1d(db)[:, None], zero)
-        return la, lb
-
-    def fun(x):
-        la, lb = loads(x)
-        ja, jb = _ring_stiffness(geom, la)[0], _ring_stiffness(geom, lb)[0]
-        res = [
-            la.axial_force[0] + lb.axial_force[0] + ks * x[0] * a_len - thrust - f_ext,
-            la.radial_force[0] - 0.5 * f_r,
-            lb.radial_force[0] - 0.5 * f_r,
-        ]
-        jac = [
-            [ja[0, 0] + jb[0, 0] + ks, ja[0, 1], jb[0, 1]],
-            [ja[1, 0], ja[1, 1], 0.0],
-            [jb[1, 0], 0.0, jb[1, 1]],
-        ]
-        return np.array(res) / scale, np.array(jac) * a_len / scale
-
-    x0 = np.array([a0, _radial_start(geom, a0, f_r), _radial_start(geom, a0 + d, f_r)]) / a_len
-    x, resid = _best_root(fun, x0)
-    la, lb = loads(x)
-    a, da, db = x * a_len
-    return PairState(a, a + d, da, db, la, lb, resid < 1e-9)
+    return pair_equilibrium(geom, d, PairRows(True, ks, thrust), axial_load, radial_load)

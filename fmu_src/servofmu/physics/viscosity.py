@@ -69,21 +69,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._checks import check_positive, check_range, check_temperature
+from .pair_kernels import (  # the laws' kernels, shared with the per-step path
+    _operating_temperature,
+    _vogel_exponent,
+    _walther_cst,
+)
 from .units import CST
 
 #: The reference temperatures of ν40 and ν100 (ISO 3448, ASTM D341) [K].
 T40, T100 = 313.15, 373.15
-
-
-def _walther_cst(lg_t, a: float, b: float, c: float):
-    """ν [cSt] of lg lg(ν + c) = a − b·lg T at lg T = ``lg_t`` (float or array): the one place
-    of Walther's equation (Yu 2017 eq 18, ASTM D341)."""
-    return 10.0 ** (10.0 ** (a - b * lg_t)) - c
-
-
-def _vogel_exponent(t, a: float, b: float, t_inf: float):
-    """ln ν [ln(m²/s)] of Vogel's law at ``t`` [K] (float or array): the one place of it."""
-    return a + b / (t - t_inf)
 
 
 @dataclass(frozen=True)
@@ -191,9 +185,9 @@ class ViscosityRange:
 
     def operating_viscosity_at(self, t: float) -> float:
         """:meth:`operating_viscosity` on one float [K] → [m²/s] (the per-step path)."""
-        if self.extrapolate_below or t > self.lower_limit:
-            return self.viscosity_at(t)
-        return self.viscosity_at(self.lower_limit)
+        return self.viscosity_at(
+            _operating_temperature(t, self.lower_limit, self.extrapolate_below)
+        )
 
 
 @dataclass(frozen=True, kw_only=True)
