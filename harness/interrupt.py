@@ -105,7 +105,9 @@ def interruptible():
     """Within this block SIGINT and SIGTERM set the yielded :class:`StopRequest` instead of
     raising KeyboardInterrupt or ending the process. Nested blocks share the outer request.
     Signal handlers can only be set in the main thread: elsewhere (a Dask worker's thread) it
-    yields None and changes nothing."""
+    yields None and changes nothing. A signal that the block did not act on (it came after
+    the block's last check, while a run wrote its results) is raised again when the block
+    ends, for the handler outside it: a stop request is never lost between two runs."""
     global _ACTIVE
     if _ACTIVE is not None:
         yield _ACTIVE
@@ -122,3 +124,5 @@ def interruptible():
         _ACTIVE = None
         for s, handler in previous.items():
             signal.signal(s, handler)
+    if request.requested:  # it came after the last check (a run's end): the handler outside acts
+        signal.raise_signal(request.signum)

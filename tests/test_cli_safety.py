@@ -147,6 +147,24 @@ def test_a_signal_stops_a_run_within_a_step_and_keeps_the_results(ssp, tmp_path,
         assert np.all(np.isfinite(data["motor.speed"]))
 
 
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+def test_a_signal_after_the_last_check_is_raised_when_the_run_ends(signum):
+    # a signal while a run writes its results (after its last step's check) must still stop
+    # the work: a scenario must not start its next run as if nothing came
+    from servofmu.harness.interrupt import Terminated, interruptible, terminate_as_interrupt
+
+    previous = signal.getsignal(signal.SIGTERM)
+    terminate_as_interrupt()
+    try:
+        with pytest.raises(KeyboardInterrupt) as caught:
+            with interruptible() as request:
+                signal.raise_signal(signum)  # only noted here
+                assert request.requested
+        assert isinstance(caught.value, Terminated) == (signum == signal.SIGTERM)
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
 def test_sigterm_keeps_a_scenarios_results_as_ctrl_c_does(fmus, tmp_path):
     out = tmp_path / "scenario"
     child = subprocess.Popen(
