@@ -214,12 +214,16 @@ class _Unit:
         """Point the unit's FMI calls at its slices of the run's buffers (``values``: c_double,
         ``flags``: c_int; :class:`_UnitWiring`): its inputs are set from, its outputs read
         into, those slices, so a step moves no value through a Python list."""
+        linked, first = wiring.n_linked, wiring.first_output
         self.n_in, self.in_vr = _block(ctypes.c_uint, wiring.input_vrs)
-        self.n_out, self.out_vr = _block(ctypes.c_uint, wiring.output_vrs)
+        self.n_out, self.out_vr = _block(ctypes.c_uint, wiring.output_vrs[:linked])
+        self.n_kept, self.kept_vr = _block(ctypes.c_uint, wiring.output_vrs[linked:])
         self.n_bool, self.bool_vr = _block(ctypes.c_uint, wiring.bool_vrs)
         self.in_val = _view(values, ctypes.c_double, wiring.first_input, self.n_in)
-        self.out_val = _view(values, ctypes.c_double, wiring.first_output, self.n_out)
+        self.out_val = _view(values, ctypes.c_double, first, self.n_out)
+        self.kept_val = _view(values, ctypes.c_double, first + linked, self.n_kept)
         self.bool_val = _view(flags, ctypes.c_int, wiring.first_bool, self.n_bool)
+        self.recorded_only = bool(self.n_kept or self.n_bool)
         self.values = values
         self.copies = tuple((d, s) for d, s, f, o in wiring.links if f == 1.0 and o == 0.0)
         self.scaled = tuple(link for link in wiring.links if link[2:] != (1.0, 0.0))
@@ -246,19 +250,34 @@ class _Unit:
         FMI status."""
         if (status := self.set_inputs(0.0, signals=False)) > 1:
             return status
-        return self.get_outputs()
+        return self.get_all()
 
     def get_outputs(self) -> int:
-        """The outputs read (one fmi2GetReal, one fmi2GetBoolean) into the run's buffers;
-        the first status worse than a warning, else the last."""
-        status = 0
+        """The outputs other units read, into the run's buffer (one fmi2GetReal); the FMI
+        status."""
         if self.n_out:
-            status = self.get_real(self.c, self.out_vr, self.n_out, self.out_val)
+            return self.get_real(self.c, self.out_vr, self.n_out, self.out_val)
+        return 0
+
+    def get_recorded(self) -> int:
+        """The outputs only recorded, into the run's buffers (one fmi2GetReal, one
+        fmi2GetBoolean): they hold what the unit's last step computed until its next step or
+        inputs, so they are read when a row is kept; the first status worse than a warning,
+        else the last."""
+        status = 0
+        if self.n_kept:
+            status = self.get_real(self.c, self.kept_vr, self.n_kept, self.kept_val)
             if status > 1:
                 return status
         if self.n_bool:
             status = self.get_boolean(self.c, self.bool_vr, self.n_bool, self.bool_val)
         return status
+
+    def get_all(self) -> int:
+        """Every output read (:meth:`get_outputs`, :meth:`get_recorded`); the FMI status."""
+        if (status := self.get_outputs()) > 1:
+            return status
+        return self.get_recorded()
 
     def close(self):
         if self.instantiated:
@@ -639,14 +658,16 @@ def _stop_if_requested(stop_request, where: str) -> None:
 
 @dataclass
 class _UnitWiring:
-    """One unit's part of the run's buffers: the value references it sets and reads, where
-    its blocks start (its inputs and Real outputs in the values buffer, its Boolean outputs in
-    the flags buffer), its links ``(input position, output position, factor, offset)`` and its
-    signals ``(input position, callable)``."""
+    """One unit's part of the run's buffers: the value references it sets and reads (its Real
+    outputs that other units read first, ``n_linked`` of them, then those only recorded),
+    where its blocks start (its inputs and Real outputs in the values buffer, its Boolean
+    outputs in the flags buffer), its links ``(input position, output position, factor,
+    offset)`` and its signals ``(input position, callable)``."""
 
     input_vrs: list = field(default_factory=list)
     output_vrs: list = field(default_factory=list)
     bool_vrs: list = field(default_factory=list)
+    n_linked: int = 0
     first_input: int = 0
     first_output: int = 0
     first_bool: int = 0
@@ -687,15 +708,22 @@ def _view(buffer, ctype, first: int, n: int):
 
 def _wire(system, units, order, record, signals) -> _Wiring:
     """The :class:`_Wiring` of a run; each unit bound to its blocks of the buffers."""
-    needed = {c.start for c in system.connections} | {tuple(r.split(".", 1)) for r in record}
+    linked = {c.start for c in system.connections}
+    recorded = {tuple(r.split(".", 1)) for r in record}
     wiring = {name: _UnitWiring() for name in order}
     out_index: dict[tuple[str, str], int] = {}
     bool_index: dict[tuple[str, str], int] = {}
     for name in order:
         w = wiring[name]
         w.first_output, w.first_bool = len(out_index), len(bool_index)
-        for v in system.components[name].variables.values():
-            if v.causality == "output" and (name, v.name) in needed:
+        outputs = [v for v in system.components[name].variables.values() if v.causality == "output"]
+        for v in outputs:  # what other units read first: the block read after every step
+            if v.type == "Real" and (name, v.name) in linked:
+                out_index[(name, v.name)] = len(out_index)
+                w.output_vrs.append(v.value_reference)
+        w.n_linked = len(w.output_vrs)
+        for v in outputs:  # then what is only recorded: read when a row is kept
+            if (name, v.name) in recorded and (name, v.name) not in linked:
                 if v.type == "Real":
                     out_index[(name, v.name)] = len(out_index)
                     w.output_vrs.append(v.value_reference)
@@ -912,7 +940,7 @@ class _Cosimulation:
             u = self.units[name]
             if (status := u.set_inputs(t)) > 1:
                 self.fail(name, "fmi2SetReal", status, t)
-            if (status := u.get_outputs()) > 1:
+            if (status := u.get_all()) > 1:
                 self.fail(name, "fmi2GetReal", status, t)
 
     # ------------------------------------------------------------------ initialization
@@ -978,7 +1006,7 @@ class _Cosimulation:
         t + h, publish their outputs, and the algebraic units that read them are updated
         (connected inputs set, outputs read, no step)."""
         for u in ended:
-            if (status := u.get_outputs()) > 1:
+            if (status := u.get_all()) > 1:
                 self.fail(u.name, "fmi2GetReal", status, t)
         for u in readers:
             if (status := u.refresh()) > 1:
@@ -997,6 +1025,10 @@ class _Cosimulation:
         bar, own_bar = _bar(self.settings.progress, n_steps, self.system.name)
         done = 0  # steps not yet shown on the bar
         varying, (due, ended, readers) = bool(schedule.slow), schedule.fast
+        # outputs only recorded are read when a row is kept (a slow unit's when it publishes)
+        kept = tuple(
+            self.units[n] for n, r in schedule.rates if r == 1 and self.units[n].recorded_only
+        )
         try:
             for k in range(n_steps):
                 t = start + k * h
@@ -1014,6 +1046,9 @@ class _Cosimulation:
                 if ended:
                     self.publish_slow(ended, readers, t)
                 if (k + 1) % every == 0 or k + 1 == n_steps:
+                    for u in kept:
+                        if (status := u.get_recorded()) > 1:
+                            self.fail(u.name, "fmi2GetReal", status, t)
                     self.store(start + (k + 1) * h)
                 done += 1
                 if done == BAR_STEPS:
