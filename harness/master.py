@@ -324,7 +324,7 @@ def run(
     algorithm: str = "gauss-seidel",
     record=None,
     out_dir=None,
-    progress: bool = True,
+    progress=True,
     fmu_dir=None,
     output_interval: float | None = None,
     rates: dict[str, int] | None = None,
@@ -343,7 +343,9 @@ def run(
         holds: the signal at the start of the step that ended at the row's time, the value
         its outputs at that time were computed from.
     out_dir : folder for ``results.csv`` (also written on failure, with the partial results)
-    progress : show a progress bar when the run takes longer than two seconds
+    progress : show a progress bar when the run takes longer than two seconds; or an open bar
+        (anything with ``update(n)``, e.g. a scenario's bar over its runs) to advance by the
+        steps done
     output_interval : keep a row every this many seconds (a multiple of the step; default
         every step), and always the last one
     rates : ``{"component": N}``: that component steps once every N communication steps,
@@ -624,7 +626,7 @@ class _Settings:
     algorithm: str
     record: list | None
     out_dir: object
-    progress: bool
+    progress: object  # a bool, or an open bar (see run)
     output_interval: float | None
     rates: dict
 
