@@ -233,7 +233,29 @@ def compare(ssp: Path, stop: float, repeat: int) -> dict:
                 ratios[f"{key}, CPU"] = best[ours][1] / best[peer][1]
             else:
                 ratios[key] = "not available"
-    return {"system": SYSTEM, "stop time [s]": stop, "engines": rows, "ratios": ratios}
+    return {"system": SYSTEM, "stop time [s]": stop, "versions": _versions(), "engines": rows,
+            "ratios": ratios}  # fmt: skip
+
+
+def _versions() -> dict:
+    """The engines' versions as they report them."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    out = {}
+    for name in ("fmpy", "pythonfmu", "libcosimpy"):
+        try:
+            out[name] = version(name)
+        except PackageNotFoundError:
+            out[name] = "not installed"
+    out["OMSimulator"] = "not available"
+    if _oms_package():
+        show = "import OMSimulator; print(OMSimulator.version)"
+        done = subprocess.run([sys.executable, "-c", show], capture_output=True, text=True)
+        out["OMSimulator"] = (done.stdout.strip().splitlines() or ["?"])[-1] + " (Python package)"
+    elif shutil.which("OMSimulator"):
+        done = subprocess.run(["OMSimulator", "--version"], capture_output=True, text=True)
+        out["OMSimulator"] = (done.stdout.strip().splitlines() or ["?"])[-1] + " (command line)"
+    return out
 
 
 def main(argv=None) -> dict | None:
