@@ -33,7 +33,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from results import save  # benchmarks/ is the script's folder
+from results import add_output_options, emit  # benchmarks/ is the script's folder
 
 SYSTEM = "seeker_gimbal"
 STOP = 200.0  # s simulated
@@ -264,12 +264,7 @@ def main(argv=None) -> dict | None:
     parser.add_argument("--repeat", type=int, default=2, help="interleaved rounds")
     parser.add_argument("--engine", choices=ENGINES, help=argparse.SUPPRESS)  # one run, here
     parser.add_argument("--ssp", help=argparse.SUPPRESS)
-    parser.add_argument("--json", action="store_true")
-    parser.add_argument(
-        "--save",
-        metavar="FILE.json",
-        help="also write the figures and the run's context to this JSON file (docs: Performance)",
-    )
+    add_output_options(parser)
     args = parser.parse_args(argv)
     if args.engine:  # a measured process: one line of figures
         print(MARK + json.dumps(run_engine(args.engine, Path(args.ssp), args.stop)), flush=True)
@@ -277,11 +272,7 @@ def main(argv=None) -> dict | None:
     from servofmu.harness.scenarios.common import system_path
 
     figures = compare(system_path(SYSTEM), args.stop, args.repeat)
-    if args.save:
-        save(args.save, figures, argv)
-    if args.json:
-        print(json.dumps(figures, indent=2))
-    else:
+    if not emit(args, figures, argv):
         print(f"{SYSTEM}, {args.stop:g} s simulated (1 ms step), best of {args.repeat}")
         print(f"{'engine':42s} {'wall [s]':>9s} {'CPU [s]':>9s} {'speed [°/s]':>12s}  note")
         for r in figures["engines"]:

@@ -28,7 +28,8 @@ REPORT_INTERVAL = 0.2
 
 
 def default_workers(n_runs: int) -> int:
-    """One worker per core, no more than there are runs (at least one).
+    """One worker per core this process may run on, no more than there are runs (at least
+    one).
 
     Returns
     -------
@@ -39,7 +40,8 @@ def default_workers(n_runs: int) -> int:
     >>> default_workers(1)
     1
     """
-    return max(1, min(os.cpu_count() or 1, n_runs))
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    return max(1, min(cores or 1, n_runs))
 
 
 def run_parallel(
