@@ -108,3 +108,18 @@ def test_ctrl_c_stops_every_running_run_at_a_step_and_keeps_its_rows(tmp_path):
         )
     assert isinstance(err.value.result, int) and err.value.result > 0  # the rows so far
     assert err.value.signum == signal.SIGINT
+
+
+def test_a_run_advances_an_open_bar_by_its_steps(fmus):
+    """run(progress=bar): a caller's bar (a scenario's, over its runs) counts the run's steps
+    and stays open."""
+    from servofmu.harness import run
+
+    bar = _Bar()
+    res = run(
+        fmus["BearingFriction"].parent / "seeker_gimbal.ssp",
+        stop=0.2,
+        record=["motor.speed"],
+        progress=bar,
+    )
+    assert bar.n == 200 and len(res.data) == 201
