@@ -83,7 +83,7 @@ def test_internal_errors_go_to_a_fresh_private_log(tmp_path, monkeypatch, capsys
     monkeypatch.setattr(cli, "_host_env", boom)
     logs = []
     for _ in range(2):
-        assert cli.main(["host-env"]) == 3
+        assert cli.main(["host-env"]) == cli.INTERNAL_ERROR
         err = capsys.readouterr().err
         logs.append(Path(re.search(r"traceback in (\S+);", err).group(1)))
     assert victim.read_text() == "keep me"

@@ -508,7 +508,7 @@ def test_output_interval_keeps_every_kth_row_and_the_last(out):
 
 
 def test_cli_internal_error_is_one_line_with_the_traceback_in_a_log(monkeypatch, capsys):
-    import tempfile
+    import re
     from pathlib import Path
 
     from servofmu import cli
@@ -517,11 +517,12 @@ def test_cli_internal_error_is_one_line_with_the_traceback_in_a_log(monkeypatch,
         raise RuntimeError("something unforeseen")
 
     monkeypatch.setattr(cli, "_host_env", broken)
-    assert cli.main(["host-env"]) == 3
+    assert cli.main(["host-env"]) == cli.INTERNAL_ERROR
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "RuntimeError: something unforeseen" in err
-    log = Path(tempfile.gettempdir()) / "servofmu-error.log"
+    log = Path(re.search(r"traceback in (\S+);", err).group(1))  # the file this run wrote
     assert "Traceback" in log.read_text() and "broken" in log.read_text()
+    log.unlink()
     with pytest.raises(RuntimeError):
         cli.main(["--debug", "host-env"])
 

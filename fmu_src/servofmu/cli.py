@@ -1023,9 +1023,14 @@ def _error_log() -> Path:
     return Path(name)
 
 
+#: Exit code of an internal error (3 is ``servofmu margin``'s "some row not verified").
+INTERNAL_ERROR = 4
+
+
 def main(argv: list[str] | None = None) -> int:
-    """Exit codes: 0 done, 1 a run failed (partial results kept), 2 bad input (data,
-    arguments, system description), 3 an internal error (traceback in a private log file),
+    """Exit codes: 0 done, 1 a run failed (partial results kept; ``margin``: a margin is
+    negative), 2 bad input (data, arguments, system description), 3 ``margin`` only: no margin
+    negative but a row not verified, 4 an internal error (traceback in a private log file),
     130 interrupted by Ctrl-C and 143 by SIGTERM (a run stops at a step boundary and keeps its
     results either way)."""
     from .harness.errors import (
@@ -1065,7 +1070,7 @@ def main(argv: list[str] | None = None) -> int:
             "run again with --debug to see it here)",
             file=sys.stderr,
         )
-        return 3
+        return INTERNAL_ERROR
 
 
 if __name__ == "__main__":  # pragma: no cover
