@@ -20,7 +20,7 @@ import sys
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 from kernels import implementations, models
 from scipy.special import ellipe, ellipk
@@ -63,6 +63,22 @@ def _unit(name):
     return "N.m" if name.endswith("torque") else UNIT.get(name, "")
 
 
+#: Outputs that go as a contact load to the 1/3 (Hertz): the pair's axial stiffness
+#: (k = 3F/(2δ), δ ∝ F^(2/3)) and the largest contact pressure (p ∝ Q^(1/3)).
+CUBE_ROOT_OF_LOAD = ("axial_stiffness", "max_contact_pressure")
+
+
+def cube_root_floor(exact, name) -> float:
+    """The absolute tolerance of an output of :data:`CUBE_ROOT_OF_LOAD` that the force floor
+    allows: a bearing force known to ``FLOORS["N"]`` gives y ∝ F^(1/3) to
+    y·FLOORS["N"]/(3·F) — 1e-9 relative only above F ≈ 0.33 N. A compliant loop at zero load
+    holds µN (1 N/m: a preload of 3e-6 N, its stiffness known to 4e-8 relative)."""
+    k = abs(np.asarray(getattr(exact, name)).item())
+    forces = [abs(np.asarray(getattr(exact, f)).item()) for f in ("force_a", "force_b")]
+    loaded = [f for f in forces if f > 0.0]
+    return k * FLOORS["N"] / (3.0 * min(loaded)) if loaded else 0.0
+
+
 def assert_equal_outputs(fast, exact, where=""):
     for f in dataclasses.fields(fast):
         a, b = getattr(fast, f.name), np.asarray(getattr(exact, f.name)).item()
@@ -70,6 +86,8 @@ def assert_equal_outputs(fast, exact, where=""):
             assert bool(a) == bool(b), f"{f.name} {where}"
             continue
         floor = FLOORS.get(_unit(f.name), 0.0)
+        if f.name in CUBE_ROOT_OF_LOAD:
+            floor = cube_root_floor(exact, f.name)
         assert a == pytest.approx(b, rel=REL, abs=floor), f"{f.name} {where}"
 
 
@@ -557,7 +575,24 @@ _STEP = st.tuples(
 )
 
 
+#: Two counterexamples of the 1e-9 relative claim, both at zero load on the 1 N/m loop (a
+#: preload of µN): the pair's axial stiffness and the largest contact pressure go as the
+#: load to the 1/3 and are known to the bound the force floor allows (:func:`cube_root_floor`).
+_MICRO_PRELOAD = (
+    (1e-137, (-1.403913566511338, -1.1018147951520052, 0.0, -3.808363543924113), 0.0, 0.0,
+     0.09147197725199596),
+) * 2  # fmt: skip
+_MICRO_PRELOAD_PARTS = (
+    (-1.7530123761395036, (0.28275176964787807, -0.07897226436322463, -0.5958537067690122,
+                           2.9571184929820635), 0.0, 0.0, 0.24166374619294373),
+) * 2  # fmt: skip
+
+
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@example("loop_1_n_per_m", "ehl_per_contact", False, False, 283.38832912415995,
+         list(_MICRO_PRELOAD))  # fmt: skip
+@example("loop_1_n_per_m", "skf2004", False, True, 310.60895473593325,
+         list(_MICRO_PRELOAD_PARTS))  # fmt: skip
 @given(
     name=st.sampled_from(sorted(PAIRS)),
     model=st.sampled_from(["yu2017", "skf2004", "ehl_per_contact"]),
