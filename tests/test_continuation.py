@@ -56,7 +56,14 @@ UNIT = {
     "outer_interference": "m",
     "inner_interference": "m",
 }
-FLAGS = ("overloaded", "locked", "unloaded", "reverse_loaded", "outside_lubricant_range")
+FLAGS = (
+    "overloaded",
+    "locked",
+    "unloaded",
+    "reverse_loaded",
+    "outside_lubricant_range",
+    "breakaway_lower_bound",
+)
 
 
 def _unit(name):
@@ -165,6 +172,37 @@ def _with_model(pair, model, grease=None):
 
 #: A grease term of the size G-1074's datasheet point gives (f0 ≈ 50, ks ≈ 2 at 1 r/min).
 GREASE = GreaseTorqueTerm(f0=50.0, starting_ratio=2.0, reference_speed=2 * math.pi / 60)
+#: A cold start alone (a lubricant's starting ratio on the friction model's viscous torque).
+START_ONLY = GreaseTorqueTerm(f0=0.0, starting_ratio=2.0, reference_speed=2 * math.pi / 60)
+TERMS = {"none": None, "grease": GREASE, "start": START_ONLY}
+
+
+@pytest.mark.parametrize("model", ["yu2017", "skf2004", "ehl_per_contact"])
+def test_a_cold_start_alone_on_each_model_equals_the_exact_path(model):
+    # ks on the friction model's own viscous torque at the test speed: the breakaway of both
+    # paths, through the cold (below Krytox 143AA's data) and back
+    pair = _with_model(PAIRS["yu_yoke"](), model, START_ONLY)
+    runs = models(pair)
+    t, fa, _, w = _trajectory(2, 40, radial=False)
+    for i in range(len(t)):
+        exact = operating_outputs(pair, float(t[i]), float(w[i]), float(fa[i]))
+        for k, m in runs.items():
+            assert_equal_outputs(m.evaluate(float(t[i]), float(w[i]), float(fa[i])), exact, k)
+
+
+def test_the_cold_start_adds_ks_times_the_viscous_torque_at_the_test_speed():
+    """yu2017 at −40 °C: breakaway(with ks) − breakaway(without) = ks·M_v(ω_test) − M_v(0),
+    M_v Palmgren's viscous torque of the pair (its value at rest is the floor the breakaway
+    already holds), and nothing else moves."""
+    plain = _with_model(PAIRS["yu_yoke"](), "yu2017")
+    started = _with_model(PAIRS["yu_yoke"](), "yu2017", START_ONLY)
+    w_test = START_ONLY.reference_speed
+    a, b = (BearingModel(p).evaluate(233.15, 0.17) for p in (plain, started))
+    v_test = BearingModel(plain).evaluate(233.15, w_test).viscous_torque
+    v_rest = BearingModel(plain).evaluate(233.15, 0.0).viscous_torque
+    assert b.breakaway_torque - a.breakaway_torque == pytest.approx(2.0 * v_test - v_rest, 1e-12)
+    assert (b.running_torque, b.grease_torque) == (a.running_torque, 0.0)
+    assert a.breakaway_lower_bound and not b.breakaway_lower_bound
 
 
 @pytest.mark.parametrize("model", ["skf2004", "ehl_per_contact"])
@@ -589,24 +627,25 @@ _MICRO_PRELOAD_PARTS = (
 
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@example("loop_1_n_per_m", "ehl_per_contact", False, False, 283.38832912415995,
+@example("loop_1_n_per_m", "ehl_per_contact", "none", False, 283.38832912415995,
          list(_MICRO_PRELOAD))  # fmt: skip
-@example("loop_1_n_per_m", "skf2004", False, True, 310.60895473593325,
+@example("loop_1_n_per_m", "skf2004", "none", True, 310.60895473593325,
          list(_MICRO_PRELOAD_PARTS))  # fmt: skip
 @given(
     name=st.sampled_from(sorted(PAIRS)),
     model=st.sampled_from(["yu2017", "skf2004", "ehl_per_contact"]),
-    grease=st.booleans(),
+    grease=st.sampled_from(sorted(TERMS)),
     parts=st.booleans(),
     start=st.floats(213.15, 353.15),
     steps=st.lists(_STEP, min_size=2, max_size=6),
 )
 def test_random_trajectories_equal_the_exact_path(name, model, grease, parts, start, steps):
     # every arrangement (the loop pairs, rigid to 1 N/m, and the tandem sets), every friction
-    # model with and without the grease term, uniform and part temperatures, loads that switch
-    # between axial and radial: both implementations equal the exact path at every step
+    # model without and with the grease term or a cold start alone, uniform and part
+    # temperatures, loads that switch between axial and radial: both implementations equal
+    # the exact path at every step
     pair = PAIRS[name]()
-    pair = _with_model(pair, model, GREASE if grease and pair.lubrication == "grease" else None)
+    pair = _with_model(pair, model, TERMS[grease] if pair.lubrication == "grease" else None)
     runs = models(pair)
     base, axial = start, 0.0
     for i, (d_t, spread, d_fa, radial, w) in enumerate(steps):

@@ -305,9 +305,12 @@ def _viscosity_rows(out_dir: Path) -> tuple[list[Row], list[Parameter], list[str
                 f"{kelvin_to_celsius(model.lower_limit):g} … "
                 f"{kelvin_to_celsius(model.upper_limit):g}",
                 "degC",
-                f"{model.source('lower_limit')}; {model.source('upper_limit')}",
+                f"{model.source('lower_limit')}; {model.source('upper_limit')} (the range of "
+                "its data)",
             )
         )
+        flow = kelvin_to_celsius(model.flow_limit) if model.flow_limit else "none"
+        params.append(Parameter(f"{key}.flow_limit", flow, "degC", model.source("flow_limit")))
     rows += _yu_viscosity_rows()
     files = _viscosity_files(out_dir, table)
     return rows, params, files
