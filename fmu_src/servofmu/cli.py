@@ -631,8 +631,9 @@ def _montecarlo(args) -> int:
 
 
 def _margin(args) -> int:
-    """``servofmu margin [FILE]``: the motorisation margin (servofmu.margin); exit 1 when it is
-    negative anywhere. Ctrl-C writes the rows computed so far."""
+    """``servofmu margin [FILE]``: the motorisation margin (servofmu.margin); exit 0 when every
+    row is met, 1 when a margin is negative, 3 when none is but a row is not verified. Ctrl-C
+    writes the rows computed so far."""
     from .margin import MarginResult, example_input, load_inputs, run, to_text, write_all
 
     # the whole input is read and checked before any computation (exit 2 naming the field)
@@ -648,7 +649,7 @@ def _margin(args) -> int:
         ) from None
     files = write_all(result, out)
     print(to_text(result, files))
-    return 0 if result.passed else 1
+    return result.exit_code
 
 
 class _Parser(argparse.ArgumentParser):
@@ -905,14 +906,18 @@ def build_parser() -> argparse.ArgumentParser:
     mg = sub.add_parser(
         "margin",
         help="motorisation (torque) margin of a mechanism, ECSS-E-ST-33-01C 4.7.5.3, over "
-        "temperature, a chamber transient and tolerances: table, CSV, plot; exit 1 when the "
-        "margin is negative anywhere",
+        "temperature, a chamber transient and tolerances: table, CSV, plot; a verdict per row "
+        "(met, not met, not verified); exit 1 when a margin is negative, 3 when a row is not "
+        "verified",
         description="The minimum actuation torque T_min = 2 × Σ u·R + 1.25 × T_D + T_L "
         "(ECSS-E-ST-33-01C 4.7.5.3.1, Table 4-2's uncertainty factors u) with the bearing "
-        "pair's friction from the bearing model, and the margin T / T_min − 1, at every "
-        "temperature, case (start, running), life (BOL, EOL), Monte-Carlo draw and transient "
-        "time of FILE. Without FILE: the documented example (Yu's gimbal, motor and other "
-        "torques assumed). Exit 0: margin ≥ 0 everywhere; 1: negative somewhere; 2: a bad input.",
+        "pair's friction from the bearing model, the margin T / T_min − 1 and the ratio MR = "
+        "(T − 1.25 × T_D − T_L) / Σ u·R, at every temperature (default: the mounting's declared "
+        "operating range), case (start, running), life (BOL, EOL), Monte-Carlo draw and "
+        "transient time of FILE, each row met, not met or not verified (a flag of the model "
+        "affects it). Without FILE: the documented example (Yu's gimbal, motor and other "
+        "torques assumed). Exit 0: every row met; 1: a margin negative; 3: none negative, a row "
+        "not verified; 2: a bad input.",
     )
     mg.add_argument(
         "file", nargs="?", metavar="FILE.toml",
