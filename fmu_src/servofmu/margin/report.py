@@ -471,7 +471,7 @@ def plot(result: MarginResult, path) -> Path:
         a.grid(True, alpha=0.3)
         a.set_ylabel("margin T / T_min − 1 [-]")
     ax.set_xlabel("temperature, uniform [°C]")
-    ax.legend(fontsize=7, loc="lower right", ncol=2)
+    ax.legend(fontsize=7, loc="upper left", ncol=2)
     title = f"{result.inputs.title or result.inputs.mounting} — {result.inputs.factors.name}"
     ax.set_title("\n".join(textwrap.wrap(title, 90)), fontsize=8)
     if transient:
