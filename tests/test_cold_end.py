@@ -272,3 +272,25 @@ def test_a_law_without_a_finite_value_where_it_is_used_is_refused():
         walther_from_reference(32e-6, 5.4e-6, lower_limit=313.15, flow_limit=1.0)
     with pytest.raises(ValueError, match="must lie below the lowest temperature"):
         vogel_from_points([(250.0, 1.0), (300.0, 0.01), (350.0, 0.005)], lower_limit=150.0)
+
+
+# ------------------------------------------------------------------------------ cold start
+def test_yu_gimbal_at_minus_40_degc_says_its_breakaway_is_a_lower_bound(fmus):
+    """At -40 °C and 10 °/s Yu's default BearingFriction starts below its running torque:
+    Krytox 143AA has no published starting torque, so breakaway_lower_bound is set; with
+    G-1074 (its datasheet's start on by default) it starts harder than it runs, unflagged."""
+    w = math.radians(10.0)
+    g1074 = default_parameters(lubricant="molykote_g1074")
+    names = ("lubricant_viscosity_40", "lubricant_viscosity_100", "lubricant_walther_c",
+             "lubricant_density", "skf_film_friction", "lubricant_minimum_temperature",
+             "lubricant_data_minimum_temperature", "lubricant_maximum_temperature",
+             "grease_f0", "grease_starting_ratio", "grease_reference_speed")  # fmt: skip
+    for extra, flagged in (({}, True), ({n: g1074[n] for n in names}, False)):
+        fmu = Fmu(fmus["BearingFriction"], "b").init(temperature=KRYTOX_LOWER, speed=w, **extra)
+        try:
+            _run(fmu, KRYTOX_LOWER, steps=2, speed=w)
+            brk, run, bound = fmu.get("breakaway_torque", "running_torque", "breakaway_lower_bound")
+            assert bound is flagged
+            assert (brk >= run) is not flagged  # a lower bound below; the datasheet's start above
+        finally:
+            fmu.close()
