@@ -288,6 +288,12 @@ def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
     components: dict[str, Component] = {}
     for elem in system.findall("ssd:Elements/ssd:Component", NS):
         name, source = elem.get("name"), elem.get("source")
+        if name in components:  # one name, one component: a second would replace the first
+            problems.append(
+                f"{ssd_file}: ssd:Component name={name!r} (line {elem.sourceline}) is declared "
+                "more than once: component names must be unique"
+            )
+            continue
         if elem.get("type", "application/x-fmu-sharedlibrary") != "application/x-fmu-sharedlibrary":
             problems.append(f"component {name!r}: only FMU components are supported")
             continue
@@ -340,8 +346,7 @@ def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
     de = ssd.find("ssd:DefaultExperiment", NS)
     start_time = 0.0 if de is None else _float(de, "startTime", 0.0)
     stop_time = 1.0 if de is None else _float(de, "stopTime", 1.0)
-    fixed = ssd.find(".//osp:FixedStepAlgorithm", NS)
-    step = None if fixed is None else float(fixed.get("baseStepSize"))
+    step = _base_step(ssd.find(".//osp:FixedStepAlgorithm", NS), ssd_file, problems)
     variants = {}
     for f in sorted((root / "variants").glob("*.ssv")) if (root / "variants").is_dir() else []:
         variants[f.stem] = _read_parameter_set(f.read_bytes(), str(f))
@@ -352,6 +357,27 @@ def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
     if problems:
         raise SystemError_(problems)
     return sys_
+
+
+def _base_step(fixed, ssd_file: Path, problems: list[str]) -> float | None:
+    """The communication step [s] of the OSP ``FixedStepAlgorithm`` annotation (None without
+    one); a missing, non-numeric, non-finite or non-positive ``baseStepSize`` is a problem
+    naming the file and the element."""
+    if fixed is None:
+        return None
+    raw = fixed.get("baseStepSize")
+    try:
+        step = float(raw)
+    except (TypeError, ValueError):
+        step = math.nan
+    if not (math.isfinite(step) and step > 0.0):
+        given = "is missing" if raw is None else f"= {raw!r} is not a finite number > 0"
+        problems.append(
+            f"{ssd_file}: osp:FixedStepAlgorithm (line {fixed.sourceline}) baseStepSize {given} "
+            "(the communication step [s], e.g. baseStepSize=\"0.001\")"
+        )
+        return None
+    return step
 
 
 def _check(system: System) -> list[str]:

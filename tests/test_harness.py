@@ -168,6 +168,30 @@ def test_gauss_seidel_order_follows_the_connections(out):
             'name="bearing.temprature"',
             "'bearing.temprature' names no variable",
         ),
+        (  # two components of one name: the second would silently replace the first
+            "SystemStructure.ssd",
+            '<ssd:Component name="motor"',
+            '<ssd:Component name="controller"',
+            "SystemStructure.ssd: ssd:Component name='controller' (line 22) is declared more",
+        ),
+        (
+            "SystemStructure.ssd",
+            'baseStepSize="0.001"',
+            "",
+            "osp:FixedStepAlgorithm (line 76) baseStepSize is missing",
+        ),
+        (
+            "SystemStructure.ssd",
+            'baseStepSize="0.001"',
+            'baseStepSize="1ms"',
+            "baseStepSize = '1ms' is not a finite number > 0",
+        ),
+        (
+            "SystemStructure.ssd",
+            'baseStepSize="0.001"',
+            'baseStepSize="-0.001"',
+            "baseStepSize = '-0.001' is not a finite number > 0",
+        ),
     ],
 )
 def test_bad_system_is_refused_before_any_fmu_is_instantiated(
