@@ -53,6 +53,9 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
     out_dir.mkdir(parents=True, exist_ok=True)
     script = PACKAGE_DIR / "fmus" / f"{name}.py"
     start = start_values(name, defaults or Defaults())
+    problems = start_value_problems(name, start)
+    if problems:  # the FMU would refuse its own start values: it is not packed
+        raise ValueError(f"{name}: " + "; ".join(problems))
     slave.BUILD_START.clear()
     if start:
         slave.BUILD_START[name] = start
@@ -91,6 +94,57 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
     finally:
         slave.BUILD_START.clear()
     return Path(path)
+
+
+def start_value_problems(name: str, start: dict) -> list[str]:
+    """Every start value of FMU ``name`` (its class's, with ``start`` {variable: (value,
+    provenance)} over them) that its own checks would refuse: a number not finite or outside
+    the variable's [min, max], an item number that names no item.
+
+    Parameters
+    ----------
+    name : str
+        One of :data:`FMUS`.
+    start : dict
+        The build's start values (:func:`.presets.start_values`).
+
+    Returns
+    -------
+    list of str
+        One line per refused value ("start value NAME = V (provenance) is outside [lo, hi]
+        UNIT"); empty when every value is valid.
+
+    Examples
+    --------
+    >>> start_value_problems("DCMotor", {})
+    []
+    >>> start_value_problems("DCMotor", {"resistance": (-1.0, "a typo")})
+    ['start value resistance = -1.0 (a typo) is outside its range [1e-06, 1000000.0] Ohm']
+    """
+    import importlib
+    import math
+
+    cls = getattr(importlib.import_module(f"servofmu.fmus.{name}"), name)
+    problems = []
+    for v in slave.variables_of(cls, start):
+        if v.start is None or v.causality == "output" or isinstance(v.start, str):
+            continue
+        where = f"start value {v.name} = {v.start!r}"
+        if v.name in start:
+            where += f" ({start[v.name][1]})"
+        if v.type == "Enumeration":
+            if not 1 <= v.start <= len(v.items):
+                problems.append(f"{where} names no item of {[i.name for i in v.items]}")
+            continue
+        if v.type not in ("Real", "Integer") or isinstance(v.start, bool):
+            continue
+        lo = -math.inf if v.min is None else v.min
+        hi = math.inf if v.max is None else v.max
+        if not (math.isfinite(v.start) and lo <= v.start <= hi):
+            problems.append(
+                f"{where} is outside its range [{lo!r}, {hi!r}] {v.unit or ''}".rstrip()
+            )
+    return problems
 
 
 def stage_package(dest: Path) -> Path:

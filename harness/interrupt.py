@@ -126,3 +126,30 @@ def interruptible():
             signal.signal(s, handler)
     if request.requested:  # it came after the last check (a run's end): the handler outside acts
         signal.raise_signal(request.signum)
+
+
+_PROTECTED = False
+
+
+@contextmanager
+def protected():
+    """Within this block SIGINT and SIGTERM wait: a result being renamed into place, or the
+    cleanup after a first signal (a cluster shutting down, the rows so far being written), is
+    not cut short by a second one. A signal received meanwhile is raised again when the
+    block ends, for the handler outside it (one raise, however many came). Nested blocks and
+    other threads than the main one change nothing."""
+    global _PROTECTED
+    if _PROTECTED or threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    held: list[int] = []
+    previous = {s: signal.signal(s, lambda signum, frame: held.append(signum)) for s in SIGNALS}
+    _PROTECTED = True
+    try:
+        yield
+    finally:
+        _PROTECTED = False
+        for s, handler in previous.items():
+            signal.signal(s, handler)
+        if held:
+            signal.raise_signal(held[0])

@@ -374,7 +374,7 @@ def _base_step(fixed, ssd_file: Path, problems: list[str]) -> float | None:
         given = "is missing" if raw is None else f"= {raw!r} is not a finite number > 0"
         problems.append(
             f"{ssd_file}: osp:FixedStepAlgorithm (line {fixed.sourceline}) baseStepSize {given} "
-            "(the communication step [s], e.g. baseStepSize=\"0.001\")"
+            '(the communication step [s], e.g. baseStepSize="0.001")'
         )
         return None
     return step
