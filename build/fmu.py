@@ -5,10 +5,10 @@ from __future__ import annotations
 import json
 import shutil
 import sys
-import tempfile
 from pathlib import Path
 
 import servofmu
+from servofmu.files import scratch_folder
 from servofmu.fmus import slave
 from servofmu.fmus.slave import BUILD_INFO, SHIPPED, package_hash
 
@@ -60,7 +60,7 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
     if start:
         slave.BUILD_START[name] = start
     try:
-        with tempfile.TemporaryDirectory(prefix="servofmu_build_") as tmp:
+        with scratch_folder("servofmu_build_") as tmp:
             tmp = Path(tmp)
             package = stage_package(tmp / "package")
             info = tmp / BUILD_INFO
@@ -197,8 +197,7 @@ def build_info(fmu: Path) -> dict | None:
 
     Examples
     --------
-    >>> import tempfile
-    >>> from pathlib import Path
+    >>>     >>> from pathlib import Path
     >>> print(build_info(Path(tempfile.gettempdir()) / "no_such.fmu"))
     None
     """

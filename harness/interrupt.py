@@ -128,28 +128,40 @@ def interruptible():
         signal.raise_signal(request.signum)
 
 
-_PROTECTED = False
+_PROTECTED: list[int] | None = None  # the signals held by the active protected() block
 
 
 @contextmanager
-def protected():
-    """Within this block SIGINT and SIGTERM wait: a result being renamed into place, or the
-    cleanup after a first signal (a cluster shutting down, the rows so far being written), is
-    not cut short by a second one. A signal received meanwhile is raised again when the
-    block ends, for the handler outside it (one raise, however many came). Nested blocks and
-    other threads than the main one change nothing."""
-    global _PROTECTED
-    if _PROTECTED or threading.current_thread() is not threading.main_thread():
-        yield
+def protected(reraise: bool = True):
+    """Within this block SIGINT and SIGTERM wait: a result being written, or the cleanup after
+    a first signal (a cluster shutting down, the rows so far being written), is not cut short
+    by a further one. Yields the list of the signals held. When the block ends, the first of
+    them is raised again for the handler outside it (one raise, however many came), unless
+    ``reraise`` is False: then the caller acts on the list (a run already stopping). Nested
+    blocks share the outer one's list; in other threads than the main one nothing changes
+    (an empty list)."""
+    global _PROTECTED, _RECEIVED
+    if _PROTECTED is not None:
+        yield _PROTECTED
+        return
+    if threading.current_thread() is not threading.main_thread():
+        yield []
         return
     held: list[int] = []
-    previous = {s: signal.signal(s, lambda signum, frame: held.append(signum)) for s in SIGNALS}
-    _PROTECTED = True
+
+    def hold(signum, frame):
+        global _RECEIVED
+        if not held:
+            _RECEIVED = signum
+        held.append(signum)
+
+    previous = {s: signal.signal(s, hold) for s in SIGNALS}
+    _PROTECTED = held
     try:
-        yield
+        yield held
     finally:
-        _PROTECTED = False
+        _PROTECTED = None
         for s, handler in previous.items():
             signal.signal(s, handler)
-        if held:
+        if held and reraise:
             signal.raise_signal(held[0])

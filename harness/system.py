@@ -15,13 +15,13 @@ causality or type, a unit mismatch across a connection, a parameter the FMU does
 from __future__ import annotations
 
 import math
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
 from servofmu.build.archive import read_member, safe_extract
 from servofmu.build.choices import choice_items
 from servofmu.build.xmlsafe import parse, validate
+from servofmu.files import scratch_folder
 from servofmu.physics._checks import suggest
 
 from .errors import HarnessError, SystemError_, refusals
@@ -101,7 +101,7 @@ class System:
         :meth:`close`)."""
         if fmu not in self._unpacked:
             if self._fmu_tmp is None:
-                self._fmu_tmp = tempfile.TemporaryDirectory(prefix="servofmu_fmus_")
+                self._fmu_tmp = scratch_folder("servofmu_fmus_")
             target = Path(self._fmu_tmp.name) / f"{len(self._unpacked)}_{fmu.stem}"
             with refusals():
                 self._unpacked[fmu] = safe_extract(fmu, target)
@@ -259,7 +259,7 @@ def load_system(path, fmu_dir=None) -> System:
     path = Path(path)
     tmp = None
     if path.is_file() and path.suffix == ".ssp":
-        tmp = tempfile.TemporaryDirectory(prefix="servofmu_ssp_")
+        tmp = scratch_folder("servofmu_ssp_")
         with refusals():
             root = safe_extract(path, tmp.name)
     elif path.is_dir():

@@ -2,14 +2,15 @@
 not at all, and scratch folders that the next run cleans when a run was killed.
 
 - :func:`read_input` reads a user's input file (a catalogue, a margin input, measured data, a
-  signal table, a parameter set) with a size cap and checks that it is UTF-8 text; every
+  signal table) with a size cap and checks that it is UTF-8 text; every
   refusal names the file (:class:`InputFileError`, a ValueError: bad input).
 - :func:`written` is the one way a result (CSV, Parquet, PNG, JSON, text, FMU, SSP) reaches
   its final name: it is written to a temporary name in the same folder, flushed to disk and
-  renamed into place, so a file under its final name is always whole. The rename is
-  protected from SIGINT and SIGTERM. A file that cannot be written (a full disk, a folder
-  that cannot be written) raises :class:`OutputError` naming the path, and no partial file
-  stays under either name. Results get the mode that the umask gives new files.
+  renamed into place, so a file under its final name is always whole. SIGINT and SIGTERM
+  wait while a result is written (it is short) and act once it is in place. A file that
+  cannot be written (a full disk, a folder that cannot be written) raises
+  :class:`OutputError` naming the path, and no partial file stays under either name.
+  Results get the mode that the umask gives new files.
 - A temporary name carries the writing process's id: a run killed with SIGKILL leaves it
   behind, and the next run that writes into that folder removes it once that process is gone
   (:func:`remove_stale_parts`). Scratch folders (unpacked archives, staged builds) live in
@@ -23,6 +24,7 @@ from __future__ import annotations
 import contextlib
 import fcntl
 import os
+import re
 import shutil
 import stat
 import tempfile
@@ -34,8 +36,10 @@ from pathlib import Path
 MAX_INPUT_BYTES = 256 * 1024**2
 #: The exit status of the command line when a result cannot be written (sysexits' EX_IOERR).
 EXIT_OUTPUT = 74
-#: Suffix of the temporary name of a result being written.
+#: Marks the temporary name of a result being written: ``.NAME.PID.XXXXXXXX.part.SUFFIX``
+#: (the final suffix kept last: writers that choose a format by it, e.g. matplotlib, see it).
 PART_SUFFIX = ".part"
+_PART = re.compile(r"\..+\.(\d+)\.[^.]+\.part(\.[^.]*)?")
 #: A scratch folder without a lock is left alone this long [s] (its process may be creating
 #: the lock right now).
 STALE_AFTER = 60.0
@@ -176,7 +180,7 @@ def _alive(pid: int) -> bool:
 
 def remove_stale_parts(folder) -> list[Path]:
     """Remove the temporary files that runs killed while writing left in ``folder``
-    (``.NAME.PID.XXXX.part`` of a process that is gone); returns them.
+    (``.NAME.PID.XXXXXXXX.part.SUFFIX`` of a process that is gone); returns them.
 
     Parameters
     ----------
@@ -191,10 +195,10 @@ def remove_stale_parts(folder) -> list[Path]:
     --------
     >>> import tempfile
     >>> with tempfile.TemporaryDirectory() as tmp:
-    ...     stale = Path(tmp) / ".results.csv.999999999.x1y2.part"  # no such process
+    ...     stale = Path(tmp) / ".results.csv.999999999.x1y2.part.csv"  # no such process
     ...     _ = stale.write_text("half a table")
     ...     [p.name for p in remove_stale_parts(tmp)]
-    ['.results.csv.999999999.x1y2.part']
+    ['.results.csv.999999999.x1y2.part.csv']
     """
     removed = []
     try:
@@ -202,10 +206,8 @@ def remove_stale_parts(folder) -> list[Path]:
     except OSError:
         return removed
     for e in entries:
-        if not (e.name.startswith(".") and e.name.endswith(PART_SUFFIX)):
-            continue
-        parts = e.name.removesuffix(PART_SUFFIX).rsplit(".", 2)
-        if len(parts) != 3 or not parts[1].isdigit() or _alive(int(parts[1])):
+        match = _PART.fullmatch(e.name)
+        if match is None or _alive(int(match.group(1))):
             continue
         with contextlib.suppress(OSError):
             (Path(folder) / e.name).unlink()
@@ -240,9 +242,11 @@ def output_folder(folder) -> Path:
 @contextlib.contextmanager
 def written(path) -> Iterator[Path]:
     """Write a result under ``path`` whole or not at all: yields a temporary path in the same
-    folder to write to; when the block ends normally that file is flushed to disk, given the
-    umask's mode and renamed to ``path`` (the rename protected from SIGINT and SIGTERM). On an
-    exception or a signal the temporary file is removed and nothing changes under ``path``;
+    folder to write to (its name ends in ``path``'s suffix); when the block ends normally that
+    file is flushed to disk, given the umask's mode and renamed to ``path``. SIGINT and
+    SIGTERM wait until then (:func:`~servofmu.harness.interrupt.protected`) and act once the
+    file is in place. On an exception the temporary file is removed and nothing changes under
+    ``path``;
     an OSError (a full disk, a folder that cannot be written) is raised as
     :class:`OutputError` naming ``path``.
 
@@ -281,15 +285,15 @@ def written(path) -> Iterator[Path]:
         _CLEANED.add(folder.resolve())
     try:
         fd, name = tempfile.mkstemp(
-            dir=folder, prefix=f".{path.name}.{os.getpid()}.", suffix=PART_SUFFIX
+            dir=folder, prefix=f".{path.name}.{os.getpid()}.", suffix=PART_SUFFIX + path.suffix
         )
         os.close(fd)
     except OSError as exc:
         raise OutputError(path, exc) from None
     part = Path(name)
     try:
-        yield part
-        with protected():
+        with protected():  # a signal waits until the file is whole under its name
+            yield part
             _flush(part)
             os.chmod(part, file_mode())
             os.replace(part, path)
@@ -331,6 +335,32 @@ def write_text(path, text: str) -> Path:
     """
     with written(path) as part:
         part.write_text(text, encoding="utf-8")
+    return Path(path)
+
+
+def save_figure(fig, path, **kwargs) -> Path:
+    """Save matplotlib figure ``fig`` to ``path`` (its format from the suffix; ``kwargs`` as
+    ``savefig``'s) whole or not at all (:func:`written`).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig = plt.figure(figsize=(1, 1))
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     save_figure(fig, Path(tmp) / "f.png", dpi=20).read_bytes()[:4]
+    b'\x89PNG'
+    >>> plt.close(fig)
+    """
+    with written(path) as part:
+        fig.savefig(part, **kwargs)
     return Path(path)
 
 
