@@ -18,7 +18,7 @@ import math
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
-from servofmu.build.archive import read_member, safe_extract
+from servofmu.build.archive import ArchiveError, Budget, read_member, safe_extract
 from servofmu.build.choices import choice_items
 from servofmu.build.xmlsafe import parse, validate
 from servofmu.files import scratch_folder
@@ -95,6 +95,8 @@ class System:
     _tmp: object = None
     _unpacked: dict = field(default_factory=dict)  # FMU path → its unpacked folder
     _fmu_tmp: object = None
+    #: one budget of unpacked bytes and entries for the archive and every FMU of the system
+    _budget: Budget = field(default_factory=Budget)
 
     def unpacked(self, fmu: Path) -> Path:
         """The folder ``fmu`` is unpacked to, once per system (runs share it; removed by
@@ -104,7 +106,7 @@ class System:
                 self._fmu_tmp = scratch_folder("servofmu_fmus_")
             target = Path(self._fmu_tmp.name) / f"{len(self._unpacked)}_{fmu.stem}"
             with refusals():
-                self._unpacked[fmu] = safe_extract(fmu, target)
+                self._unpacked[fmu] = safe_extract(fmu, target, budget=self._budget)
         return self._unpacked[fmu]
 
     def close(self):
@@ -258,10 +260,15 @@ def load_system(path, fmu_dir=None) -> System:
     a missing one is looked up by file name in ``fmu_dir`` (e.g. ``build/out``)."""
     path = Path(path)
     tmp = None
+    budget = Budget()  # the archive and its FMUs together
     if path.is_file() and path.suffix == ".ssp":
         tmp = scratch_folder("servofmu_ssp_")
-        with refusals():
-            root = safe_extract(path, tmp.name)
+        try:
+            with refusals():
+                root = safe_extract(path, tmp.name, budget=budget)
+        except BaseException:
+            tmp.cleanup()
+            raise
     elif path.is_dir():
         root = path
     elif path.is_file() and path.suffix == ".ssd":
@@ -270,14 +277,14 @@ def load_system(path, fmu_dir=None) -> System:
         raise HarnessError(f"{path}: no .ssp archive or system folder there")
     try:
         with refusals():
-            return _load(root, path, tmp, fmu_dir)
+            return _load(root, path, tmp, fmu_dir, budget)
     except Exception:
         if tmp is not None:
             tmp.cleanup()
         raise
 
 
-def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
+def _load(root: Path, path: Path, tmp, fmu_dir, budget: Budget) -> System:
     ssd_file = root / "SystemStructure.ssd"
     if not ssd_file.is_file():
         raise SystemError_([f"{path}: no SystemStructure.ssd"])
@@ -350,9 +357,19 @@ def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
     variants = {}
     for f in sorted((root / "variants").glob("*.ssv")) if (root / "variants").is_dir() else []:
         variants[f.stem] = _read_parameter_set(f.read_bytes(), str(f))
+    over = []  # every FMU charged before any is unpacked or read
+    for comp in components.values():
+        if comp.fmu is not None:
+            try:
+                budget.reserve(comp.fmu)
+            except ArchiveError as exc:
+                over.append(f"component {comp.name!r}: {exc}")
+    if over:
+        raise SystemError_(over)
     sys_ = System(
         ssd.get("name"), root, components, connections, start_time, stop_time, step, variants, tmp
     )
+    sys_._budget = budget
     problems += _check(sys_)
     if problems:
         raise SystemError_(problems)
