@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import shutil
 import sys
 from pathlib import Path
 
 import servofmu
-from servofmu.files import scratch_folder
+from servofmu.files import OutputError, file_mode, output_folder, scratch_folder, written
 from servofmu.fmus import slave
 from servofmu.fmus.slave import BUILD_INFO, SHIPPED, package_hash
 
@@ -49,8 +50,7 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
 
     if name not in FMUS:
         raise ValueError(f"FMU name = {name!r} is not one of {FMUS}")
-    out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
+    out_dir = output_folder(out_dir)
     script = PACKAGE_DIR / "fmus" / f"{name}.py"
     start = start_values(name, defaults or Defaults())
     problems = start_value_problems(name, start)
@@ -81,19 +81,22 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
                 files.append(write_presets(tmp / "presets", name))
             doc = tmp / "documentation"
             write_documentation(name, doc, resolve(defaults or Defaults()))
-            path = FmuBuilder.build_FMU(
+            built = FmuBuilder.build_FMU(
                 script,
-                dest=out_dir,
+                dest=tmp / "fmu",
                 project_files=files,
                 documentation_folder=doc,
                 canGetAndSetFMUstate=True,
                 canSerializeFMUstate=True,
             )
             if library is not None:
-                put_export(Path(path), name, library)
+                put_export(Path(built), name, library)
+            path = out_dir / Path(built).name
+            with written(path) as part:  # whole under its name, never half-written
+                shutil.copyfile(built, part)
     finally:
         slave.BUILD_START.clear()
-    return Path(path)
+    return path
 
 
 def start_value_problems(name: str, start: dict) -> list[str]:
@@ -173,10 +176,76 @@ def build_all(
     from .mechanism import resolve
     from .ssp import pack_all
 
-    paths = [build_fmu(n, out_dir, defaults) for n in names]
-    if systems and set(names) == set(FMUS):
-        paths += pack_all(out_dir, out_dir, resolve(defaults or Defaults()))
+    with build_lock(out_dir):
+        paths = [build_fmu(n, out_dir, defaults) for n in names]
+        if systems and set(names) == set(FMUS):
+            paths += pack_all(out_dir, out_dir, resolve(defaults or Defaults()))
     return paths
+
+
+#: The lock file of a build folder (``flock``: released when its process ends, however).
+LOCK_NAME = ".servofmu-build.lock"
+_HELD: dict[Path, int] = {}  # build folders this process holds the lock of → depth
+
+
+@contextlib.contextmanager
+def build_lock(out_dir):
+    """Hold the build lock of ``out_dir`` (its :data:`LOCK_NAME`): one build at a time per
+    folder. When another process holds it, say so on stderr and wait for it. Re-entrant
+    within a process.
+
+    Parameters
+    ----------
+    out_dir : str or pathlib.Path
+        The build folder (created).
+
+    Returns
+    -------
+    contextmanager
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     with build_lock(tmp), build_lock(tmp):  # re-entrant
+    ...         print(sorted(p.name for p in Path(tmp).iterdir()))
+    ['.servofmu-build.lock']
+    """
+    import fcntl
+    import os
+
+    folder = output_folder(out_dir).resolve()
+    if folder in _HELD:
+        _HELD[folder] += 1
+        try:
+            yield
+        finally:
+            _HELD[folder] -= 1
+        return
+    try:
+        fd = os.open(folder / LOCK_NAME, os.O_CREAT | os.O_RDWR, file_mode())
+    except OSError as exc:
+        raise OutputError(folder / LOCK_NAME, exc) from None
+    try:
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            other = os.pread(fd, 32, 0).decode("ascii", "replace").strip() or "?"
+            print(
+                f"servofmu: waiting for another build in {folder} (process {other}) to finish",
+                file=sys.stderr,
+                flush=True,
+            )
+            fcntl.flock(fd, fcntl.LOCK_EX)
+        os.ftruncate(fd, 0)
+        os.pwrite(fd, str(os.getpid()).encode("ascii"), 0)
+        _HELD[folder] = 1
+        try:
+            yield
+        finally:
+            del _HELD[folder]
+    finally:
+        os.close(fd)  # releases the lock
 
 
 def build_info(fmu: Path) -> dict | None:
@@ -311,14 +380,17 @@ def ensure_built(out_dir: Path | None = None, mechanism=None) -> Path:
 
     mechanism = mechanism or resolve(Defaults())
     out_dir = Path(out_dir) if out_dir is not None else mechanism.build_dir
-    if not is_current(out_dir, mechanism):
-        refuse_other_mechanism(out_dir, mechanism)
-        print(
-            f"building the FMUs and systems of {mechanism.key} into {out_dir}",
-            file=sys.stderr,
-            flush=True,
-        )
-        build_all(out_dir, defaults=mechanism.defaults)
+    if is_current(out_dir, mechanism):
+        return out_dir
+    with build_lock(out_dir):  # another build there is waited for, then looked at again
+        if not is_current(out_dir, mechanism):
+            refuse_other_mechanism(out_dir, mechanism)
+            print(
+                f"building the FMUs and systems of {mechanism.key} into {out_dir}",
+                file=sys.stderr,
+                flush=True,
+            )
+            build_all(out_dir, defaults=mechanism.defaults)
     return out_dir
 
 

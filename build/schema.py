@@ -379,15 +379,16 @@ def tolerance_band(unit: str | None = None) -> dict:
 
 
 def _tolerances() -> dict:
-    """Bands by name: the seats' diameters are lengths, a parameter's band has its unit."""
-    from servofmu.harness.tolerance import SEAT_BANDS
+    """Bands by name: a parameter's band has its unit; the others are the seats' diameters
+    (lengths), whose names the Monte-Carlo study checks (:mod:`servofmu.harness.tolerance`)."""
     from servofmu.physics.bearing_parameters import PARAMETERS
 
-    props = {name: tolerance_band("m") for name in SEAT_BANDS}
-    for spec in PARAMETERS:
-        if spec.type == "Real" and spec.name not in props:
-            props[spec.name] = tolerance_band(spec.unit if spec.unit in TO_SI else None)
-    return {"type": "object", "properties": props, "additionalProperties": False}
+    props = {
+        spec.name: tolerance_band(spec.unit if spec.unit in TO_SI else None)
+        for spec in PARAMETERS
+        if spec.type == "Real"
+    }
+    return {"type": "object", "properties": props, "additionalProperties": tolerance_band("m")}
 
 
 def _defaults() -> dict:
