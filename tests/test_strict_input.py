@@ -180,6 +180,40 @@ def test_the_margin_input_suggests_the_key_meant(tmp_path):
     assert any("did you mean 'gear_ratio'?" in p for p in problems), problems
 
 
+@pytest.mark.parametrize(
+    "change, expected",
+    [
+        (
+            {"mechanism": {"parameters": {"grease_f0": True}}},
+            "mechanism.parameters.grease_f0 = true is a Boolean, not a number",
+        ),
+        (
+            {"mechanism": {"parameters": {"n_balls": 10.5}}},
+            "n_balls = 10.5 is a number with a fraction, not a whole number (a count)",
+        ),
+        (
+            {"end_of_life": {"parameters": {"lubrication": "grese"}}},
+            "end_of_life.parameters.lubrication = 'grese' is not one of ['grease', 'solid'] "
+            "(did you mean 'grease'?)",
+        ),
+        (
+            {"tolerances": {"bands": {"shim": {"low": -1, "high": 1, "unit": "MPa"}}}},
+            "tolerances.bands.shim.unit = 'MPa' (a unit of pressure) is not a unit of length",
+        ),
+    ],
+)
+def test_a_margin_input_off_its_schema_is_refused_naming_the_key(change, expected):
+    """Each of these was accepted: a Boolean read as 1, a band's MPa converted as a length."""
+    from servofmu.margin.inputs import example_input, input_problems, read_toml
+
+    data = read_toml(example_input())
+    for section, values in change.items():
+        for key, value in values.items():
+            data.setdefault(section, {})[key] = value
+    problems = input_problems(data, example_input().parent)
+    assert any(expected in p for p in problems), problems
+
+
 # ----------------------------------------------------------------------------- files
 @pytest.mark.parametrize(
     "content, expected",

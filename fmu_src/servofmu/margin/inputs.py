@@ -28,6 +28,7 @@ from servofmu.files import read_input
 from servofmu.physics._checks import suggest
 from servofmu.physics.units import DEG, GRAM_FORCE_CM, RPM, ZERO_CELSIUS, to_si
 
+from .schema import schema_problems
 from .standard import (
     BASES,
     CATEGORIES,
@@ -828,6 +829,8 @@ def _parse(data, base_dir: Path, source: str, catalogs, mounting) -> MarginInput
 
     r = _Reader()
     r.known(data, SECTIONS, "")
+    for problem in schema_problems(data):  # the types of what the reader hands on
+        r.fail(problem)
     mech = r.table(data, "mechanism", "")
     r.known(
         mech,
