@@ -25,6 +25,7 @@ marks the others ``interrupted``.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import itertools
 import math
@@ -609,13 +610,22 @@ def run_sweep(
     units = task.units() if hasattr(task, "units") else {}
     t0 = time.perf_counter()
     cluster, own = None, client is None
-    if client is not None:
-        pass
-    elif scheduler:
-        client = Client(scheduler)
-    else:
-        cluster = local_cluster(workers)
-        client = Client(cluster)
+    try:
+        if client is not None:
+            pass
+        elif scheduler:
+            client = Client(scheduler)
+        else:
+            cluster = local_cluster(workers)
+            client = Client(cluster)
+    except KeyboardInterrupt:  # a signal while the cluster starts: nothing ran, all marked
+        with protected(reraise=False):
+            for part in (client if own else None, cluster):
+                if part is not None:
+                    with contextlib.suppress(Exception):  # a cluster half started may not close
+                        part.close()
+        rows = [{**p, "error": "interrupted"} for p in points]
+        return SweepResult(rows, 0, time.perf_counter() - t0, True, units)
     interrupted = False
     try:
         n_workers = max(1, len(client.scheduler_info(n_workers=-1)["workers"]))
