@@ -266,7 +266,8 @@ def build_info(fmu: Path) -> dict | None:
 
     Examples
     --------
-    >>>     >>> from pathlib import Path
+    >>> import tempfile
+    >>> from pathlib import Path
     >>> print(build_info(Path(tempfile.gettempdir()) / "no_such.fmu"))
     None
     """

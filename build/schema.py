@@ -92,7 +92,17 @@ def pint_spelling(unit: str) -> str:
 
 @functools.cache
 def registry():
-    """pint's unit registry with a plane angle of its own dimension (``plane_angle``)."""
+    """pint's unit registry with a plane angle of its own dimension (``plane_angle``).
+
+    Returns
+    -------
+    pint.UnitRegistry
+
+    Examples
+    --------
+    >>> str(registry().parse_expression("plane_angle").dimensionality)  # rad, deg: not "-"
+    '[angle]'
+    """
     import pint
 
     ureg = pint.UnitRegistry()
@@ -102,6 +112,10 @@ def registry():
 
 def pint_quantity(unit: str):
     """One ``unit`` as a pint quantity (:func:`registry`).
+
+    Returns
+    -------
+    pint.Quantity
 
     Examples
     --------
@@ -144,6 +158,10 @@ def dimension_name(unit: str) -> str:
     """The name of the dimension of ``unit`` ("length", "pressure", …), else pint's
     dimensionality.
 
+    Returns
+    -------
+    str
+
     Examples
     --------
     >>> dimension_name("MPa"), dimension_name("g.cm")
@@ -161,7 +179,7 @@ TEXT = {"type": "string"}
 FLAG = {"type": "boolean"}
 
 
-def quantity(unit: str, count: bool = False) -> dict:
+def _quantity(unit: str, count: bool = False) -> dict:
     """The schema of a ``{ value, unit, kind, ref }`` quantity of the dimension of ``unit``;
     ``count``: its value is a whole number."""
     return {
@@ -178,7 +196,7 @@ def quantity(unit: str, count: bool = False) -> dict:
     }
 
 
-def entry(fields: dict, required=("name",)) -> dict:
+def _entry(fields: dict, required=("name",)) -> dict:
     """The schema of a table entry: these fields and no others, ``required`` among them."""
     return {
         "type": "object",
@@ -188,11 +206,11 @@ def entry(fields: dict, required=("name",)) -> dict:
     }
 
 
-def choice(values) -> dict:
+def _choice(values) -> dict:
     return {"enum": list(values)}
 
 
-def array_of(item: dict) -> dict:
+def _array_of(item: dict) -> dict:
     return {"type": "array", "items": item}
 
 
@@ -205,84 +223,84 @@ def _choices():
 
 # ----------------------------------------------------------------------------- the tables
 def _material() -> dict:
-    return entry(
+    return _entry(
         {
             "name": TEXT,
-            "youngs_modulus": quantity("Pa"),
-            "poisson_ratio": quantity("-"),
-            "expansion": quantity("1/K"),
-            "density": quantity("kg/m3"),
-            "specific_heat": quantity("J/kg/K"),
-            "thermal_conductivity": quantity("W/m/K"),
-            "emissivity": quantity("-"),
+            "youngs_modulus": _quantity("Pa"),
+            "poisson_ratio": _quantity("-"),
+            "expansion": _quantity("1/K"),
+            "density": _quantity("kg/m3"),
+            "specific_heat": _quantity("J/kg/K"),
+            "thermal_conductivity": _quantity("W/m/K"),
+            "emissivity": _quantity("-"),
         },
         ("name", "youngs_modulus", "poisson_ratio", "expansion"),
     )
 
 
 def _lubricant() -> dict:
-    torque_test = entry(
+    torque_test = _entry(
         {
             "standard": TEXT,
             "bearing": TEXT,
-            "temperature": quantity("K"),
-            "starting_torque": quantity("N.m"),
-            "running_torque": quantity("N.m"),
+            "temperature": _quantity("K"),
+            "starting_torque": _quantity("N.m"),
+            "running_torque": _quantity("N.m"),
         },
         ("standard", "bearing", "temperature"),
     )
-    point = entry({"temperature": quantity("K"), "viscosity": quantity("m2/s")},
+    point = _entry({"temperature": _quantity("K"), "viscosity": _quantity("m2/s")},
                   ("temperature", "viscosity"))  # fmt: skip
-    return entry(
+    return _entry(
         {
             "name": TEXT,
-            "model": choice(("walther", "solid")),
-            "type": choice(("oil", "grease", "solid")),
+            "model": _choice(("walther", "solid")),
+            "type": _choice(("oil", "grease", "solid")),
             "base_oil": TEXT,
-            "oil_class": choice(("mineral", "synthetic")),
-            "a": quantity("-"),
-            "b": quantity("-"),
-            "c": quantity("m2/s"),
-            "viscosity_40": quantity("m2/s"),
-            "viscosity_100": quantity("m2/s"),
-            "t1": quantity("K"),
-            "nu1": quantity("m2/s"),
-            "t2": quantity("K"),
-            "nu2": quantity("m2/s"),
-            "viscosity_points": array_of(point),
-            "density": quantity("kg/m3"),
-            "density_temperature": quantity("K"),
-            "pour_point": quantity("K"),
-            "minimum_temperature": quantity("K"),
-            "maximum_temperature": quantity("K"),
-            "low_temperature_torque": array_of(torque_test),
+            "oil_class": _choice(("mineral", "synthetic")),
+            "a": _quantity("-"),
+            "b": _quantity("-"),
+            "c": _quantity("m2/s"),
+            "viscosity_40": _quantity("m2/s"),
+            "viscosity_100": _quantity("m2/s"),
+            "t1": _quantity("K"),
+            "nu1": _quantity("m2/s"),
+            "t2": _quantity("K"),
+            "nu2": _quantity("m2/s"),
+            "viscosity_points": _array_of(point),
+            "density": _quantity("kg/m3"),
+            "density_temperature": _quantity("K"),
+            "pour_point": _quantity("K"),
+            "minimum_temperature": _quantity("K"),
+            "maximum_temperature": _quantity("K"),
+            "low_temperature_torque": _array_of(torque_test),
         },
         ("name", "model"),
     )
 
 
 def _bearing() -> dict:
-    length = quantity("m")
-    return entry(
+    length = _quantity("m")
+    return _entry(
         {
             "name": TEXT,
             "bore": length,
             "outer_diameter": length,
             "width": length,
-            "n_balls": quantity("-", count=True),
+            "n_balls": _quantity("-", count=True),
             "ball_diameter": length,
             "pitch_diameter": length,
-            "contact_angle": quantity("rad"),
+            "contact_angle": _quantity("rad"),
             "inner_groove_diameter": length,
             "outer_groove_diameter": length,
             "radial_clearance": length,
-            "radial_clearance_group": choice(("C2", "N", "C3", "C4")),
-            "design_rule": choice(("ball_set",)),
-            "inner_curvature": quantity("-"),
-            "outer_curvature": quantity("-"),
+            "radial_clearance_group": _choice(("C2", "N", "C3", "C4")),
+            "design_rule": _choice(("ball_set",)),
+            "inner_curvature": _quantity("-"),
+            "outer_curvature": _quantity("-"),
             "ring_material": TEXT,
             "ball_material": TEXT,
-            "material_source": entry({"kind": choice(KINDS), "ref": TEXT}, ("kind", "ref")),
+            "material_source": _entry({"kind": _choice(KINDS), "ref": TEXT}, ("kind", "ref")),
         },
         ("name", "bore", "outer_diameter", "width", "inner_curvature", "outer_curvature",
          "ring_material", "ball_material"),
@@ -291,19 +309,19 @@ def _bearing() -> dict:
 
 def _mounting() -> dict:
     arrangements, loop_models, roles, parts = _choices()
-    length = quantity("m")
-    member = entry(
+    length = _quantity("m")
+    member = _entry(
         {
             "name": TEXT,
-            "role": choice(roles),
+            "role": _choice(roles),
             "material": TEXT,
             "length": length,
-            "area": quantity("m2"),
-            "part": choice(parts),
+            "area": _quantity("m2"),
+            "part": _choice(parts),
         },
         ("name", "role", "material", "length"),
     )
-    arm = entry(
+    arm = _entry(
         {
             "name": TEXT,
             "count": {"type": "integer", "minimum": 1},
@@ -314,17 +332,17 @@ def _mounting() -> dict:
         },
         ("name", "material", "length", "width", "thickness"),
     )
-    return entry(
+    return _entry(
         {
             "name": TEXT,
             "base": TEXT,
             "bearing": TEXT,
             "lubricant": TEXT,
             "coefficients": TEXT,
-            "arrangement": choice(arrangements),
-            "loop_model": choice(loop_models),
-            "assembly_temperature": quantity("K"),
-            "assembly_preload": quantity("N"),
+            "arrangement": _choice(arrangements),
+            "loop_model": _choice(loop_models),
+            "assembly_temperature": _quantity("K"),
+            "assembly_preload": _quantity("N"),
             "housing_material": TEXT,
             "housing_outer_diameter": length,
             "outer_interference": length,
@@ -332,11 +350,11 @@ def _mounting() -> dict:
             "shaft_bore": length,
             "inner_interference": length,
             "shim": length,
-            "loop_stiffness": quantity("N/m"),
-            "spring_stiffness": quantity("N/m"),
+            "loop_stiffness": _quantity("N/m"),
+            "spring_stiffness": _quantity("N/m"),
             "spring_compression": length,
-            "loop": array_of(member),
-            "arms": array_of(arm),
+            "loop": _array_of(member),
+            "arms": _array_of(arm),
         },
     )
 
@@ -344,13 +362,13 @@ def _mounting() -> dict:
 def _calibrated(unit: str) -> dict:
     """A quantity that a calibration may have fitted: with its ``standard_error`` (a number,
     in its unit) as ``servofmu calibrate`` writes it."""
-    schema = quantity(unit)
+    schema = _quantity(unit)
     schema["properties"]["standard_error"] = {"type": "number", "minimum": 0}
     return schema
 
 
 def _coefficients() -> dict:
-    return entry(
+    return _entry(
         {
             "hysteresis_loss": _calibrated("-"),
             "sliding_friction": _calibrated("-"),
@@ -365,13 +383,23 @@ def _coefficients() -> dict:
 
 def tolerance_band(unit: str | None = None) -> dict:
     """The schema of a tolerance band ``{ low, high, unit, kind, ref }`` (deviations from
-    nominal) of the dimension of ``unit`` (any catalogue unit when None)."""
-    return entry(
+    nominal) of the dimension of ``unit`` (any catalogue unit when None).
+
+    Returns
+    -------
+    dict
+
+    Examples
+    --------
+    >>> tolerance_band("m")["properties"]["unit"]
+    {'enum': ['m', 'mm', 'in', 'um']}
+    """
+    return _entry(
         {
             "low": {"type": "number"},
             "high": {"type": "number"},
             "unit": {"enum": list(units_of(unit) if unit else ALL_UNITS)},
-            "kind": choice(KINDS),
+            "kind": _choice(KINDS),
             "ref": TEXT,
         },
         ("low", "high", "unit", "kind", "ref"),
@@ -392,70 +420,70 @@ def _tolerances() -> dict:
 
 
 def _defaults() -> dict:
-    return entry({"mounting": TEXT, "lubricant": TEXT, "support_mounting": TEXT}, ())
+    return _entry({"mounting": TEXT, "lubricant": TEXT, "support_mounting": TEXT}, ())
 
 
 def _actuator() -> dict:
-    length, area = quantity("m"), quantity("m2")
-    return entry(
+    length, area = _quantity("m"), _quantity("m2")
+    return _entry(
         {
             "name": TEXT,
             "support_mounting": TEXT,
-            "reference_angle": quantity("rad"),
-            "gear_ratio": quantity("-"),
+            "reference_angle": _quantity("rad"),
+            "gear_ratio": _quantity("-"),
             "screw_lead": length,
             "crank_length": length,
             "rod_length": length,
-            "neutral_crank_angle": quantity("rad"),
-            "neutral_rod_angle": quantity("rad"),
+            "neutral_crank_angle": _quantity("rad"),
+            "neutral_rod_angle": _quantity("rad"),
             "crank_area": area,
             "rod_area": area,
             "arm_length": length,
-            "shaft_polar_moment": quantity("m4"),
-            "arm_second_moment": quantity("m4"),
-            "youngs_modulus": quantity("Pa"),
-            "shear_modulus": quantity("Pa"),
-            "gear_stiffness_reflected": quantity("N.m/rad"),
-            "screw_stiffness_reflected": quantity("N.m/rad"),
-            "housing_stiffness_reflected": quantity("N.m/rad"),
-            "seat_stiffness": quantity("N/m"),
+            "shaft_polar_moment": _quantity("m4"),
+            "arm_second_moment": _quantity("m4"),
+            "youngs_modulus": _quantity("Pa"),
+            "shear_modulus": _quantity("Pa"),
+            "gear_stiffness_reflected": _quantity("N.m/rad"),
+            "screw_stiffness_reflected": _quantity("N.m/rad"),
+            "housing_stiffness_reflected": _quantity("N.m/rad"),
+            "seat_stiffness": _quantity("N/m"),
         },
     )
 
 
 def _thermal() -> dict:
     """The handbook entry or a preset (a mounting in an environment)."""
-    return entry(
+    return _entry(
         {
             "name": TEXT,
             "mounting": TEXT,
             "vacuum": FLAG,
             "mounted": FLAG,
-            "air_speed": quantity("m/s"),
-            "reference_preload": quantity("N"),
-            "inner_ring_heat_fraction": quantity("-"),
-            "pressed_contact_resistance": quantity("m2.K/W"),
-            "light_contact_pressure": quantity("Pa"),
-            "pressed_contact_pressure": quantity("Pa"),
-            "light_contact_resistance": quantity("m2.K/W"),
-            "air_filled_contact_resistance": quantity("m2.K/W"),
-            "contact_reference_conductivity": quantity("W/m/K"),
-            "air_conductivity": quantity("W/m/K"),
-            "air_kinematic_viscosity": quantity("m2/s"),
-            "air_prandtl": quantity("-"),
+            "air_speed": _quantity("m/s"),
+            "reference_preload": _quantity("N"),
+            "inner_ring_heat_fraction": _quantity("-"),
+            "pressed_contact_resistance": _quantity("m2.K/W"),
+            "light_contact_pressure": _quantity("Pa"),
+            "pressed_contact_pressure": _quantity("Pa"),
+            "light_contact_resistance": _quantity("m2.K/W"),
+            "air_filled_contact_resistance": _quantity("m2.K/W"),
+            "contact_reference_conductivity": _quantity("W/m/K"),
+            "air_conductivity": _quantity("W/m/K"),
+            "air_kinematic_viscosity": _quantity("m2/s"),
+            "air_prandtl": _quantity("-"),
         },
         (),
     )
 
 
 def _skf_friction() -> dict:
-    return entry(
+    return _entry(
         {
             "name": TEXT,
-            "bearing_type": choice(("deep_groove", "angular_contact")),
+            "bearing_type": _choice(("deep_groove", "angular_contact")),
             "series_prefix": TEXT,
-            "contact_angle": quantity("rad"),
-            **{k: quantity("-") for k in ("r1", "r2", "r3", "s1", "s2", "s3", "kz")},
+            "contact_angle": _quantity("rad"),
+            **{k: _quantity("-") for k in ("r1", "r2", "r3", "s1", "s2", "s3", "kz")},
         },
         ("name", "bearing_type"),
     )
@@ -560,7 +588,18 @@ def _path(parts) -> str:
 
 def message(error, where: str) -> str:
     """One line for a :class:`jsonschema.ValidationError` of an entry at ``where`` ("FILE:
-    [table.KEY]"): the key, what was given, what is allowed, and the closest allowed word."""
+    [table.KEY]"): the key, what was given, what is allowed, and the closest allowed word.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> error = next(_validator("defaults").iter_errors({"mountng": "x"}))
+    >>> message(error, "mine.toml: [defaults]")  # doctest: +ELLIPSIS
+    "mine.toml: [defaults] mountng: unknown key 'mountng' (did you mean 'mounting'?); ..."
+    """
     path = list(error.absolute_path)
     field = _path(path)
     at = f"{where} {field}" if field else where
@@ -602,7 +641,18 @@ def message(error, where: str) -> str:
 
 
 def entry_problems(table: str, key: str, value, where: str) -> list[str]:
-    """The problems of one entry ``key`` of ``table`` (each a line starting with ``where``)."""
+    """The problems of one entry ``key`` of ``table`` (each a line starting with ``where``).
+
+    Returns
+    -------
+    list of str
+        Empty when the entry fits the table's schema.
+
+    Examples
+    --------
+    >>> entry_problems("coefficients", "mine", {"palmgren_s0": 1.0}, "x.toml:")
+    ['x.toml: [coefficients.mine] palmgren_s0 = 1.0 is a number, not a table']
+    """
     import fastjsonschema
 
     try:
