@@ -21,7 +21,7 @@ from pathlib import Path, PurePosixPath
 from servofmu.build.archive import ArchiveError, Budget, read_member, safe_extract
 from servofmu.build.choices import choice_items
 from servofmu.build.xmlsafe import parse, validate
-from servofmu.files import scratch_folder
+from servofmu.files import read_input_bytes, scratch_folder
 from servofmu.physics._checks import suggest
 
 from .errors import HarnessError, SystemError_, refusals
@@ -288,7 +288,7 @@ def _load(root: Path, path: Path, tmp, fmu_dir, budget: Budget) -> System:
     ssd_file = root / "SystemStructure.ssd"
     if not ssd_file.is_file():
         raise SystemError_([f"{path}: no SystemStructure.ssd"])
-    ssd = parse(ssd_file.read_bytes(), str(ssd_file))
+    ssd = parse(read_input_bytes(ssd_file, "system description"), str(ssd_file))
     validate(ssd, "ssd", str(ssd_file))
     problems: list[str] = []
     system = ssd.find("ssd:System", NS)
@@ -334,7 +334,8 @@ def _load(root: Path, path: Path, tmp, fmu_dir, budget: Budget) -> System:
             if not ssv_file.is_file():
                 problems.append(f"component {name!r}: parameter set {src!r} not found")
                 continue
-            comp.parameters.update(_read_parameter_set(ssv_file.read_bytes(), str(ssv_file)))
+            data = read_input_bytes(ssv_file, "parameter set")
+            comp.parameters.update(_read_parameter_set(data, str(ssv_file)))
         components[name] = comp
     connections = []
     for c in system.findall("ssd:Connections/ssd:Connection", NS):
@@ -356,7 +357,7 @@ def _load(root: Path, path: Path, tmp, fmu_dir, budget: Budget) -> System:
     step = _base_step(ssd.find(".//osp:FixedStepAlgorithm", NS), ssd_file, problems)
     variants = {}
     for f in sorted((root / "variants").glob("*.ssv")) if (root / "variants").is_dir() else []:
-        variants[f.stem] = _read_parameter_set(f.read_bytes(), str(f))
+        variants[f.stem] = _read_parameter_set(read_input_bytes(f, "parameter set"), str(f))
     over = []  # every FMU charged before any is unpacked or read
     for comp in components.values():
         if comp.fmu is not None:
@@ -575,7 +576,7 @@ def parameter_file(system: System, path) -> dict[str, object]:
         raise ParameterError(f"--parameters {path}: no such parameter-set file")
     with refusals():
         values = {name: value for name, (_, value) in _read_parameter_set(
-            path.read_bytes(), str(path)).items()}  # fmt: skip
+            read_input_bytes(path, "parameter set"), str(path)).items()}  # fmt: skip
     if not values:
         raise ParameterError(f"--parameters {path}: the parameter set is empty")
     qualified = [n for n in values if n.partition(".")[0] in system.components]

@@ -245,6 +245,20 @@ def test_an_endless_input_file_is_refused_within_the_cap(capsys, monkeypatch, tm
     assert "/dev/zero: catalogue is larger than 1048576 bytes: not read" in err, err
 
 
+def test_a_parameter_set_larger_than_the_cap_is_refused_unread(tmp_path, monkeypatch):
+    from types import SimpleNamespace
+
+    from servofmu import files
+    from servofmu.harness.system import parameter_file
+
+    monkeypatch.setattr(files, "MAX_INPUT_BYTES", 1 << 20)  # the same path, a smaller cap
+    big = tmp_path / "big.ssv"
+    big.write_bytes(b" " * (2 << 20))
+    system = SimpleNamespace(name="demo", components={})
+    with pytest.raises(ValueError, match=r"big\.ssv: parameter set is larger than 1048576 bytes"):
+        parameter_file(system, big)
+
+
 def test_a_utf8_byte_order_mark_is_accepted(tmp_path):
     from servofmu.build import catalogs
 

@@ -106,14 +106,7 @@ def read_input(path, what: str = "input file", max_bytes: int | None = None) -> 
     /dev/zero: catalogue is larger than 1024 bytes: not read
     """
     path = Path(path)
-    max_bytes = MAX_INPUT_BYTES if max_bytes is None else max_bytes
-    try:
-        with open(path, "rb") as fh:
-            data = fh.read(max_bytes + 1)
-    except OSError as exc:
-        raise InputFileError(f"{path}: cannot be read ({exc.strerror or exc})") from None
-    if len(data) > max_bytes:
-        raise InputFileError(f"{path}: {what} is larger than {max_bytes} bytes: not read")
+    data = read_input_bytes(path, what, max_bytes)
     for bom, name in (
         (b"\xff\xfe\x00\x00", "UTF-32"),
         (b"\x00\x00\xfe\xff", "UTF-32"),
@@ -138,6 +131,35 @@ def read_input(path, what: str = "input file", max_bytes: int | None = None) -> 
             f"{exc.start}); save it as UTF-8"
         ) from None
     return text.removeprefix("\ufeff")
+
+
+def read_input_bytes(path, what: str = "input file", max_bytes: int | None = None) -> bytes:
+    """The bytes of input file ``path``, at most ``max_bytes`` (default
+    :data:`MAX_INPUT_BYTES`) read; :class:`InputFileError` naming the file otherwise (an XML
+    file declares its own encoding: its parser checks it).
+
+    Returns
+    -------
+    bytes
+
+    Examples
+    --------
+    >>> try:
+    ...     read_input_bytes("/dev/zero", "parameter set", max_bytes=8)
+    ... except InputFileError as exc:
+    ...     print(exc)
+    /dev/zero: parameter set is larger than 8 bytes: not read
+    """
+    path = Path(path)
+    max_bytes = MAX_INPUT_BYTES if max_bytes is None else max_bytes
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read(max_bytes + 1)
+    except OSError as exc:
+        raise InputFileError(f"{path}: cannot be read ({exc.strerror or exc})") from None
+    if len(data) > max_bytes:
+        raise InputFileError(f"{path}: {what} is larger than {max_bytes} bytes: not read")
+    return data
 
 
 # ----------------------------------------------------------------------------- writing
