@@ -29,6 +29,7 @@ import shutil
 import stat
 import tempfile
 import time
+import weakref
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -425,16 +426,15 @@ class ScratchFolder:
             _CLEANED.add(root)
         try:
             self.name = tempfile.mkdtemp(prefix=f"{prefix}{os.getpid()}-", dir=root)
-            self._lock = os.open(Path(self.name) / ".lock", os.O_CREAT | os.O_RDWR, 0o600)
+            lock = os.open(Path(self.name) / ".lock", os.O_CREAT | os.O_RDWR, 0o600)
         except OSError as exc:
             raise OutputError(root, exc) from None
-        fcntl.flock(self._lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        # removed when cleaned up, collected, or at the interpreter's exit (as TemporaryDirectory)
+        self._finalizer = weakref.finalize(self, _remove_scratch, self.name, lock)
 
     def cleanup(self) -> None:
-        if self._lock is not None:
-            shutil.rmtree(self.name, ignore_errors=True)
-            os.close(self._lock)
-            self._lock = None
+        self._finalizer()
 
     def __enter__(self) -> str:
         return self.name
@@ -442,9 +442,10 @@ class ScratchFolder:
     def __exit__(self, *exc) -> None:
         self.cleanup()
 
-    def __del__(self):
-        with contextlib.suppress(Exception):
-            self.cleanup()
+
+def _remove_scratch(name: str, lock: int) -> None:
+    shutil.rmtree(name, ignore_errors=True)
+    os.close(lock)  # releases the lock
 
 
 def scratch_folder(prefix: str) -> ScratchFolder:
