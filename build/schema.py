@@ -660,8 +660,9 @@ def entry_problems(table: str, key: str, value, where: str) -> list[str]:
         return []
     except fastjsonschema.JsonSchemaException:
         pass
-    errors = sorted(
-        _validator(table).iter_errors(value), key=lambda e: (list(e.absolute_path), e.validator)
+    errors = sorted(  # what was given wrong first, then what is missing
+        _validator(table).iter_errors(value),
+        key=lambda e: (e.validator == "required", list(e.absolute_path), e.validator),
     )
     return [message(e, f"{where} [{table}.{key}]") for e in errors]
 
