@@ -225,7 +225,7 @@ def test_a_sweep_with_a_failed_run_exits_1(tmp_path, monkeypatch, capsys):
 
 
 class _DiesOnce:
-    """A task whose worker dies the first time it runs a chunk (a marker file remembers)."""
+    """A task whose worker dies the first time any worker runs a chunk (a marker file remembers)."""
 
     def __init__(self, marker):
         self.marker = str(marker)
@@ -234,10 +234,12 @@ class _DiesOnce:
         pass
 
     def __call__(self, points):
-        if not os.path.exists(self.marker):
-            Path(self.marker).write_text("died")
-            os._exit(1)  # the worker process dies with the chunk
-        return [dict(p, y=2 * p["x"]) for p in points]
+        try:  # created exclusively: of two chunks started together, one worker dies
+            fd = os.open(self.marker, os.O_CREAT | os.O_EXCL | os.O_WRONLY)
+        except FileExistsError:
+            return [dict(p, y=2 * p["x"]) for p in points]
+        os.close(fd)
+        os._exit(1)  # the worker process dies with the chunk
 
 
 def test_a_run_lost_with_its_worker_runs_again_while_workers_remain(tmp_path):
