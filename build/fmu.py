@@ -9,8 +9,8 @@ import tempfile
 from pathlib import Path
 
 import servofmu
-from servofmu.fmus import slave
-from servofmu.fmus.slave import BUILD_INFO, SHIPPED, package_hash
+from servofmu.fmus import declarations
+from servofmu.fmus.package_hash import BUILD_INFO, SHIPPED, package_hash
 
 from .catalogs import Defaults
 from .documentation import write_documentation
@@ -29,8 +29,9 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
     """Build FMU ``name`` (one of :data:`FMUS`) into ``out_dir``; returns the .fmu path.
 
     The FMU carries what it runs of the servofmu package in ``resources/servofmu`` (the parts
-    :data:`~servofmu.fmus.slave.SHIPPED`: the package ``__init__``, ``physics/`` with its data
-    and ``fmus/``; every FMU the same copy, so that several FMUs can share one interpreter),
+    :data:`~servofmu.fmus.package_hash.SHIPPED`: the package ``__init__``, ``physics/`` with
+    its data and ``fmus/``; every FMU the same copy, so that several FMUs can share one
+    interpreter),
     ``resources/servofmu_build.json`` (the hash of those parts, checked at instantiation, and
     the build's start values when ``defaults`` name presets), ``resources/presets/`` (the
     catalogue's presets as SSP parameter sets, BearingFriction and ActuatorStiffness) and
@@ -53,9 +54,9 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
     out_dir.mkdir(parents=True, exist_ok=True)
     script = PACKAGE_DIR / "fmus" / f"{name}.py"
     start = start_values(name, defaults or Defaults())
-    slave.BUILD_START.clear()
+    declarations.BUILD_START.clear()
     if start:
-        slave.BUILD_START[name] = start
+        declarations.BUILD_START[name] = start
     try:
         with tempfile.TemporaryDirectory(prefix="servofmu_build_") as tmp:
             tmp = Path(tmp)
@@ -89,7 +90,7 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
             if library is not None:
                 put_export(Path(path), name, library)
     finally:
-        slave.BUILD_START.clear()
+        declarations.BUILD_START.clear()
     return Path(path)
 
 

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from servofmu.build import fmu as fmu_module
 from servofmu.build.fmu import PACKAGE_DIR, is_current
-from servofmu.fmus.slave import SHIPPED, package_hash
+from servofmu.fmus.package_hash import SHIPPED, package_hash
 
 BUILD_DIR = Path(fmu_module.__file__).parent
 
@@ -30,7 +30,7 @@ def test_fmu_ships_only_what_it_runs(fmus):
         }
     tops = {name.split("/")[0] for name in shipped}
     assert tops == set(SHIPPED)  # __init__.py, physics/, fmus/: no papers, calibration, cli
-    assert "physics/data/bearings.toml" in shipped and "fmus/slave.py" in shipped
+    assert "physics/data/bearings.toml" in shipped and "fmus/runtime.py" in shipped
     assert not [n for n in shipped if "__pycache__" in n or n.endswith(".pyc")]
     expected = {
         f.relative_to(PACKAGE_DIR).as_posix()
@@ -67,7 +67,7 @@ def test_is_current_ignores_edits_outside_the_shipped_parts(fmus, tmp_path, monk
     (copy / "papers" / "yu2017.py").write_text("# edited\n")
     monkeypatch.setattr(fmu_module, "PACKAGE_DIR", copy)
     assert is_current(out)
-    (copy / "fmus" / "slave.py").write_text((copy / "fmus" / "slave.py").read_text() + "\n")
+    (copy / "fmus" / "runtime.py").write_text((copy / "fmus" / "runtime.py").read_text() + "\n")
     assert not is_current(out)
 
 
@@ -81,3 +81,4 @@ def test_build_never_imports_the_harness():
             elif isinstance(node, ast.ImportFrom) and node.module:
                 names = [node.module]
             assert not [n for n in names if "harness" in n], f"{source.name} imports {names}"
+

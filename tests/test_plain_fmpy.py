@@ -148,7 +148,7 @@ def test_an_fmu_built_without_compiled_kernels_runs_python_and_says_so(
 ):
     # as a build on a machine without a C compiler makes it: the FMU's copy of the package
     # has no compiled module, and servofmu_build.json records the hash of that copy
-    from servofmu.fmus.slave import package_hash
+    from servofmu.fmus.package_hash import package_hash
 
     built = fmus["BearingFriction"]
     copy = tmp_path / "copy"

@@ -21,7 +21,8 @@ servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
 
 import math  # noqa: E402
 
-from servofmu.fmus.slave import Item, ServoSlave, Var  # noqa: E402
+from servofmu.fmus.declarations import Item, Var  # noqa: E402
+from servofmu.fmus.runtime import ServoSlave  # noqa: E402
 from servofmu.physics import thermal_network as tn  # noqa: E402
 
 _P = tn.preset("yu2017_gimbal_chamber")
@@ -226,7 +227,7 @@ class ThermalNetwork(ServoSlave):
                 ref = tuple(t)
         else:
             ref = None
-        new = tn._step(  # inputs checked by the slave
+        new = tn.step_unchecked(  # inputs checked by the slave
             self.network,
             t,
             self.ambient_temperature,
