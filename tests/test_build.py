@@ -5,8 +5,11 @@ from __future__ import annotations
 
 import ast
 import shutil
+import subprocess
 import zipfile
 from pathlib import Path
+
+import pytest
 
 from servofmu.build import fmu as fmu_module
 from servofmu.build.fmu import PACKAGE_DIR, is_current
@@ -82,3 +85,22 @@ def test_build_never_imports_the_harness():
                 names = [node.module]
             assert not [n for n in names if "harness" in n], f"{source.name} imports {names}"
 
+
+def test_a_new_source_file_of_the_export_library_is_not_ignored_by_git():
+    """build/export/ is tracked whole: a source added there shows in ``git status`` (only
+    its compiled library is ignored), while a mechanism's build folder stays ignored."""
+    checkout = BUILD_DIR.parent
+    if not (checkout / ".git").exists():
+        pytest.skip("not a git checkout")
+
+    def ignored(path: str) -> bool:
+        proc = subprocess.run(
+            ["git", "check-ignore", "-q", path], cwd=checkout, capture_output=True, check=False
+        )
+        assert proc.returncode in (0, 1), proc.stderr
+        return proc.returncode == 0
+
+    assert not ignored("build/export/src/pythonfmu/SharedValues.hpp")
+    assert not ignored("build/export/NOTES.md")
+    assert ignored("build/export/servofmu_export.abi3.so")
+    assert ignored("build/my_gimbal/BearingFriction.fmu")
