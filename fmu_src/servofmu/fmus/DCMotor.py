@@ -26,6 +26,7 @@ _P = DCMotorParameters()
 #: step loses digits: 2e-8 at 1e5 s, NaN at 1e18 s).
 MAX_SUBSTEPS = 100_000
 _SRC = "assumed: a small brushed torque motor driving a gimbal axis"
+_STATE = ("current", "speed", "angle")  # the motor's state: outputs, set by initial_<name>
 
 
 def _param(name, description, **kw):
@@ -233,9 +234,41 @@ class DCMotor(ServoSlave):
         if not all(math.isfinite(v) for v in new):
             self._error = f"the state (current, speed, angle) = {new!r} is not finite"
             return False
+        self._error = _outside(zip(_STATE, new, strict=True))
+        if self._error:
+            return False
         self._set_state(new)
         return True
 
     def _set_state(self, x):
         self.current, self.speed, self.angle = (float(v) for v in x)
         self.motor_torque = float(motor.motor_torque(self.params, self.current))
+
+    def state_problem(self):
+        # a state handed back: within what a step allows, and motor_torque = k_t·current
+        problem = _outside((name, getattr(self, name)) for name in _STATE)
+        if problem or not self._configured:
+            return problem
+        if self.motor_torque != motor.motor_torque(self.params, self.current):
+            return f"motor_torque = {self.motor_torque!r} N.m is not k_t·current"
+        return ""
+
+
+#: The range each state variable can be given through FMI (its initial_<name> parameter's)
+_RANGES = {
+    name: next((v.min, v.max, v.unit) for v in DCMotor.VARIABLES if v.name == f"initial_{name}")
+    for name in _STATE
+}
+
+
+def _outside(state) -> str:
+    """The first (name, value) of the motor's state outside :data:`_RANGES`, named, else "":
+    a step that would leave it is discarded, so every state the FMU saves can be restored."""
+    for name, x in state:
+        lo, hi, unit = _RANGES[name]
+        if not lo <= x <= hi:
+            return (
+                f"{name} = {x!r} {unit} is outside the range a motor state can be given "
+                f"(initial_{name}: [{lo:g}, {hi:g}] {unit})"
+            )
+    return ""

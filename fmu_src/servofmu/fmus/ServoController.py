@@ -138,6 +138,19 @@ class ServoController(ServoSlave):
         self.next_sample = max(self.next_sample, last)
         return True
 
+    def state_problem(self):
+        # every step leaves next_sample at the first sample instant not yet due
+        if self._time is None or not self._configured:
+            return ""
+        ts = self.params.sample_period
+        due = max(0, math.ceil((self._time - 1e-9 * ts - self._start_time) / ts))
+        if self.next_sample != due:
+            return (
+                f"next_sample = {self.next_sample!r} is not the next sample at time = "
+                f"{self._time!r} s ({due}, sample_period = {ts!r} s)"
+            )
+        return ""
+
     def hidden_state(self):
         return {
             "integral": self.pid.integral,
@@ -151,6 +164,9 @@ class ServoController(ServoSlave):
         numbers = (integral, derivative, 0.0 if last is None else last)
         if not all(type(x) in (int, float) for x in numbers):
             raise TypeError(f"{_PID_FIELDS}: numbers, not {(integral, derivative, last)!r}")
+        for name, x in zip(_PID_FIELDS, numbers, strict=True):
+            if not math.isfinite(x):  # a sample of finite inputs gives finite values
+                raise ValueError(f"{name} = {x!r} is not finite")
         if type(state["next_sample"]) is not int:
             raise TypeError(f"next_sample = {state['next_sample']!r} is not an integer")
         self.pid = PIDState(float(integral), float(derivative), last)

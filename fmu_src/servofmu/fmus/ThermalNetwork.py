@@ -250,6 +250,14 @@ class ThermalNetwork(ServoSlave):
     def _state(self):
         return [getattr(self, n) for n, _ in _OUTPUTS]
 
+    def state_problem(self):
+        # a restored state holds temperatures a step could give (advance's rule)
+        for name, _ in _OUTPUTS:
+            t = getattr(self, name)
+            if not (math.isfinite(t) and t > 0.0):
+                return f"{name} = {t!r} K is not a temperature (finite, > 0 K)"
+        return ""
+
     def _set_state(self, values):
         for (name, _), v in zip(_OUTPUTS, values, strict=True):
             setattr(self, name, float(v))

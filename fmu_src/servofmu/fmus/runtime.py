@@ -44,7 +44,6 @@ from __future__ import annotations
 
 import copy
 import functools
-import json
 import math
 
 from pythonfmu import Boolean, Fmi2Causality, Fmi2Slave, Fmi2Variability, Integer, Real
@@ -63,8 +62,10 @@ from .calls import (
     STEP_FAILED,
     TERMINATED,
     FMIError,
+    sealed,
     sequence_problem,
     state_problem,
+    unsealed,
 )
 from .declarations import FMI_TYPE, Var, check_variables, variables_of
 from .interpreter_exit import register_interpreter_finaliser
@@ -424,12 +425,17 @@ class ServoSlave(Fmi2Slave):
     def _bad_output(self) -> str:
         """Message naming the first Real output that is not finite (+inf where the variable
         allows it), else ""."""
+        problem = self._nonfinite_output()
+        return f"{problem}: the step is not taken" if problem else ""
+
+    def _nonfinite_output(self) -> str:
+        """The first Real output that is not finite (+inf where allowed), named, else ""."""
         if self._outputs_finite(self):
             return ""
         for v in self._outputs:
             x = getattr(self, v.name)
             if v.type == "Real" and not (math.isfinite(x) or (x == math.inf and v.allow_inf)):
-                return f"{v.name} = {x!r} is not finite: the step is not taken"
+                return f"{v.name} = {x!r} is not finite"
         return ""
 
     def item(self, name: str) -> str:
@@ -630,10 +636,26 @@ class ServoSlave(Fmi2Slave):
         try:
             self._restore(state)
         except (Exception, KeyboardInterrupt) as exc:
+            problem = f"{type(exc).__name__}: {exc}"
+        else:
+            problem = self._restored_problem()
+        if problem:
             self._restore(saved)
-            return self._refuse(
-                call, f"the state is refused ({type(exc).__name__}: {exc}); nothing restored"
-            )
+            return self._refuse(call, f"the state is refused ({problem}); nothing restored")
+
+    def _restored_problem(self) -> str:
+        """Why the values just restored are not ones this FMU can hold ("" when they are).
+
+        Inputs and parameters are held to what fmi2Set* leads to: any value is taken, and the
+        next fmi2ExitInitializationMode or fmi2DoStep (an algebraic FMU: the next output read
+        too) refuses one outside its range, naming it. An algebraic FMU's outputs are
+        recomputed from its inputs before they are read again. A stepped FMU's outputs and
+        hidden state are its state: from a phase that steps or has stepped, the outputs must
+        be finite (as after every step) and pass the FMU's :meth:`state_problem`; the hidden
+        state is checked by :meth:`restore_hidden_state`."""
+        if self.FEEDTHROUGH or self._phase not in (STEP_COMPLETE, TERMINATED):
+            return ""
+        return self._nonfinite_output() or self.state_problem()
 
     def _restore(self, state: dict):
         """Every declared field of a checked state (never anything else: the variables by
@@ -646,7 +668,9 @@ class ServoSlave(Fmi2Slave):
             self._configured = False
             self._ensure_configured()
         self.restore_hidden_state(copy.deepcopy(state["hidden"]))
-        self._dirty, self._error = state["dirty"], state["error"]
+        # an algebraic FMU's outputs follow from its inputs: computed again before any read
+        self._dirty = True if self.FEEDTHROUGH else state["dirty"]
+        self._error = state["error"]
         self._phase, self._time, self._start_time = (
             state["phase"],
             state["time"],
@@ -655,20 +679,24 @@ class ServoSlave(Fmi2Slave):
 
     @classmethod
     def _fmu_state_to_bytes(cls, state) -> bytes:
+        """The serialized state: its JSON with a checksum of its bytes (:func:`.calls.sealed`)."""
         try:
-            return json.dumps(state, allow_nan=True).encode("utf-8")
+            return sealed(state)
         except (Exception, KeyboardInterrupt) as exc:
             message = f"fmi2SerializeFMUstate: the state cannot be serialised ({exc})"
             if cls._class_reports:
                 raise FMIError(message) from None
-            return json.dumps({"refused": message}).encode("utf-8")
+            return sealed({"refused": message})
 
     @classmethod
     def _fmu_state_from_bytes(cls, data) -> dict:
+        """A state from bytes of :meth:`_fmu_state_to_bytes`: refused unless their checksum
+        matches and they hold a state of this FMU and build."""
         try:
-            state = json.loads(bytes(data).decode("utf-8"))
-            types = {v.name: v.type for v in cls.VARIABLES}
-            problem = state_problem(state, cls.__name__, runtime_hash(), types)
+            state, problem = unsealed(bytes(data))
+            if not problem:
+                types = {v.name: v.type for v in cls.VARIABLES}
+                problem = state_problem(state, cls.__name__, runtime_hash(), types)
         except (Exception, KeyboardInterrupt) as exc:
             problem = f"{type(exc).__name__}: {exc}"
         if not problem:
@@ -719,7 +747,14 @@ class ServoSlave(Fmi2Slave):
 
     def restore_hidden_state(self, state: dict):
         """Inverse of :meth:`hidden_state`; raises (ValueError, TypeError, KeyError) on a
-        field it cannot take, and the base class then restores what was there."""
+        field it cannot take (of the wrong type, not finite, outside what a step gives), and
+        the base class then restores what was there."""
+
+    def state_problem(self) -> str:
+        """Stepped FMUs: why the restored outputs and hidden state are not a state this FMU
+        can hold between steps, beyond finite outputs ("" when they are): what its steps
+        guarantee (ranges, relations between the values)."""
+        return ""
 
 
 def _experiment_problem(start, stop, tolerance) -> str:
