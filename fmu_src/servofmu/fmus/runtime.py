@@ -50,8 +50,8 @@ from pythonfmu import Boolean, Fmi2Causality, Fmi2Slave, Fmi2Variability, Intege
 from pythonfmu.enums import Fmi2Initial, Fmi2Status
 
 from .. import __version__
-from . import accessors, model_description
-from .binary import export_of, reports_statuses
+from . import accessors, model_description, shared_values
+from .binary import export_of, reports_statuses, shares_values
 from .calls import (
     ERROR,
     INITIALIZATION,
@@ -70,6 +70,7 @@ from .calls import (
 from .declarations import FMI_TYPE, Var, check_variables, variables_of
 from .interpreter_exit import register_interpreter_finaliser
 from .package_hash import build_start, runtime_hash
+from .shared_values import ALL, INPUTS, OUTPUTS, PARAMETERS, SharedValues
 
 _TYPES = {"Real": Real, "Integer": Integer, "Boolean": Boolean, "Enumeration": Integer}
 _FMI_TYPES = ("Real", "Integer", "Boolean", "String")
@@ -78,9 +79,10 @@ _CAST = {"Real": float, "Integer": int, "Boolean": bool, "Enumeration": int}
 _DESCRIBING = "describing"  # the build writes the modelDescription (reads the start values)
 
 
-def fmi_call(call: str, result=None, failure: str = "_internal"):
+def fmi_call(call: str, result=None, failure: str = "_internal", changes: int = ALL):
     """Decorator of an FMI entry point of :class:`ServoSlave`: no exception of servofmu's own
-    code leaves it.
+    code leaves it, and the values shared with the export library (:mod:`.shared_values`)
+    are read before it and written back after it.
 
     The method receives ``call`` (the FMI function's name, for its messages) after ``self``.
     An :class:`~.calls.FMIError` (a refusal under servofmu's export) passes through; any other
@@ -94,6 +96,8 @@ def fmi_call(call: str, result=None, failure: str = "_internal"):
     result : what a refused call returns under pythonfmu's binary: a value, or a function of
         the call's arguments
     failure : the name of the slave's method that answers an exception
+    changes : the groups of shared values the call may change (:data:`.shared_values.INPUTS`,
+        ``OUTPUTS``, ``PARAMETERS``, or'ed; its state and dirty flag are always written back)
 
     Returns
     -------
@@ -103,6 +107,7 @@ def fmi_call(call: str, result=None, failure: str = "_internal"):
     Examples
     --------
     >>> class Demo:
+    ...     _shared = None  # no export library shares values with it
     ...     def _internal(self, call, exc, result):
     ...         return f"{call}: {type(exc).__name__}", result
     ...     @fmi_call("fmi2GetReal", result=lambda vrs: [0.0] * len(vrs))
@@ -115,7 +120,10 @@ def fmi_call(call: str, result=None, failure: str = "_internal"):
     def decorate(method):
         @functools.wraps(method)
         def entry(self, *args):
+            shared = self._shared
             try:
+                if shared is not None:
+                    shared.pull(self)
                 return method(self, call, *args)
             except FMIError:
                 raise
@@ -125,6 +133,9 @@ def fmi_call(call: str, result=None, failure: str = "_internal"):
                 except Exception:  # arguments a host should not have passed
                     refused = None
                 return getattr(self, failure)(call, exc, refused)
+            finally:
+                if shared is not None:
+                    shared.push(self, changes)
 
         return entry
 
@@ -186,10 +197,12 @@ class ServoSlave(Fmi2Slave):
         self._copy = accessors.copier(tuple((v.name, v.field) for v in self._outputs if v.field))
         reals = [v for v in self._outputs if v.type == "Real"]
         self._outputs_finite = accessors.finite_checker(tuple((v.name, v.allow_inf) for v in reals))
+        self._real_outputs = accessors.getter(tuple(v.name for v in reals))
         self._inf_ok = frozenset(v.name for v in reals if v.allow_inf)
         for v in self.variables:
             setattr(self, v.name, v.start if v.causality != "output" else _zero(v.type))
         self._dirty = True  # inputs changed since the outputs were computed
+        self._inputs_valid = False  # every input known to lie within its range
         self._configured = False  # parameters turned into model objects
         self._error = ""  # why the FMU cannot compute, or why it refused a call
         self._phase = INSTANTIATED  # the FMI 2.0 state (calls.py)
@@ -198,6 +211,13 @@ class ServoSlave(Fmi2Slave):
         for v in self.variables:
             self._register(v)
         self._tables()
+        self._shared = None  # the values shared with servofmu's export (shared_values.py)
+        if shares_values(export) and shared_values.wanted():
+            writable = {phase: self._writable[phase]["Real"] for phase in PHASES}
+            self._shared = SharedValues(self.variables, self.FEEDTHROUGH, writable)
+            self._shared.push(self, ALL)
+        # the block the export library views (None: every call through Python)
+        self._shared_buffer = None if self._shared is None else self._shared.buffer
         self._announced = False
         if self._reports:  # pythonfmu's binary would free its logger before this message
             self._announce()
@@ -309,35 +329,35 @@ class ServoSlave(Fmi2Slave):
         return "unknown value reference"
 
     # ------------------------------------------------------------------ fmi2Get*, fmi2Set*
-    @fmi_call("fmi2GetReal", result=_defaults("Real"))
+    @fmi_call("fmi2GetReal", result=_defaults("Real"), changes=OUTPUTS)
     def get_real(self, call, vrs):
         return self._get(call, "Real", vrs)
 
-    @fmi_call("fmi2GetInteger", result=_defaults("Integer"))
+    @fmi_call("fmi2GetInteger", result=_defaults("Integer"), changes=OUTPUTS)
     def get_integer(self, call, vrs):
         return self._get(call, "Integer", vrs)
 
-    @fmi_call("fmi2GetBoolean", result=_defaults("Boolean"))
+    @fmi_call("fmi2GetBoolean", result=_defaults("Boolean"), changes=OUTPUTS)
     def get_boolean(self, call, vrs):
         return self._get(call, "Boolean", vrs)
 
-    @fmi_call("fmi2GetString", result=_defaults("String"))
+    @fmi_call("fmi2GetString", result=_defaults("String"), changes=OUTPUTS)
     def get_string(self, call, vrs):
         return self._get(call, "String", vrs)
 
-    @fmi_call("fmi2SetReal")
+    @fmi_call("fmi2SetReal", changes=INPUTS | PARAMETERS)
     def set_real(self, call, vrs, values):
         self._set(call, "Real", vrs, values)
 
-    @fmi_call("fmi2SetInteger")
+    @fmi_call("fmi2SetInteger", changes=0)
     def set_integer(self, call, vrs, values):
         self._set(call, "Integer", vrs, values)
 
-    @fmi_call("fmi2SetBoolean")
+    @fmi_call("fmi2SetBoolean", changes=0)
     def set_boolean(self, call, vrs, values):
         self._set(call, "Boolean", vrs, values)
 
-    @fmi_call("fmi2SetString")
+    @fmi_call("fmi2SetString", changes=0)
     def set_string(self, call, vrs, values):
         self._set(call, "String", vrs, values)
 
@@ -380,6 +400,7 @@ class ServoSlave(Fmi2Slave):
         for name, value in zip(names, values, strict=True):
             setattr(self, name, value)
         self._dirty = True
+        self._inputs_valid = False
         if not self._param_vrs.isdisjoint(vrs):
             self._configured = False
 
@@ -399,8 +420,13 @@ class ServoSlave(Fmi2Slave):
     # ------------------------------------------------------------------ checks
     def _bad_input(self) -> str:
         """Message for the first input outside its declared range, else "" (every step: one
-        compiled test, the loop only to name a bad input)."""
+        compiled test, the loop only to name a bad input; none while the inputs are known to
+        be in range: checked since the last fmi2Set* through Python, or written by the export
+        library, which takes only finite values within the ranges)."""
+        if self._inputs_valid:
+            return ""
         if self._inputs_in_range(self):
+            self._inputs_valid = True
             return ""
         for name, lo, hi in self._input_checks:
             x = getattr(self, name)
@@ -430,7 +456,8 @@ class ServoSlave(Fmi2Slave):
 
     def _nonfinite_output(self) -> str:
         """The first Real output that is not finite (+inf where allowed), named, else ""."""
-        if self._outputs_finite(self):
+        total = sum(self._real_outputs(self))
+        if total - total == 0.0 or self._outputs_finite(self):  # the first: all finite
             return ""
         for v in self._outputs:
             x = getattr(self, v.name)
@@ -510,7 +537,7 @@ class ServoSlave(Fmi2Slave):
             pass
 
     # ------------------------------------------------------------------ FMI calls
-    @fmi_call("fmi2SetupExperiment")
+    @fmi_call("fmi2SetupExperiment", changes=0)
     def setup_experiment(self, call, start_time, stop_time=None, tolerance=None):
         self._announce()
         problem = self._sequence(call) or _experiment_problem(start_time, stop_time, tolerance)
@@ -518,7 +545,7 @@ class ServoSlave(Fmi2Slave):
             return self._refuse(call, problem)
         self._start_time = self._time = float(start_time)
 
-    @fmi_call("fmi2EnterInitializationMode")
+    @fmi_call("fmi2EnterInitializationMode", changes=0)
     def enter_initialization_mode(self, call):
         self._announce()
         problem = self._sequence(call)
@@ -527,7 +554,7 @@ class ServoSlave(Fmi2Slave):
         self._phase = INITIALIZATION
         self._dirty = True
 
-    @fmi_call("fmi2ExitInitializationMode")
+    @fmi_call("fmi2ExitInitializationMode", changes=OUTPUTS)
     def exit_initialization_mode(self, call):
         problem = self._sequence(call)
         if problem:
@@ -542,7 +569,7 @@ class ServoSlave(Fmi2Slave):
             return self._refuse(call, self._error)
         self._phase = STEP_COMPLETE
 
-    @fmi_call("fmi2DoStep", result=False, failure="_step_failed")
+    @fmi_call("fmi2DoStep", result=False, failure="_step_failed", changes=OUTPUTS)
     def do_step(self, call, current_time: float, step_size: float) -> bool:
         problem = "" if self._phase == STEP_COMPLETE else self._sequence(call)
         problem = problem or self._step_problem(current_time, step_size)
@@ -595,7 +622,7 @@ class ServoSlave(Fmi2Slave):
         self.log(f"{self.instance_name}: {self._error}", status=Fmi2Status.discard)
         return False
 
-    @fmi_call("fmi2Terminate")
+    @fmi_call("fmi2Terminate", changes=0)
     def terminate(self, call):
         problem = self._sequence(call)
         if problem:
@@ -603,7 +630,7 @@ class ServoSlave(Fmi2Slave):
         self._phase = TERMINATED
 
     # ------------------------------------------------------------------ state
-    @fmi_call("fmi2GetFMUstate", failure="_state_failed")
+    @fmi_call("fmi2GetFMUstate", failure="_state_failed", changes=0)
     def _get_fmu_state(self, call):
         return {
             "fmu": type(self).__name__,
@@ -664,6 +691,7 @@ class ServoSlave(Fmi2Slave):
         params_changed = any(values[v.name] != getattr(self, v.name) for v in self._params)
         for v in self.variables:
             setattr(self, v.name, _CAST[v.type](values[v.name]))
+        self._inputs_valid = False
         if params_changed or not self._configured:
             self._configured = False
             self._ensure_configured()
