@@ -199,6 +199,8 @@ class ServoSlave(Fmi2Slave):
         self._outputs_finite = accessors.finite_checker(tuple((v.name, v.allow_inf) for v in reals))
         self._real_outputs = accessors.getter(tuple(v.name for v in reals))
         self._inf_ok = frozenset(v.name for v in reals if v.allow_inf)
+        #: the Real outputs as last checked finite in this FMI call, while they stay so
+        self._checked: tuple | None = None
         for v in self.variables:
             setattr(self, v.name, v.start if v.causality != "output" else _zero(v.type))
         self._dirty = True  # inputs changed since the outputs were computed
@@ -451,18 +453,20 @@ class ServoSlave(Fmi2Slave):
     def _bad_output(self) -> str:
         """Message naming the first Real output that is not finite (+inf where the variable
         allows it), else ""."""
-        problem = self._nonfinite_output()
-        return f"{problem}: the step is not taken" if problem else ""
+        return self._nonfinite_output(": the step is not taken")
 
-    def _nonfinite_output(self) -> str:
-        """The first Real output that is not finite (+inf where allowed), named, else ""."""
-        total = sum(self._real_outputs(self))
+    def _nonfinite_output(self, then: str = "") -> str:
+        """The first Real output that is not finite (+inf where allowed), named (and
+        ``then``), else "". The values checked are kept for the shared block
+        (:meth:`.shared_values.SharedValues.push`: the outputs as they are now)."""
+        values = self._checked = self._real_outputs(self)
+        total = sum(values)
         if total - total == 0.0 or self._outputs_finite(self):  # the first: all finite
             return ""
         for v in self._outputs:
             x = getattr(self, v.name)
             if v.type == "Real" and not (math.isfinite(x) or (x == math.inf and v.allow_inf)):
-                return f"{v.name} = {x!r} is not finite"
+                return f"{v.name} = {x!r} is not finite{then}"
         return ""
 
     def item(self, name: str) -> str:
@@ -692,6 +696,7 @@ class ServoSlave(Fmi2Slave):
         for v in self.variables:
             setattr(self, v.name, _CAST[v.type](values[v.name]))
         self._inputs_valid = False
+        self._checked = None
         if params_changed or not self._configured:
             self._configured = False
             self._ensure_configured()

@@ -124,7 +124,7 @@ class SharedValues:
     >>> u = real_input("u", "an input", start=1.0, min=0.0, max=2.0)
     >>> y = output("y", "an output", initial_depends=("u",))
     >>> shared = SharedValues((u, y), True, {STEP_COMPLETE: {0: "u"}})
-    >>> slave = NS(u=1.0, y=0.5, _phase=STEP_COMPLETE, _dirty=False)
+    >>> slave = NS(u=1.0, y=0.5, _phase=STEP_COMPLETE, _dirty=False, _checked=None)
     >>> shared.push(slave, ALL)
     >>> shared.values()
     [1.0, 0.5]
@@ -177,10 +177,10 @@ class SharedValues:
                 )
             first += len(names)
         self._inputs = packers.get(INPUTS)
-        #: per combination of groups, what push writes: (pack_into, offset, values)
+        #: per combination of groups, what push writes: (group, pack_into, offset, values)
         self._pushers = [
             tuple(
-                (packers[g][0].pack_into, packers[g][1], packers[g][2])
+                (g, packers[g][0].pack_into, packers[g][1], packers[g][2])
                 for g in (INPUTS, OUTPUTS, PARAMETERS)
                 if groups & g and g in packers
             )
@@ -214,7 +214,8 @@ class SharedValues:
 
         Parameters
         ----------
-        slave : the slave instance (``_phase``, ``_dirty`` and the variables' attributes)
+        slave : the slave instance (``_phase``, ``_dirty``, the variables' attributes, and
+            ``_checked``: its Real outputs as it checked them during the call, or None)
         groups : :data:`INPUTS`, :data:`OUTPUTS`, :data:`PARAMETERS`, or'ed
 
         Returns
@@ -222,9 +223,13 @@ class SharedValues:
         None
         """
         try:
-            buffer = self.buffer
-            for pack_into, offset, values in self._pushers[groups]:
-                pack_into(buffer, offset, *values(slave))
+            buffer, checked = self.buffer, slave._checked
+            slave._checked = None
+            for group, pack_into, offset, values in self._pushers[groups]:
+                if group == OUTPUTS and checked is not None:  # the outputs, just checked
+                    pack_into(buffer, offset, *checked)
+                else:
+                    pack_into(buffer, offset, *values(slave))
             ints = self._ints
             ints[_DIRTY] = 1 if slave._dirty else 0
             ints[_PHASE] = self._codes.get(slave._phase, -1)

@@ -245,6 +245,8 @@ public:
         }
         pMessages_ = PyObject_CallMethod(pInstance_, "_get_log_queue", nullptr);
         shared_.attach(pInstance_); // servofmu: the values it shares, if any
+        if (pDoStep_ == nullptr) pDoStep_ = PyUnicode_InternFromString("do_step");
+        PyErr_Clear();
     }
 
     void SetupExperiment(double startTime, std::optional<double> stop, std::optional<double> tolerance) override
@@ -294,7 +296,15 @@ public:
     {
         bool status;
         py_safe_run([this, &status, currentTime, stepSize](PyGILState_STATE gilState) {
-            auto f = PyObject_CallMethod(pInstance_, "do_step", "(dd)", currentTime, stepSize);
+            // servofmu: the method's name made once per instance, the arguments as objects
+            // (no format string parsed, no name decoded on every step)
+            PyObject* t = PyFloat_FromDouble(currentTime);
+            PyObject* h = PyFloat_FromDouble(stepSize);
+            auto f = (pDoStep_ != nullptr && t != nullptr && h != nullptr)
+                ? PyObject_CallMethodObjArgs(pInstance_, pDoStep_, t, h, nullptr)
+                : PyObject_CallMethod(pInstance_, "do_step", "(dd)", currentTime, stepSize);
+            Py_XDECREF(t);
+            Py_XDECREF(h);
             if (f == nullptr) {
                 handle_py_exception("[doStep] PyObject_CallMethod", gilState);
             }
@@ -646,6 +656,7 @@ private:
     mutable std::vector<PyObject*> strBuffer;
     mutable std::vector<PyObject*> logStrBuffer;
     mutable SharedValues shared_; // servofmu: the instance's Real values shared with the slave
+    mutable PyObject* pDoStep_{}; // servofmu: the name "do_step"
 
     std::string resourceLocation() const
     {
@@ -696,6 +707,8 @@ private:
         pInstance_ = nullptr;
         Py_XDECREF(pMessages_);
         pMessages_ = nullptr;
+        Py_XDECREF(pDoStep_);
+        pDoStep_ = nullptr;
     }
 
     // servofmu: an error status for a host's mistake, raised with the GIL released
