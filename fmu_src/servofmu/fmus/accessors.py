@@ -10,6 +10,17 @@ import functools
 import math
 
 
+def _defined(source: str, names, **constants):
+    """The one function ``source`` defines, compiled with ``constants`` as its globals, after
+    checking that every name it is built from is an identifier (nothing else reaches exec)."""
+    if not all(n.isidentifier() for n in names):
+        raise ValueError(f"names must be identifiers: {names}")
+    namespace = dict(constants)
+    exec(source, namespace)  # the names checked above
+    (function,) = (v for k, v in namespace.items() if k not in constants and k != "__builtins__")
+    return function
+
+
 @functools.cache
 def copier(pairs: tuple[tuple[str, str], ...]):
     """A function ``copy(slave, record)`` doing ``slave.<name> = record.<field>`` for each
@@ -35,12 +46,8 @@ def copier(pairs: tuple[tuple[str, str], ...]):
     >>> slave.stiffness
     2.5
     """
-    if not all(n.isidentifier() and f.isidentifier() for n, f in pairs):
-        raise ValueError(f"output names and fields must be identifiers: {pairs}")
     body = "".join(f"    slave.{n} = record.{f}\n" for n, f in pairs) or "    pass\n"
-    namespace = {}
-    exec(f"def copy(slave, record):\n{body}", namespace)  # names checked above
-    return namespace["copy"]
+    return _defined(f"def copy(slave, record):\n{body}", [x for pair in pairs for x in pair])
 
 
 @functools.cache
@@ -65,12 +72,10 @@ def setter(names: tuple[str, ...]):
     >>> slave.a, slave.b
     (1.0, 2.0)
     """
-    if not names or not all(n.isidentifier() for n in names):
-        raise ValueError(f"names must be identifiers: {names}")
-    namespace = {}
+    if not names:
+        raise ValueError("no names to assign")
     targets = ", ".join(f"slave.{n}" for n in names)
-    exec(f"def assign(slave, values):\n    {targets}, = values\n", namespace)  # names checked
-    return namespace["assign"]
+    return _defined(f"def assign(slave, values):\n    {targets}, = values\n", names)
 
 
 @functools.cache
@@ -92,12 +97,8 @@ def getter(names: tuple[str, ...]):
     >>> getter(("b", "a"))(NS(a=1.0, b=2.0))
     (2.0, 1.0)
     """
-    if not all(n.isidentifier() for n in names):
-        raise ValueError(f"names must be identifiers: {names}")
-    namespace = {}
     values = "".join(f"slave.{n}, " for n in names)
-    exec(f"def values(slave):\n    return ({values})\n", namespace)  # names checked
-    return namespace["values"]
+    return _defined(f"def values(slave):\n    return ({values})\n", names)
 
 
 @functools.cache
@@ -121,16 +122,12 @@ def range_checker(checks: tuple[tuple[str, float, float], ...]):
     >>> ok(NS(temperature=293.15)), ok(NS(temperature=float("nan")))
     (True, False)
     """
-    if not all(name.isidentifier() for name, _, _ in checks):
-        raise ValueError(f"input names must be identifiers: {checks}")
-    namespace = {}
-    tests = [f"lo{i} <= slave.{name} <= hi{i}" for i, (name, _, _) in enumerate(checks)]
+    tests = " and ".join(f"lo{i} <= slave.{n} <= hi{i}" for i, (n, _, _) in enumerate(checks))
+    bounds = {}
     for i, (_, lo, hi) in enumerate(checks):
-        namespace[f"lo{i}"], namespace[f"hi{i}"] = lo, hi
-    exec(
-        f"def ok(slave):\n    return {' and '.join(tests) or 'True'}\n", namespace
-    )  # names checked
-    return namespace["ok"]
+        bounds[f"lo{i}"], bounds[f"hi{i}"] = lo, hi
+    source = f"def ok(slave):\n    return {tests or 'True'}\n"
+    return _defined(source, [n for n, _, _ in checks], **bounds)
 
 
 @functools.cache
@@ -154,11 +151,6 @@ def finite_checker(outputs: tuple[tuple[str, bool], ...]):
     >>> ok(NS(stiffness=math.inf, deflection=0.0)), ok(NS(stiffness=1.0, deflection=math.inf))
     (True, False)
     """
-    if not all(name.isidentifier() for name, _ in outputs):
-        raise ValueError(f"output names must be identifiers: {outputs}")
-    tests = [f"-inf < slave.{n} {'<=' if inf else '<'} inf" for n, inf in outputs]
-    namespace = {"inf": math.inf}
-    exec(  # names checked above
-        f"def ok(slave):\n    return {' and '.join(tests) or 'True'}\n", namespace
-    )
-    return namespace["ok"]
+    tests = " and ".join(f"-inf < slave.{n} {'<=' if inf else '<'} inf" for n, inf in outputs)
+    source = f"def ok(slave):\n    return {tests or 'True'}\n"
+    return _defined(source, [n for n, _ in outputs], inf=math.inf)

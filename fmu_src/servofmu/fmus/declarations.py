@@ -198,19 +198,9 @@ def real_parameter(
     >>> p.causality, p.variability, p.source
     ('parameter', None, 'assumed')
     """
-    return Var(
-        name=name,
-        type="Real",
-        causality="parameter",
-        description=description,
-        start=start,
-        unit=unit,
-        display_unit=display_unit,
-        min=min,
-        max=max,
-        source=source,
-        **kw,
-    )
+    field = real_input(name, description, start=start, unit=unit, display_unit=display_unit,
+                       min=min, max=max, source=source, **kw)  # fmt: skip
+    return dataclasses.replace(field, causality="parameter")
 
 
 def output(
