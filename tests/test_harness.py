@@ -520,8 +520,10 @@ def test_cli_internal_error_is_one_line_with_the_traceback_in_a_log(monkeypatch,
     assert cli.main(["host-env"]) == 3
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "RuntimeError: something unforeseen" in err
-    log = Path(tempfile.gettempdir()) / "servofmu-error.log"
+    log = Path(err.split("traceback in ", 1)[1].split(";", 1)[0])  # a new file of this run
+    assert log.parent == Path(tempfile.gettempdir()) and log.name.startswith("servofmu-error")
     assert "Traceback" in log.read_text() and "broken" in log.read_text()
+    log.unlink()
     with pytest.raises(RuntimeError):
         cli.main(["--debug", "host-env"])
 
