@@ -120,7 +120,7 @@ def _bearing_curve() -> Curve:
         celsius,
         (
             ("running torque at 10 °/s (yu2017, default)", torque[:, 0]),
-            ("breakaway torque", torque[:, 1]),
+            ("breakaway torque (a lower bound where breakaway_lower_bound is set)", torque[:, 1]),
             ("running torque, friction_model skf2004", torque[:, 2]),
             ("running torque, friction_model ehl_per_contact", torque[:, 4]),
         ),
@@ -131,10 +131,11 @@ def _bearing_curve() -> Curve:
         "skf2004 and ehl_per_contact see the bearings' loads: once the preload is lost they "
         "fall below 0.01 N·mm (the axis' end), and SKF's replenishment factor cuts its rolling "
         "torque as the base oil thickens. Outside the range of the lubricant's data "
-        "(lubricant_minimum_temperature … lubricant_maximum_temperature; the default Krytox "
-        "143AA: −40…+60 °C, Yu's) the output outside_lubricant_range is set, and below its "
-        "flow limit (the default's −40 °C) the viscosity is held at its value there: the "
-        "torque there follows the fits and the preload only. "
+        "(lubricant_data_minimum_temperature … lubricant_maximum_temperature; the default "
+        "Krytox 143AA: −40…+60 °C, Yu's) the output outside_lubricant_range is set and the "
+        "viscosity law is extrapolated (the default has no published flow limit, "
+        "lubricant_minimum_temperature 0; below one, lubricant_below_flow_limit holds or "
+        "extrapolates). "
         + (
             "The start values are this build's preset (see the parameters' provenance)."
             if _build_start("BearingFriction")

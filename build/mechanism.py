@@ -62,11 +62,9 @@ CHAMBER_AIR_SPEED = (
     "assumed: forced circulation in the work space of a climatic chamber, 1 m/s (as for "
     "Yu's gimbal, data/thermal.toml)",
 )
-#: Bearing parameters a variant may bind in a mechanism's build: the lubricant and the grease
+#: Bearing parameters a variant may bind in a mechanism's build: the lubricant with its grease
 #: term (a lubricant's datasheet calibration); anything else of the pair is the mechanism's.
-LUBRICANT_PARAMETERS = frozenset(
-    (*LUBRICANT_FIELDS, "grease_f0", "grease_starting_ratio", "grease_reference_speed")
-)
+LUBRICANT_PARAMETERS = frozenset(LUBRICANT_FIELDS)
 
 
 @dataclass(frozen=True)

@@ -34,6 +34,7 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import write_text, written
 from servofmu.physics._checks import suggest
 
 from .errors import ArgumentError, HarnessError, Interrupted, ParameterError
@@ -74,19 +75,30 @@ class RunResult:
 
     def to_csv(self, path) -> Path:
         """Write the results as CSV in the FMUs' SI units, headers ``name [unit]``
-        (:func:`~.units.read_results` reads it back by name)."""
+        (:func:`~.units.read_results` reads it back by name), whole or not at all
+        (:func:`servofmu.files.written`). A run that ended early (failed or interrupted) ends
+        with the line ``# incomplete: …`` saying where and why: the rows after it were not
+        computed."""
         path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        np.savetxt(
-            path,
-            self.data.view((float, len(self.names)))
-            if len(self.data)
-            else np.empty((0, len(self.names))),
-            delimiter=",",
-            header=",".join(header(n, self.scale(n)) for n in self.names),
-            comments="",
-            fmt="%.12g",
-        )
+        footer = ""
+        if self.failed:
+            end = f"t = {self.data['time'][-1]:.12g} s" if len(self.data) else "no row"
+            why = " ".join(self.message.split())
+            footer = f"incomplete: the run ended at {end}, before its stop time: {why}"
+        with written(path) as part:
+            np.savetxt(
+                part,
+                self.data.view((float, len(self.names)))
+                if len(self.data)
+                else np.empty((0, len(self.names))),
+                delimiter=",",
+                header=",".join(header(n, self.scale(n)) for n in self.names),
+                comments="",
+                fmt="%.12g",
+            )
+            if footer:
+                with part.open("a") as fh:
+                    fh.write(f"# {footer}\n")
         return path
 
     def plot(self, path, names, title: str = "") -> Path:
@@ -98,7 +110,6 @@ class RunResult:
         import matplotlib.pyplot as plt
 
         path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
         fig, axes = plt.subplots(
             len(names), 1, sharex=True, figsize=(7, 1.8 + 1.6 * len(names)), squeeze=False
         )
@@ -113,7 +124,8 @@ class RunResult:
         axes[-1, 0].set_xlabel("time [s]")
         fig.suptitle(title or self.system, fontsize=10)
         fig.tight_layout()
-        fig.savefig(path, dpi=100)
+        with written(path) as part:
+            fig.savefig(part, dpi=100)
         plt.close(fig)
         return path
 
@@ -734,8 +746,7 @@ class _Cosimulation:
         )
         where = ""
         if self.settings.out_dir is not None:
-            log_file = Path(self.settings.out_dir) / "failure.log"
-            log_file.write_text(details + "\n")
+            log_file = write_text(Path(self.settings.out_dir) / "failure.log", details + "\n")
             where = f"; the FMUs' log in {log_file}"
         if res.csv and len(res.data):
             where += f"; results up to t = {res.data['time'][-1]:.6g} s in {res.csv}"

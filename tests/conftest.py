@@ -1,7 +1,16 @@
 import pytest
+from hypothesis import settings
 
 from servofmu.physics import catalog
 from servofmu.physics.bearing import BearingPair
+
+# Property tests run derandomized (a fixed sequence of examples: a CI run is reproducible and
+# finds the same cases on every machine); `pytest --hypothesis-profile=fuzz` draws new random
+# examples and keeps the failures it finds in .hypothesis/ for local fuzzing. A counterexample
+# found either way becomes an @example of its test.
+settings.register_profile("ci", derandomize=True, database=None, print_blob=True)
+settings.register_profile("fuzz", derandomize=False, print_blob=True)
+settings.load_profile("ci")
 
 
 @pytest.fixture(scope="session")

@@ -260,19 +260,22 @@ def test_the_fmu_numbers_of_a_catalogue_lubricant_give_its_model():
 
 
 def test_the_range_of_each_lubricant():
-    """Lower end: the pour point (or minimum_temperature), or the lowest point if lower; upper
-    end: maximum_temperature, else the highest point (°C from the data files, by hand)."""
+    """The range of the data: from the coldest viscosity point (or data_minimum_temperature)
+    to maximum_temperature, else the highest point; the flow limit apart: the pour point, else
+    the maker's lower operating temperature, else none (°C from the data files, by hand). A
+    data end is not a flow limit."""
     expected = {
-        "pennzane_2000": (-55, 100),  # pour point −55 °C; points −40, 40, 100 °C
-        "xc_5606j": (-64, 100),  # pour point −64 °C; points −54 … 100 °C
-        "krytox_143aa": (-40, 60),  # Yu's chamber range, no published point
-        "krytox_gpl_104": (-51, 159),  # the maker's operating range (a transcription)
-        "krytox_gpl_105": (-36, 204),
-        "iso_vg32": (40, 100),  # no pour point: its two points
+        "pennzane_2000": (-40, 100, -55),  # points −40, 40, 100 °C; pour point −55 °C
+        "xc_5606j": (-54, 100, -64),  # points −54 … 100 °C; pour point −64 °C
+        "krytox_143aa": (-40, 60, None),  # Yu's chamber range; no published flow limit
+        "krytox_gpl_104": (20, 159, -51),  # points 20, 40, 100 °C; the maker's −51…159 °C
+        "krytox_gpl_105": (20, 204, -36),
+        "iso_vg32": (40, 100, None),  # its two points, no pour point
     }
-    for key, (lo, hi) in expected.items():
+    for key, (lo, hi, flow) in expected.items():
         model = catalog.lubricant(key)
         assert (model.lower_limit, model.upper_limit) == pytest.approx((lo + 273.15, hi + 273.15))
+        assert model.flow_limit == (0.0 if flow is None else pytest.approx(flow + 273.15)), key
 
 
 def test_lubricant_records_are_si():

@@ -41,11 +41,12 @@ def test_every_choice_is_a_structural_choice_with_named_items(fmus):
     choices = {p.name for p in PARAMETERS if p.choices}
     assert choices == {
         "lubrication", "arrangement", "preload_method", "loop_model", "loop_reading",
-        "friction_model",
+        "friction_model", "lubricant_below_flow_limit",
     }  # fmt: skip
     assert set(items) == choices | {"temperature_mode"}  # the FMU's own choice of inputs
     assert list(items["temperature_mode"]) == ["uniform", "housing_shaft", "parts"]
     assert list(items["lubrication"]) == ["grease", "solid"]
+    assert list(items["lubricant_below_flow_limit"]) == ["hold", "extrapolate"]
     assert list(items["arrangement"]) == ["face_to_face", "back_to_back", "tandem"]
     assert list(items["preload_method"]) == ["shim", "force", "spring"]
     assert items["loop_model"]["yoke"] == parameter("loop_model").item("yoke") == 2
@@ -53,7 +54,8 @@ def test_every_choice_is_a_structural_choice_with_named_items(fmus):
     assert _items(fmus["ServoController"]) == {"mode": {"position": 1, "speed": 2}}
     actuator = _items(fmus["ActuatorStiffness"])
     assert set(actuator) == {
-        f"support_{c}" for c in choices - {"lubrication", "friction_model"}
+        f"support_{c}"
+        for c in choices - {"lubrication", "friction_model", "lubricant_below_flow_limit"}
     } | {"temperature_mode"}
     for path in fmus.values():  # no String variable is left
         if path.suffix == ".fmu":

@@ -31,8 +31,11 @@ def ssp(fmus):
 
 def _catalogue(tmp_path, key: str) -> Path:
     path = tmp_path / "mine.toml"
-    q = '{ value = 71.7, unit = "GPa", kind = "handbook", ref = "ASM" }'
-    path.write_text(f'[materials."{key}"]\nname = "x"\nyoungs_modulus = {q}\n')
+    q = '{{ value = {}, unit = "{}", kind = "handbook", ref = "ASM" }}'.format
+    path.write_text(
+        f'[materials."{key}"]\nname = "x"\nyoungs_modulus = {q(71.7, "GPa")}\n'
+        f"poisson_ratio = {q(0.33, '-')}\nexpansion = {q(23.6e-6, '1/K')}\n"
+    )
     return path
 
 
@@ -83,7 +86,7 @@ def test_internal_errors_go_to_a_fresh_private_log(tmp_path, monkeypatch, capsys
     monkeypatch.setattr(cli, "_host_env", boom)
     logs = []
     for _ in range(2):
-        assert cli.main(["host-env"]) == 3
+        assert cli.main(["host-env"]) == cli.INTERNAL_ERROR
         err = capsys.readouterr().err
         logs.append(Path(re.search(r"traceback in (\S+);", err).group(1)))
     assert victim.read_text() == "keep me"

@@ -67,11 +67,34 @@ def test_datasheet_point_and_base_oil():
     assert p.temperature == pytest.approx(233.15)
     assert (p.starting_torque, p.running_torque) == (pytest.approx(0.099), pytest.approx(0.050))
     assert "80-8136B-01" in p.source("running_torque") or "same TDS" in p.source("running_torque")
-    nu = gt.base_oil_viscosity("molykote_g1074")
+    nu = gt.base_oil_viscosity("molykote_g1074")  # its lubricants.toml entry
     assert float(nu.kinematic_viscosity(373.15)) == pytest.approx(8.5e-6, rel=1e-9)
     assert gt.grease_torque_points("no_such_grease") == []
     with pytest.raises(ValueError, match="base-oil"):
         gt.base_oil_viscosity("no_such_grease")
+    with pytest.raises(ValueError, match="dry film"):
+        gt.base_oil_viscosity("mos2_film")
+
+
+def test_every_grease_with_torque_points_is_a_catalogue_lubricant():
+    # its base oil's viscosity (the term's ν(T)) has one place: data/lubricants.toml
+    greases = catalog._table("grease_torques")["greases"]
+    assert set(greases) <= set(catalog.keys("lubricants"))
+
+
+def test_the_lubricant_term_is_the_fit_on_its_points_by_hand():
+    """One JIS K 2220 point of G-1074 at −40 °C: f0 = M_run/M0(f0 = 1) with Palmgren's M0 at
+    the base oil's ν(−40 °C) (ASTM D341 through 53 and 8.5 cSt), 1 r/min and dm = 33.5 mm;
+    ks = 99/50. Both calibrated: the term reproduces the point exactly."""
+    assert len(gt.grease_torque_points("molykote_g1074")) == 1
+    nu = float(gt.base_oil_viscosity("molykote_g1074").kinematic_viscosity(233.15)) / 1e-6
+    m0 = 1e-7 * (nu * 1.0) ** (2 / 3) * 33.5**3 * 1e-3  # N·m at f0 = 1
+    t = gt.lubricant_term("molykote_g1074")
+    assert t.f0 == pytest.approx(0.050 / m0, rel=1e-12)
+    assert t.starting_ratio == pytest.approx(99 / 50, rel=1e-12)
+    assert t.reference_speed == pytest.approx(W1)
+    assert dict(t.provenance)["starting_ratio"].startswith("calibrated:")
+    assert gt.lubricant_term("krytox_143aa") is None
 
 
 def test_every_data_value_has_provenance():
@@ -98,4 +121,6 @@ def test_bad_input_names_the_variable():
     with pytest.raises(ValueError, match="running_torque"):
         gt.grease_factor(-1.0, 1e-3, W1, 0.03)
     with pytest.raises(ValueError, match="starting_ratio"):
-        gt.GreaseTorqueTerm(f0=1.0, starting_ratio=0.0, reference_speed=W1)
+        gt.GreaseTorqueTerm(f0=1.0, starting_ratio=-1.0, reference_speed=W1)
+    with pytest.raises(ValueError, match="f0 > 0 or starting_ratio > 0"):
+        gt.GreaseTorqueTerm(f0=0.0, starting_ratio=0.0, reference_speed=W1)

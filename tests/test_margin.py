@@ -16,6 +16,7 @@ import pytest
 from servofmu.cli import main
 from servofmu.margin import (
     CATEGORIES,
+    MarginResult,
     ecss_factors,
     example_input,
     load_inputs,
@@ -24,7 +25,8 @@ from servofmu.margin import (
     torque_margin,
 )
 from servofmu.margin.inputs import Resistance
-from servofmu.margin.study import margin_terms
+from servofmu.margin.standard import motorisation_ratio
+from servofmu.margin.study import margin_terms, row_flags, row_verdict
 from servofmu.physics.bearing import BearingModel, operating_outputs
 from servofmu.physics.bearing_parameters import pair_from_parameters
 
@@ -88,6 +90,8 @@ def test_a_case_computed_by_hand():
     assert t["factored_sum"][0] == pytest.approx(10.49 * mN, rel=1e-12)
     assert t["minimum"][0] == pytest.approx(22.48 * mN, rel=1e-12)
     assert t["margin"][0] == pytest.approx(0.112099644128, rel=1e-10)
+    # MR = (25 − 1.25 × 0.8 − 0.5) / 10.49 = 23.5 / 10.49 ≥ 2 (met: margin ≥ 0 with it)
+    assert t["ecss_ratio"][0] == pytest.approx(23.5 / 10.49, rel=1e-12)
     # the same through the two public functions
     assert minimum_actuation_torque(10.49 * mN, 0.8 * mN, 0.5 * mN, ecss_factors()) == (
         pytest.approx(22.48 * mN, rel=1e-12)
@@ -103,6 +107,56 @@ def test_a_case_computed_by_hand():
 def test_the_margin_is_nan_without_a_state_and_infinite_without_resistance():
     assert math.isnan(torque_margin(1.0, math.nan))
     assert torque_margin(1.0, 0.0) == math.inf
+    assert motorisation_ratio(1.0, 0.0, 0.0, 0.0, ecss_factors()) == math.inf
+
+
+def test_the_ratio_and_the_margin_meet_the_rule_at_the_same_point():
+    """T = T_min exactly: margin 0 and MR = m = 2; 10 % more T: margin +0.1 while MR grows by
+    0.1·T/Σu·R (the ratio leaves T_D and T_L out)."""
+    f = ecss_factors()
+    total, t_d, t_l = 10.0e-3, 2.0e-3, 1.0e-3
+    t_min = minimum_actuation_torque(total, t_d, t_l, f)
+    assert torque_margin(t_min, t_min) == 0.0
+    assert motorisation_ratio(t_min, total, t_d, t_l, f) == pytest.approx(2.0, rel=1e-12)
+    assert torque_margin(1.1 * t_min, t_min) == pytest.approx(0.1, rel=1e-12)
+    assert motorisation_ratio(1.1 * t_min, total, t_d, t_l, f) == pytest.approx(
+        2.0 + 0.1 * t_min / total, rel=1e-12
+    )
+
+
+@pytest.mark.parametrize(
+    "row, flags, verdict",
+    [
+        ({"case": "run", "margin": 0.5}, "", "met"),
+        ({"case": "run", "margin": -0.01}, "", "not met"),
+        ({"case": "run", "margin": math.nan}, "", "not met"),  # no bearing state
+        ({"case": "run", "margin": 0.5, "locked": True}, "L", "not verified"),
+        ({"case": "run", "margin": 0.5, "overloaded": True}, "O", "not verified"),
+        ({"case": "run", "margin": 0.5, "outside_lubricant_range": True}, "X", "not verified"),
+        ({"case": "run", "margin": 0.5, "table_extrapolated": True}, "T", "not verified"),
+        ({"case": "start", "margin": 0.5, "breakaway_lower_bound": True}, "B", "not verified"),
+        ({"case": "run", "margin": 0.5, "breakaway_lower_bound": True}, "", "met"),
+        ({"case": "run", "margin": 0.5, "unloaded": True, "max_contact_pressure": 0.0}, "U",
+         "not verified"),
+        ({"case": "run", "margin": 0.5, "unloaded": True, "max_contact_pressure": 8e8}, "",
+         "met"),  # one bearing carries the external load: the torque model holds
+        ({"case": "run", "margin": -0.5, "locked": True}, "L", "not met"),
+    ],
+)  # fmt: skip
+def test_a_row_is_met_not_met_or_not_verified(row, flags, verdict):
+    assert row_flags(row) == flags
+    assert row_verdict(row["margin"], row_flags(row)) == verdict
+
+
+def test_the_study_exits_by_its_rows_verdicts():
+    inputs = load_inputs(example_input())
+    result = MarginResult(inputs)
+    result.steady = [{"verdict": "met"}, {"verdict": "met"}]
+    assert (result.verdict, result.exit_code, result.passed) == ("met", 0, True)
+    result.draws = [{"verdict": "not verified"}]
+    assert (result.verdict, result.exit_code, result.passed) == ("not verified", 3, False)
+    result.transient = [{"verdict": "not met"}]
+    assert (result.verdict, result.exit_code) == ("not met", 1)
 
 
 # ------------------------------------------------------------------------------ the bearing
@@ -202,6 +256,12 @@ def test_the_command_applies_the_rule_to_the_librarys_torques(tmp_path, capsys):
         assert float(r["minimum actuation torque T_min [N.mm]"]) == pytest.approx(t_min, 1e-9)
         assert float(r["actuation torque T [N.mm]"]) == pytest.approx(25.0, rel=1e-12)
         assert float(r["margin T/T_min-1 [-]"]) == pytest.approx(25.0 / t_min - 1, rel=1e-9)
+        mr = (25.0 - 1.25 * 1.0 - 0.5) / (3 * bearing + 1.5 * 2.0)
+        assert float(r[MR]) == pytest.approx(mr, rel=1e-9)
+        # Krytox 143AA has no published starting torque: every start row is not verified
+        assert (r["verdict"], r["flags"]) == (
+            ("not verified", "B") if r["case"] == "start" else ("met", "")
+        )
     # the bearing torque is the library's, at these temperatures and the speed
     params = load_inputs(_write(tmp_path)).parameters["as given"]
     lib = operating_outputs(pair_from_parameters(params), np.array([253.15, 293.15]),
@@ -210,7 +270,7 @@ def test_the_command_applies_the_rule_to_the_librarys_torques(tmp_path, capsys):
     run_ = [float(r["bearing torque [N.mm]"]) for r in rows if r["case"] == "run"]
     np.testing.assert_allclose(start, lib.breakaway_torque * 1e3, rtol=1e-9)
     np.testing.assert_allclose(run_, lib.running_torque * 1e3, rtol=1e-9)
-    assert code == (0 if min(float(r["margin T/T_min-1 [-]"]) for r in rows) >= 0 else 1)
+    assert code == 3 and "NOT VERIFIED" in text
     assert "worst: margin" in text and (out / "margin.png").stat().st_size > 10000
 
 
@@ -242,12 +302,6 @@ BAD = {
     "missing basis": (_bad(SMALL, 'basis = "measured"\n', ""), "torques[0].basis"),
     "negative current": (_bad(SMALL, "value = 0.5, unit = \"A\"", "value = -0.5, unit = \"A\""),
                          "motor.current_limit"),
-    "table short of the range": (
-        _bad(SMALL, 'torque = { value = 2.0, unit = "N.mm" }',
-             'temperature = { values = [0, 60], unit = "degC" }\n'
-             'torque = { values = [2, 1], unit = "N.mm" }'),
-        "torques[0].temperature",
-    ),
     "unknown section": (SMALL + "[torque]\nname = 'x'\n", "unknown keys ['torque']"),
     "bad mechanism parameter": (
         _bad(SMALL, 'friction_basis = "theoretical"',
@@ -277,6 +331,35 @@ def test_an_unknown_mounting_or_catalogue_exits_2(tmp_path, capsys):
     assert "missing.toml" in capsys.readouterr().err
 
 
+def test_a_table_short_of_the_range_is_held_and_its_rows_not_verified(tmp_path, capsys):
+    text = _bad(SMALL, 'torque = { value = 2.0, unit = "N.mm" }',
+                'temperature = { values = [0, 60], unit = "degC" }\n'
+                'torque = { values = [2, 1], unit = "N.mm" }')  # fmt: skip
+    out = tmp_path / "out"
+    assert main(["margin", str(_write(tmp_path, text)), "--out", str(out)]) == 3
+    for r in _csv(out / "margin.csv"):
+        cold = r["temperature [degC]"] == "-20"
+        assert (r["table_extrapolated"] == "1") == cold
+        assert ("T" in r["flags"]) == cold and r["verdict"] == (
+            "not verified" if cold or r["case"] == "start" else "met"
+        )
+        harness = float(r["harness H_A factored [N.mm]"])
+        assert harness == pytest.approx(1.5 * (2.0 if cold else 2.0 - 20 / 60), rel=1e-12)
+
+
+def test_without_temperatures_the_mountings_operating_range_is_studied(tmp_path, capsys):
+    text = SMALL.replace('[temperatures]\nvalues = { values = [-20, 20], unit = "degC" }\n', "")
+    inputs = load_inputs(_write(tmp_path, text))
+    # yu2017_gimbal declares Yu's chamber range, -40…60 °C: in steps of 10 K
+    assert inputs.temperatures == pytest.approx([233.15 + 10 * k for k in range(11)])
+    assert any("operating range mounting yu2017_gimbal declares" in n for n in inputs.notes)
+    out = tmp_path / "out"
+    assert main(["margin", str(_write(tmp_path, text)), "--mounting", "ning_space_shaft",
+                 "--out", str(out)]) == 2  # fmt: skip
+    err = capsys.readouterr().err
+    assert "temperatures: missing" in err and "ning_space_shaft" in err and not out.exists()
+
+
 def test_a_negative_margin_exits_1(tmp_path, capsys):
     text = _bad(SMALL, 'value = 0.5, unit = "A"', 'value = 0.05, unit = "A"')
     out = tmp_path / "out"
@@ -300,19 +383,29 @@ def test_factors_of_another_standard_from_the_input_file(tmp_path, capsys):
 
 
 # ------------------------------------------------------------------------------ the examples
+MR = "ECSS ratio MR=(T-1.25T_D-T_L)/sum(u.R) [-]"
+
+
 def _check_outputs(out: Path, text: str, code: int) -> None:
-    """The table, the CSVs with units, the plot, and the exit code of a margin run."""
+    """The table, the CSVs with units, the plot, and the exit code of a margin run: the
+    verdicts of its rows (every CSV), each row's verdict from its margin and flags."""
     rows = _csv(out / "margin.csv")
     header = list(rows[0])
-    assert "temperature [degC]" in header and "margin T/T_min-1 [-]" in header
-    flags = ("overloaded", "unloaded", "locked", "outside_lubricant_range")
-    assert all("[" in h for h in header if h not in ("life", "case", *flags))
+    assert "temperature [degC]" in header and "margin T/T_min-1 [-]" in header and MR in header
+    flags = ("overloaded", "unloaded", "locked", "outside_lubricant_range",
+             "breakaway_lower_bound", "table_extrapolated")  # fmt: skip
+    assert set(flags) <= set(header)
+    assert all("[" in h for h in header if h not in ("life", "case", "verdict", "flags", *flags))
     assert (out / "margin.png").stat().st_size > 20000
-    margins = [float(r["margin T/T_min-1 [-]"]) for r in rows]
     for extra in ("margin_draws.csv", "margin_transient.csv"):
         if (out / extra).exists():
-            margins += [float(r["margin T/T_min-1 [-]"]) for r in _csv(out / extra)]
-    assert code == (0 if min(margins) >= 0.0 else 1)
+            rows += _csv(out / extra)
+    for r in rows:
+        margin = float(r["margin T/T_min-1 [-]"])
+        expected = "not met" if not margin >= 0 else ("not verified" if r["flags"] else "met")
+        assert r["verdict"] == expected, r
+    verdicts = {r["verdict"] for r in rows}
+    assert code == (1 if "not met" in verdicts else 3 if "not verified" in verdicts else 0)
     assert "life" in text and "T_min [N·mm]" in text and "worst: margin" in text
 
 
@@ -322,9 +415,21 @@ def test_without_arguments_it_runs_the_documented_example(tmp_path, capsys, monk
     text = capsys.readouterr().out
     out = tmp_path / "out" / "margin"
     _check_outputs(out, text, code)
-    assert code == 0  # the example is sized to pass: its worst margin is positive
+    # every margin is positive, but Krytox 143AA has no published starting torque (every start
+    # row B), the warm rows have lost their preload (U) and 27 draws lock at -40 °C (L)
+    assert code == 3 and "NOT VERIFIED" in text
     assert "mechanism: yu2017_gimbal" in text and "ASSUMED" in text
-    assert len(_csv(out / "margin_draws.csv")) == 100 * 2 * 2 * 11
+    assert "Yu 2017 seeker gimbal" in text  # its own title
+    rows = _csv(out / "margin.csv")
+    assert min(float(r["margin T/T_min-1 [-]"]) for r in rows) > 0
+    assert all("B" in r["flags"] for r in rows if r["case"] == "start")
+    draws = _csv(out / "margin_draws.csv")
+    assert len(draws) == 100 * 2 * 2 * 11
+    cold = [r for r in draws if r["temperature [degC]"] == "-40" and r["case"] == "run"
+            and r["life"] == "EOL"]  # fmt: skip
+    assert sum(r["locked"] == "1" for r in cold) == 27
+    worst = next(line for line in text.splitlines() if line.startswith("worst:"))
+    assert "Monte-Carlo draw" in worst and "not verified" in worst and "L locked" in worst
     transient = _csv(out / "margin_transient.csv")
     assert {r["life"] for r in transient} == {"BOL", "EOL"}
     assert "housing temperature [degC]" in transient[0]
@@ -336,16 +441,44 @@ def test_the_example_user_catalogue(tmp_path, capsys):
     text = capsys.readouterr().out
     _check_outputs(out, text, code)
     assert "mechanism: my_gimbal" in text
+    # the title and the temperatures are the mechanism's, not the input file's Yu gimbal
+    assert "Yu 2017" not in text.split("input:")[0]
+    assert "Example gimbal axis" in text.split("input:")[0]
     # the catalogue's own tolerance bands ([tolerances.my_gimbal]) are drawn
     draws = _csv(out / "margin_draws.csv")
     assert draws and "no tolerance bands" not in text
-    assert code == 0
+    # at -54 °C, the cold end of its declared range, the example grease's viscosity (known at
+    # 40 and 100 °C only, extrapolated) leaves the running rows short: not met, exit 1
+    assert code == 1 and "NOT MET" in text
     # the example grease is known at 40 and 100 °C only: every colder row is marked outside
     # the lubricant's data (its viscosity extrapolated), every row from 40 °C on is not
     rows = _csv(out / "margin.csv")
+    temps = sorted({float(r["temperature [degC]"]) for r in rows})
+    assert temps[0] == -54.0 and temps[-1] == 71.0  # its declared operating range
     for r in rows:
         outside = r["outside_lubricant_range"] == "1"
         assert outside == (float(r["temperature [degC]"]) < 40.0), r
+        # the harness table of the input file covers -40…60 °C
+        assert (r["table_extrapolated"] == "1") == (not -40 <= float(r["temperature [degC]"]) <= 60)
+
+
+def test_a_row_at_minus_84_degc_is_not_met_or_not_verified(tmp_path, capsys):
+    """The documented example with a row at −84 °C: Krytox 143AA's law extrapolated far below
+    its data (X), the harness table held at its −40 °C value (T), the pair locked (L): the
+    command says so and does not exit 0."""
+    text = example_input().read_text()
+    text = text.replace("# [temperatures]\n", "[temperatures]\n").replace(
+        "# or: values = { values = [-84,", "values = { values = [-84,"
+    )
+    text = text.split("[tolerances]")[0]  # nominal parts only, no transient: quicker
+    out = tmp_path / "out"
+    code = main(["margin", str(_write(tmp_path, text)), "--out", str(out)])
+    stdout = capsys.readouterr().out
+    assert code in (1, 3) and "not verified" in stdout
+    rows = [r for r in _csv(out / "margin.csv") if r["temperature [degC]"] == "-84"]
+    assert len(rows) == 4
+    for r in rows:
+        assert r["verdict"] != "met" and {"X", "T"} <= set(r["flags"]), r
 
 
 def test_a_torque_speed_curve_a_temperature_coefficient_and_drawn_bands(tmp_path):

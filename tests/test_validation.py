@@ -139,10 +139,10 @@ def test_cli_runs_the_report(tmp_path, capsys):
     assert cli.main(["paper", "validation", "--json", "--out", str(tmp_path)]) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["paper"] == "validation"
-    # 12 + 12 rig rows, 1 second-source row, 2 SKF, 2 calibrated, 1 grease prediction; 31
-    # recorded viscosities of 13 fluid lubricants (26 ν40/ν100 less Krytox 143AA's two, derived
+    # 12 + 12 rig rows, 1 second-source row, 2 SKF, 2 calibrated, 1 grease prediction; 33
+    # recorded viscosities of 14 fluid lubricants (28 ν40/ν100 less Krytox 143AA's two, derived
     # from Yu's constants, and 7 further points), 6 of Yu's eq 18
-    assert len(data["rows"]) == 30 + 31 + 6
+    assert len(data["rows"]) == 30 + 33 + 6
 
 
 def test_the_viscosity_section_lists_every_recorded_point_within_3_percent(rep):
@@ -179,4 +179,8 @@ def test_the_viscosity_section_lists_every_recorded_point_within_3_percent(rep):
         assert row.published == pytest.approx(by_hand, rel=1e-12)
     ranges = {p.name: p for p in rep.parameters if p.name.endswith(".range")}
     assert ranges["krytox_143aa.range"].value == "-40 … 60"
-    assert ranges["pennzane_2000.range"].value == "-55 … 100"
+    assert ranges["pennzane_2000.range"].value == "-40 … 100"  # its coldest point
+    flow = {p.name: p for p in rep.parameters if p.name.endswith(".flow_limit")}
+    assert flow["pennzane_2000.flow_limit"].value == pytest.approx(-55.0)  # its pour point
+    assert "pour point" in flow["pennzane_2000.flow_limit"].provenance
+    assert flow["krytox_143aa.flow_limit"].value == "none"

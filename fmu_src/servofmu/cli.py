@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from . import __version__
+from .files import EXIT_OUTPUT, OutputError, output_folder, write_text
 from .harness.scenarios import SCENARIOS
 from .papers import PAPERS
 
@@ -366,7 +367,7 @@ def _calibrate_datasheet(args) -> int:
         )
     cal = calibrate_datasheet(args.datasheet, args.test)
     out = Path(args.out or f"out/calibration/datasheet_{args.datasheet}")
-    out.mkdir(parents=True, exist_ok=True)
+    output_folder(out)
     ssv = out / "calibrated.ssv"
     files = [out / "report.txt"]
     if cal.poor and not args.allow_poor_fit:
@@ -383,7 +384,7 @@ def _calibrate_datasheet(args) -> int:
             )
         )  # fmt: skip
     text = to_text(cal)
-    (out / "report.txt").write_text(text + "\n")
+    write_text(out / "report.txt", text + "\n")
     if args.json:
         import json
 
@@ -475,7 +476,7 @@ def _calibrate_data(args, mechanism) -> int:
         files.append(write_coefficients(cal, toml, mounting, args.data, sources))
     text = to_text(cal)
     text += f"\n\nmounting {mounting}; friction coefficients before this fit: {before}"
-    (out / "report.txt").write_text(text + "\n")
+    write_text(out / "report.txt", text + "\n")
     if args.json:
         import json
 
@@ -608,7 +609,7 @@ def _sweep_mechanism(args, mechanism) -> int:
     )
     for row in result.failed[:10]:
         print(f"  failed: {row}")
-    return 1 if result.failed and len(result.failed) == len(result.rows) else 0
+    return 1 if result.failed else 0  # a failed run is in the table, marked: not a success
 
 
 def _montecarlo(args) -> int:
@@ -631,8 +632,10 @@ def _montecarlo(args) -> int:
 
 
 def _margin(args) -> int:
-    """``servofmu margin [FILE]``: the motorisation margin (servofmu.margin); exit 1 when it is
-    negative anywhere. Ctrl-C writes the rows computed so far."""
+    """``servofmu margin [FILE]``: the motorisation margin (servofmu.margin); exit 0 when every
+    row is met, 1 when a margin is negative, 3 when none is but a row is not verified. Ctrl-C
+    writes the rows computed so far."""
+    from .harness.interrupt import protected
     from .margin import MarginResult, example_input, load_inputs, run, to_text, write_all
 
     # the whole input is read and checked before any computation (exit 2 naming the field)
@@ -642,13 +645,15 @@ def _margin(args) -> int:
     try:
         run(inputs, result)
     except KeyboardInterrupt:
-        files = write_all(result, out) if result.steady else []
+        with protected(reraise=False):  # a second signal does not cut the rows so far short
+            files = write_all(result, out) if result.steady else []
         raise KeyboardInterrupt(
             f"the rows computed so far are in {', '.join(map(str, files))}" if files else ""
         ) from None
-    files = write_all(result, out)
+    with protected():  # every file written before a signal acts
+        files = write_all(result, out)
     print(to_text(result, files))
-    return 0 if result.passed else 1
+    return result.exit_code
 
 
 class _Parser(argparse.ArgumentParser):
@@ -905,14 +910,18 @@ def build_parser() -> argparse.ArgumentParser:
     mg = sub.add_parser(
         "margin",
         help="motorisation (torque) margin of a mechanism, ECSS-E-ST-33-01C 4.7.5.3, over "
-        "temperature, a chamber transient and tolerances: table, CSV, plot; exit 1 when the "
-        "margin is negative anywhere",
+        "temperature, a chamber transient and tolerances: table, CSV, plot; a verdict per row "
+        "(met, not met, not verified); exit 1 when a margin is negative, 3 when a row is not "
+        "verified",
         description="The minimum actuation torque T_min = 2 × Σ u·R + 1.25 × T_D + T_L "
         "(ECSS-E-ST-33-01C 4.7.5.3.1, Table 4-2's uncertainty factors u) with the bearing "
-        "pair's friction from the bearing model, and the margin T / T_min − 1, at every "
-        "temperature, case (start, running), life (BOL, EOL), Monte-Carlo draw and transient "
-        "time of FILE. Without FILE: the documented example (Yu's gimbal, motor and other "
-        "torques assumed). Exit 0: margin ≥ 0 everywhere; 1: negative somewhere; 2: a bad input.",
+        "pair's friction from the bearing model, the margin T / T_min − 1 and the ratio MR = "
+        "(T − 1.25 × T_D − T_L) / Σ u·R, at every temperature (default: the mounting's declared "
+        "operating range), case (start, running), life (BOL, EOL), Monte-Carlo draw and "
+        "transient time of FILE, each row met, not met or not verified (a flag of the model "
+        "affects it). Without FILE: the documented example (Yu's gimbal, motor and other "
+        "torques assumed). Exit 0: every row met; 1: a margin negative; 3: none negative, a row "
+        "not verified; 2: a bad input.",
     )
     mg.add_argument(
         "file", nargs="?", metavar="FILE.toml",
@@ -1023,11 +1032,17 @@ def _error_log() -> Path:
     return Path(name)
 
 
+#: Exit code of an internal error (3 is ``servofmu margin``'s "some row not verified").
+INTERNAL_ERROR = 4
+
+
 def main(argv: list[str] | None = None) -> int:
-    """Exit codes: 0 done, 1 a run failed (partial results kept), 2 bad input (data,
-    arguments, system description), 3 an internal error (traceback in a private log file),
-    130 interrupted by Ctrl-C and 143 by SIGTERM (a run stops at a step boundary and keeps its
-    results either way)."""
+    """Exit codes: 0 done, 1 a run failed (partial results kept; ``margin``: a margin is
+    negative), 2 bad input (data, arguments, system description), 3 ``margin`` only: no margin
+    negative but a row not verified, 4 an internal error (traceback in a private log file),
+    74 a result could not be written (a full disk, a folder that cannot be written: the path
+    is named, and no partial file stays under its name), 130 interrupted by Ctrl-C and 143 by
+    SIGTERM (a run stops at a step boundary and keeps its results either way)."""
     from .harness.errors import (
         ArgumentError,
         HarnessError,
@@ -1053,6 +1068,9 @@ def main(argv: list[str] | None = None) -> int:
     except HarnessError as exc:
         print(f"servofmu: run failed: {exc}", file=sys.stderr)
         return 1
+    except OutputError as exc:  # a full disk, a folder that cannot be written: not bad input
+        print(f"servofmu: error: {exc}", file=sys.stderr)
+        return EXIT_OUTPUT
     except (ValueError, OSError, MissingExtra) as exc:
         print(f"servofmu: error: {exc}", file=sys.stderr)
         return 2
@@ -1065,7 +1083,7 @@ def main(argv: list[str] | None = None) -> int:
             "run again with --debug to see it here)",
             file=sys.stderr,
         )
-        return 3
+        return INTERNAL_ERROR
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -37,6 +37,7 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import save_figure, written
 from servofmu.physics.units import DEG, NMM, ZERO_CELSIUS
 
 from .. import load_system
@@ -392,15 +393,15 @@ def write_trace(path: Path, tr: Trace) -> Path:
         **{f"{f} [0/1]": v.astype(float) for f, v in tr.flags.items()},
         **{f"qs {f} [0/1]": v.astype(float) for f, v in tr.qs_flags.items()},
     }
-    path.parent.mkdir(parents=True, exist_ok=True)
-    np.savetxt(
-        path,
-        np.column_stack(list(columns.values())),
-        delimiter=",",
-        header=",".join(columns),
-        comments="",
-        fmt="%.9g",
-    )
+    with written(path) as part:
+        np.savetxt(
+            part,
+            np.column_stack(list(columns.values())),
+            delimiter=",",
+            header=",".join(columns),
+            comments="",
+            fmt="%.9g",
+        )
     return path
 
 
@@ -434,7 +435,7 @@ def plot(traces, path: Path, name: str = "") -> Path:
     )
     fig.suptitle(textwrap.fill(title, 60 * len(groups)), fontsize=10)
     fig.tight_layout()
-    fig.savefig(path)
+    save_figure(fig, path)
     plt.close(fig)
     return path
 

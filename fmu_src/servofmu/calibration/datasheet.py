@@ -2,7 +2,8 @@
 datasheet's low-temperature torque test (``servofmu calibrate --datasheet LUBRICANT``).
 
 The datasheet points are data (``physics/data/grease_torques.toml``: the test's bearing, speed
-and load, the grease's base-oil viscosities and its published starting and running torques).
+and load, and the grease's published starting and running torques; its base-oil viscosities
+are its entry of ``physics/data/lubricants.toml``).
 For each point i, Palmgren's law at f0 = 1 gives u_i = M0(ν_i, n_test, dm_test)
 (:func:`~servofmu.physics.grease_torque.grease_factor`: f0_i = M_run,i/u_i), and
 
@@ -20,11 +21,14 @@ test the law, and the report says so. Points of different tests (JIS K 2220 read
 torque after 10 min, ASTM D1478 after 60 min: not the same quantity) are not mixed: the test
 must be named when the data hold several.
 
-The result is a partial parameter set of the BearingFriction FMU: the grease term
-(``grease_f0``, ``grease_starting_ratio``, ``grease_reference_speed``) and the grease's base oil
-(``lubrication`` = grease, ``lubricant_viscosity_40``/``_100``, ``lubricant_walther_c``,
-``lubricant_density``, ``skf_film_friction``), since f0 holds with the viscosity it was
-calibrated with.
+The result is a partial parameter set of the BearingFriction FMU: the grease's lubricant preset
+(``lubrication`` = grease, its base oil's ``lubricant_viscosity_40``/``_100``,
+``lubricant_walther_c``, ``lubricant_density``, ``skf_film_friction`` and the range of its data,
+since f0 holds with the viscosity it was calibrated with) with the grease term calibrated here
+(``grease_f0``, ``grease_starting_ratio``, ``grease_reference_speed``). The same calibration is
+what the lubricant's preset carries by default
+(:func:`~servofmu.physics.grease_torque.lubricant_term`); this command reports it, and
+calibrates on one test of several.
 """
 
 from __future__ import annotations
@@ -32,27 +36,20 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..physics.friction_models import ASSUMED_DENSITY
 from ..physics.grease_torque import (
     base_oil_viscosity,
-    grease_factor,
+    fit_points,
     grease_torque_points,
     torque_test,
 )
 from ..physics.parameter_table import LUBRICANT_FIELDS, spec
-from ..physics.presets import walther_c_si
-from ..physics.rolling_friction import MU_EHL
+from ..physics.presets import lubricant_values
 from ..physics.units import CST, RPM, kelvin_to_celsius
-from ..physics.viscosity import T40, T100
 from .fit import UNREPLICATED_LIMIT
 
-#: The parameters a datasheet calibration writes, in the order of the parameter table.
-GREASE_PARAMETERS = (
-    *LUBRICANT_FIELDS,  # the grease's base oil, as a lubricant preset sets it
-    "grease_f0",
-    "grease_starting_ratio",
-    "grease_reference_speed",
-)
+#: The parameters a datasheet calibration writes, in the order of the parameter table: the
+#: grease's base oil as its lubricant preset sets it, and the grease term calibrated here.
+GREASE_PARAMETERS = LUBRICANT_FIELDS
 
 
 @dataclass
@@ -113,11 +110,6 @@ class DatasheetCalibration:
         }
 
 
-def _relative_fit(ratios: list[float]) -> float:
-    """x minimising Σ (x·r_i − 1)²: Σ r_i / Σ r_i²."""
-    return sum(ratios) / sum(r * r for r in ratios)
-
-
 def _rms(values: list[float]) -> float:
     return math.sqrt(sum(v * v for v in values) / len(values))
 
@@ -161,15 +153,9 @@ def calibrate_datasheet(lubricant: str, test: str | None = None) -> DatasheetCal
         raise ValueError(f"--test {test!r}: {lubricant!r} has points of {tests} only")
     rig = torque_test(test)
     visc = base_oil_viscosity(lubricant)
-    rows = []
-    for p in chosen:
-        nu = float(visc.kinematic_viscosity(p.temperature))
-        f0_i = grease_factor(p.running_torque, nu, rig.speed, rig.mean_diameter)
-        rows.append((p.temperature, nu, p.starting_torque, p.running_torque, f0_i))
-    f0 = _relative_fit([1.0 / r[4] for r in rows])
+    f0, ks, rows = fit_points(chosen, rig, visc)
     # the model's running torque at the test speed: f0·u_i = r_run·f0/f0_i
     model_run = [r[3] * f0 / r[4] for r in rows]
-    ks = _relative_fit([m / r[2] for m, r in zip(model_run, rows, strict=True)])
     cal = DatasheetCalibration(
         lubricant=lubricant,
         test=test,
@@ -181,65 +167,23 @@ def calibrate_datasheet(lubricant: str, test: str | None = None) -> DatasheetCal
         parameters={},
         sources={},
     )
-    cal.parameters, cal.sources = _parameters(cal, rig, visc)
+    cal.parameters, cal.sources = _parameters(cal, rig)
     cal.problems = _problems(cal)
     cal.warnings = _warnings(cal, rig)
     return cal
 
 
-def _parameters(cal: DatasheetCalibration, rig, visc) -> tuple[dict, dict]:
-    from ..physics.catalog import _table, quantity
-
-    entry = _table("grease_torques")["greases"][cal.lubricant]
-    nu40, src40 = quantity(entry["base_oil_nu40"], "base_oil_nu40")
-    nu100, src100 = quantity(entry["base_oil_nu100"], "base_oil_nu100")
-    oil_class = entry.get("oil_class", "")
+def _parameters(cal: DatasheetCalibration, rig) -> tuple[dict, dict]:
+    """The lubricant's preset (its base oil, the range of its data: a lubricant preset) with
+    the grease term calibrated here."""
+    values, sources = lubricant_values(cal.lubricant)
     where = f"calibrated: {cal.test} datasheet point(s) of {cal.lubricant} (servofmu calibrate)"
-    values = {
-        "lubrication": "grease",
-        "lubricant_viscosity_40": nu40,
-        "lubricant_viscosity_100": nu100,
-        "lubricant_walther_c": walther_c_si(float(visc.c)),
-        "lubricant_density": ASSUMED_DENSITY,
-        "skf_film_friction": MU_EHL[oil_class] if oil_class else MU_EHL["mineral"],
-        "grease_f0": cal.f0,
-        "grease_starting_ratio": cal.ks,
-        "grease_reference_speed": rig.speed,
-    }
-    sources = {
-        "lubrication": f"the grease {cal.lubricant}",
-        "lubricant_viscosity_40": f"{src40} (base oil of {cal.lubricant})",
-        "lubricant_viscosity_100": f"{src100} (base oil of {cal.lubricant})",
-        "lubricant_walther_c": "handbook: ASTM D341, c = 0.7 cSt",
-        "lubricant_density": "assumed: a hydrocarbon oil (no density in the datasheet record)",
-        "skf_film_friction": (
-            f"catalogue: SKF μEHL of {oil_class} oils" if oil_class else "assumed: mineral oil"
-        ),
+    values |= {"grease_f0": cal.f0, "grease_starting_ratio": cal.ks,
+               "grease_reference_speed": rig.speed}  # fmt: skip
+    sources |= {
         "grease_f0": where,
         "grease_starting_ratio": where,
         "grease_reference_speed": f"{rig.source('speed')} ({cal.test})",
-    }
-    # the base oil's data: its two viscosities and the calibration's test temperatures (the
-    # set reproduces the datasheet's torque there); no pour point recorded (physics/viscosity.py)
-    coldest = min(t for t, *_ in cal.points)
-    lower = min(T40, coldest)
-    values |= {
-        "lubricant_minimum_temperature": lower,
-        "lubricant_maximum_temperature": T100,
-        "lubricant_viscosity_cold": 0.0,
-        "lubricant_cold_temperature": 0.0,
-    }
-    sources |= {
-        "lubricant_minimum_temperature": (
-            f"derived: the coldest {cal.test} datasheet point of {cal.lubricant} the grease term "
-            f"was calibrated on ({kelvin_to_celsius(coldest):g} °C), below its base oil's 40 °C "
-            "viscosity (no pour point recorded)"
-            if lower < T40
-            else "derived: its lower viscosity point, 40 °C (no pour point recorded)"
-        ),
-        "lubricant_maximum_temperature": "derived: its upper viscosity point, 100 °C",
-        "lubricant_viscosity_cold": "none: two viscosities known",
-        "lubricant_cold_temperature": "none: two viscosities known",
     }
     return values, sources
 

@@ -35,16 +35,32 @@ adds to the running and the breakaway torque:
 
 The lubricant's viscosity is the ASTM D341 line through ``lubricant_viscosity_40``/``_100``, or
 Vogel's law through them and ``lubricant_viscosity_cold`` at ``lubricant_cold_temperature``
-(:mod:`servofmu.physics.viscosity`). Outside ``lubricant_minimum_temperature`` …
-``lubricant_maximum_temperature`` (the range of the lubricant's data) the output
-``outside_lubricant_range`` is set and one warning naming the temperature and the limit is
-logged each time the lubricant's temperature leaves the range; below a flow limit
-(``lubricant_minimum_temperature`` > 0) the viscosity is held at its value there, and a
-lubricant without one (0) has its ASTM D341 line extrapolated below its coldest point.
+(:mod:`servofmu.physics.viscosity`). Outside the range of the lubricant's data (from its
+coldest viscosity point or ``lubricant_data_minimum_temperature`` to
+``lubricant_maximum_temperature``) the output ``outside_lubricant_range`` is set and one
+warning naming the temperature and the limit is logged each time the lubricant's temperature
+leaves the range; the law is extrapolated there. Below the flow limit
+``lubricant_minimum_temperature`` (its pour point or lower operating temperature; 0: none
+published) no law holds: ``lubricant_below_flow_limit`` holds the viscosity at its value there
+(the default) or extrapolates the law on, and the first time the temperature goes below it a
+warning says which.
+
+The breakaway after a soak at rest adds the lubricant's cold start: ``grease_starting_ratio``
+(ks, from its published starting-torque test) times the lubricant's torque at
+``grease_reference_speed`` (:mod:`servofmu.physics.grease_torque`). Without starting data
+(ks = 0) the breakaway holds only the zero-speed limit of the viscous term, and the output
+``breakaway_lower_bound`` says that it is a lower bound.
 ``preload`` is never negative, ``axial_play`` is the gap of an
 unloaded pair, ``reverse_loaded`` says a bearing is loaded on the other flanks of its grooves
 (:func:`servofmu.physics.pair_state.preload_force`, :func:`~servofmu.physics.pair_state.axial_play`,
 :func:`~servofmu.physics.pair_state.state_flags`).
+
+The range its physics holds for: the balls on the designed flanks of their grooves
+(``contact_angle`` ≥ 0 for bearing A). A pair pulled far apart (a 473 K housing around a 173 K
+shaft: ``contact_angle`` = −0.64 rad) puts them on the other flanks, where an angular-contact
+bearing has its low shoulder and the model takes the grooves as symmetric. The angle is
+reported as computed, not clamped; ``reverse_loaded`` is set and one warning naming the angle
+is logged each time the balls go there: the torques there are not verified.
 """
 
 from __future__ import annotations
@@ -54,6 +70,8 @@ from pathlib import Path
 import servofmu
 
 servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
+
+import math  # noqa: E402
 
 from pythonfmu.enums import Fmi2Status  # noqa: E402
 
@@ -69,6 +87,7 @@ from servofmu.physics import continuation  # noqa: E402
 from servofmu.physics.bearing import BearingModel  # noqa: E402
 from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in  # noqa: E402
 from servofmu.physics.pair_state import PointState  # noqa: E402
+from servofmu.physics.parameter_table import LATER_PARAMETERS  # noqa: E402
 
 _TEMPS = TEMPERATURE_INPUTS
 _ALL = (*_TEMPS, "speed", "axial_load", "radial_load")
@@ -243,7 +262,7 @@ class BearingFriction(ServoSlave):
         _out(
             "contact_angle",
             "Operating contact angle of bearing A (negative: its balls on the other flanks of "
-            "its grooves, reverse_loaded)",
+            "its grooves, reverse_loaded: outside the range the model holds for)",
             "rad",
             "deg",
         ),
@@ -300,15 +319,15 @@ class BearingFriction(ServoSlave):
         ),
         _flag("unloaded", "Preload lost: a bearing of the pair carries no axial load (axial play)"),
         temperature_mode_parameter(),
-        *(spec_parameter(p) for p in PARAMETERS),
-        # appended after the parameters, so that earlier value references stay
+        *(spec_parameter(p) for p in PARAMETERS if p.name not in LATER_PARAMETERS),
+        # pythonfmu numbers value references in declaration order: appended variables last
         _flag(
             "outside_lubricant_range",
-            "The lubricant's temperature lies outside the range of its data (from "
-            "lubricant_minimum_temperature, or the coldest viscosity point, to "
-            "lubricant_maximum_temperature): below a flow limit the viscosity is held at its "
-            "value there, below the coldest point of a lubricant without one and above the "
-            "range the viscosity law is extrapolated",
+            "The lubricant's temperature lies outside the range of its data (from its coldest "
+            "viscosity point or lubricant_data_minimum_temperature to "
+            "lubricant_maximum_temperature): the viscosity law is extrapolated, and below the "
+            "flow limit lubricant_minimum_temperature held or extrapolated as "
+            "lubricant_below_flow_limit says",
             ("lubrication", "lubricant"),
             _TEMPS,
         ),
@@ -323,8 +342,18 @@ class BearingFriction(ServoSlave):
             "reverse_loaded",
             "A bearing's balls pushed onto the other flanks of its grooves (axial force < 0: "
             "the loop pulled apart, or a tandem set loaded against its thrust beyond it); "
-            "the model takes the grooves as symmetric there",
+            "the model takes the grooves as symmetric there, outside the range its physics "
+            "holds for (an angular-contact bearing has its low shoulder there)",
         ),
+        _flag(
+            "breakaway_lower_bound",
+            "breakaway_torque is only a lower bound: the lubricant has no published starting "
+            "torque (grease_starting_ratio = 0), so the breakaway holds the zero-speed limit of "
+            "the viscous term and not what a cold-soaked lubricant adds at rest",
+            ("lubrication", "grease", "grease_start"),
+            (),
+        ),
+        *(spec_parameter(p) for p in PARAMETERS if p.name in LATER_PARAMETERS),
     )
     _SPEED_OUTPUTS = _outputs_of(_SPEED_FIELDS, VARIABLES)  # those that move with speed alone
     _set_speed = staticmethod(ServoSlave.output_setter(_SPEED_OUTPUTS))
@@ -343,6 +372,8 @@ class BearingFriction(ServoSlave):
                 values[p.name] = p.key(values[p.name])  # the item's key
         self._point = None  # (temperatures, axial_load, radial_load) of the last evaluate
         self.model = BearingModel(pair_from_parameters(values))
+        self.breakaway_lower_bound = self.model.pair.breakaway_lower_bound
+        self._below_flow_told = False  # the warning below the flow limit: once
         # the outputs that do not move with speed: copied from the model's PointState
         self._copy_state = self.output_copier(PointState.__dataclass_fields__)
 
@@ -362,12 +393,53 @@ class BearingFriction(ServoSlave):
         temps = temperatures(self)
         point = (temps, self.axial_load, self.radial_load)
         if point != self._point:  # else only the speed changed: the speed terms alone
-            was_outside = self.outside_lubricant_range
+            was_outside, was_reversed = self.outside_lubricant_range, self.reverse_loaded
             self._copy_state(self, self.model.update(temps, self.axial_load, self.radial_load))
             self._point = point
             if self.outside_lubricant_range and not was_outside:
                 self._warn_lubricant_range(temps)
+            elif self.outside_lubricant_range and not self._below_flow_told:
+                self._check_flow_limit(temps)
+            if self.reverse_loaded and not was_reversed:
+                self._warn_reverse_loaded()
         self._set_speed(self, self.model.speed_outputs(self.speed))
+
+    def _warn_reverse_loaded(self):
+        """One warning each time a bearing's balls go onto the other flanks of its grooves."""
+        a = self.contact_angle
+        self.log(
+            f"{self.instance_name}: a bearing's balls bear on the other flanks of its grooves "
+            f"(contact_angle of bearing A = {a:.6g} rad, {math.degrees(a):.4g}°), where an "
+            "angular-contact bearing has its low shoulder; the model takes the grooves as "
+            "symmetric there, outside the range its physics holds for, so its torques are not "
+            "verified; reverse_loaded is set until the balls return",
+            status=Fmi2Status.warning,
+        )
+
+    def _check_flow_limit(self, temps):
+        """Outside the data already: the warning below the flow limit when it is crossed."""
+        t = temps if type(temps) is float else 0.5 * (temps[2] + temps[3])
+        if self.model.pair.lubricant.below_flow(t):
+            self._warn_below_flow_limit(t)
+
+    def _warn_below_flow_limit(self, t):
+        """One warning, the first time the lubricant's temperature goes below its flow limit:
+        no law holds there, and what the model does instead (the user's choice)."""
+        visc = self.model.pair.lubricant
+        self._below_flow_told = True
+        then = (
+            f"the viscosity is held at its value there ({visc.hold_temperature:.2f} K)"
+            if visc.hold_temperature
+            else "the viscosity law is extrapolated on"
+        )
+        self.log(
+            f"{self.instance_name}: the lubricant's temperature {t:.2f} K ({t - 273.15:.1f} °C) "
+            f"is below its flow limit, lubricant_minimum_temperature = {visc.flow_limit:.2f} K "
+            f"({visc.flow_limit - 273.15:.1f} °C), where no viscosity law holds; "
+            f"lubricant_below_flow_limit = {self.item('lubricant_below_flow_limit')}: {then}; "
+            "outside_lubricant_range stays set (said once)",
+            status=Fmi2Status.warning,
+        )
 
     def _warn_lubricant_range(self, temps):
         """One warning each time the lubricant's temperature leaves the range of its data."""
@@ -377,14 +449,17 @@ class BearingFriction(ServoSlave):
         limit = visc.lower_limit if below else visc.upper_limit
         if not below:
             name = "lubricant_maximum_temperature"
-        elif visc.lower_limit == self.lubricant_minimum_temperature:
-            name = "lubricant_minimum_temperature"
+        elif visc.lower_limit == self.lubricant_data_minimum_temperature:
+            name = "lubricant_data_minimum_temperature"
         else:
             name = "the coldest viscosity point"
-        if below and not visc.extrapolate_below:
-            then = "the viscosity is held at its value there"
+        if below and visc.flow_limit > 0.0:
+            then = (
+                "the viscosity law is extrapolated down to the flow limit "
+                f"lubricant_minimum_temperature = {visc.flow_limit:.2f} K"
+            )
         elif below:
-            then = "no flow limit is known, so the ASTM D341 line is extrapolated"
+            then = "no flow limit is published, so the viscosity law is extrapolated"
         else:
             then = "the viscosity law is extrapolated"
         self.log(
@@ -394,12 +469,16 @@ class BearingFriction(ServoSlave):
             "outside_lubricant_range is set until it returns",
             status=Fmi2Status.warning,
         )
+        if below and not self._below_flow_told and visc.below_flow(t):
+            self._warn_below_flow_limit(t)
 
 
-# every output is either in the model's PointState or moves with speed (compute copies those)
+# every output is in the model's PointState, moves with speed (compute copies those) or is a
+# property of the configuration (configure sets it)
 _UNCOPIED = {v.field for v in BearingFriction.VARIABLES if v.causality == "output"} - {
     *PointState.__dataclass_fields__,
     *_SPEED_FIELDS,
+    "breakaway_lower_bound",
 }
 if _UNCOPIED:
     raise TypeError(f"BearingFriction outputs without a source in compute(): {sorted(_UNCOPIED)}")

@@ -24,8 +24,11 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import read_input
+from servofmu.physics._checks import suggest
 from servofmu.physics.units import DEG, GRAM_FORCE_CM, RPM, ZERO_CELSIUS, to_si
 
+from .schema import schema_problems
 from .standard import (
     BASES,
     CATEGORIES,
@@ -127,12 +130,22 @@ class Resistance:
 
     def at(self, temperature, life: str):
         """The torque [N·m] at ``temperature`` [K] (array) at ``life`` ("EOL": its end-of-life
-        value when it has one)."""
+        value when it has one); outside the table's temperatures its end value
+        (:meth:`outside` flags those)."""
         values = self.end_of_life if (life == "EOL" and self.end_of_life) else self.torque
         t = np.asarray(temperature, dtype=float)
         if self.temperatures is None:
             return np.full(t.shape, values[0])
         return np.interp(t, self.temperatures, values)
+
+    def outside(self, temperature):
+        """True where ``temperature`` [K] (array) lies outside the table's temperatures (never
+        for a constant torque)."""
+        t = np.asarray(temperature, dtype=float)
+        if self.temperatures is None:
+            return np.zeros(t.shape, bool)
+        lo, hi = min(self.temperatures), max(self.temperatures)
+        return (t < lo - 1e-9) | (t > hi + 1e-9)
 
 
 @dataclass(frozen=True)
@@ -223,7 +236,8 @@ class _Reader:
         unknown = sorted(set(data) - set(allowed))
         if unknown:
             self.fail(
-                f"{where.rstrip('.') or 'input'}: unknown keys {unknown} (known: {sorted(allowed)})"
+                f"{where.rstrip('.') or 'input'}: unknown keys {unknown}"
+                f"{suggest(unknown[0], allowed)} (known: {sorted(allowed)})"
             )
 
     def quantity(
@@ -370,15 +384,21 @@ def read_toml(path) -> dict:
     """
     path = Path(path)
     try:
-        return tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise ValueError(f"{path}: cannot be read ({exc.strerror})") from None
+        return tomllib.loads(read_input(path, "margin input"))
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path}: not valid TOML ({exc})") from None
 
 
 # ------------------------------------------------------------------------------ sections
-def _temperatures(r: _Reader, data: Mapping) -> tuple[float, ...]:
+#: The step of the study's temperatures over the mounting's declared operating range [K].
+OPERATING_STEP = 10.0
+
+
+def _temperatures(r: _Reader, data: Mapping) -> tuple[float, ...] | None:
+    """The study's temperatures [K], or None without a [temperatures] table (then the
+    mounting's declared operating range: :func:`_operating_temperatures`)."""
+    if "temperatures" not in data:
+        return None
     t = r.table(data, "temperatures", "", required=True)
     where = "temperatures."
     r.known(t, ("from", "to", "step", "values"), where)
@@ -390,6 +410,34 @@ def _temperatures(r: _Reader, data: Mapping) -> tuple[float, ...]:
     step = r.quantity(t, "step", "temperature difference", where, positive=True)
     if None in (lo, hi, step):
         return ()
+    return _steps(r, lo, hi, step)
+
+
+def _operating_temperatures(r: _Reader, mounting: str, notes: list) -> tuple[float, ...]:
+    """The mounting's declared operating range (``operating_minimum_temperature`` and
+    ``operating_maximum_temperature`` of its catalogue entry) in steps of
+    :data:`OPERATING_STEP`; a problem when it declares none."""
+    from servofmu.physics import catalog
+
+    entry = catalog.mounting_entry(mounting)
+    names = ("operating_minimum_temperature", "operating_maximum_temperature")
+    if not all(n in entry for n in names):
+        r.fail(
+            f"temperatures: missing, and mounting {mounting!r} declares no operating range "
+            f"({', '.join(names)} in its catalogue entry): give [temperatures]"
+        )
+        return ()
+    (lo, lo_src), (hi, hi_src) = (catalog.quantity(entry[n], n) for n in names)
+    notes.append(
+        f"temperatures: the operating range mounting {mounting} declares, "
+        f"{lo - ZERO_CELSIUS:g}…{hi - ZERO_CELSIUS:g} °C in steps of {OPERATING_STEP:g} K "
+        f"({lo_src}; {hi_src})"
+    )
+    return _steps(r, lo, hi, OPERATING_STEP)
+
+
+def _steps(r: _Reader, lo: float, hi: float, step: float) -> tuple[float, ...]:
+    """lo, lo + step, … up to hi, and hi [K]."""
     if not hi >= lo:
         r.fail(
             f"temperatures.to = {hi - ZERO_CELSIUS:g} °C must be ≥ temperatures.from = "
@@ -477,7 +525,7 @@ def _merged_motor(base: Mapping, changes: Mapping) -> dict:
     return out | dict(changes)
 
 
-def _torque(r: _Reader, k: int, t, temperatures, eol_given: bool) -> Resistance | None:
+def _torque(r: _Reader, k: int, t, eol_given: bool) -> Resistance | None:
     where = f"torques[{k}]."
     if not isinstance(t, Mapping):
         r.fail(f"torques[{k}] = {t!r} must be a table ([[torques]])")
@@ -517,14 +565,6 @@ def _torque(r: _Reader, k: int, t, temperatures, eol_given: bool) -> Resistance 
             f"{where}end_of_life: an end-of-life value needs an [end_of_life] table saying "
             "where the end-of-life values come from (its source)"
         )
-    if temps is not None and values is not None and temperatures:
-        lo, hi = min(temps), max(temps)
-        if min(temperatures) < lo - 1e-9 or max(temperatures) > hi + 1e-9:
-            r.fail(
-                f"{where}temperature: the table covers {lo - ZERO_CELSIUS:g}…"
-                f"{hi - ZERO_CELSIUS:g} °C, not the study's {min(temperatures) - ZERO_CELSIUS:g}"
-                f"…{max(temperatures) - ZERO_CELSIUS:g} °C: extend it (no extrapolation)"
-            )
     if values is None or category is None:
         return None
     return Resistance(
@@ -827,6 +867,8 @@ def _parse(data, base_dir: Path, source: str, catalogs, mounting) -> MarginInput
 
     r = _Reader()
     r.known(data, SECTIONS, "")
+    for problem in schema_problems(data):  # the types of what the reader hands on
+        r.fail(problem)
     mech = r.table(data, "mechanism", "")
     r.known(
         mech,
@@ -866,7 +908,7 @@ def _parse(data, base_dir: Path, source: str, catalogs, mounting) -> MarginInput
     if not isinstance(raw_torques, list):
         r.fail("torques must be an array of tables ([[torques]])")
         raw_torques = []
-    torques = [_torque(r, k, t, temperatures, bool(eol)) for k, t in enumerate(raw_torques)]
+    torques = [_torque(r, k, t, bool(eol)) for k, t in enumerate(raw_torques)]
     factors = _factors(r, data, base_dir)
     transient = _transient(r, data)
     if r.problems:  # the mechanism is only built once the rest reads well
@@ -874,8 +916,12 @@ def _parse(data, base_dir: Path, source: str, catalogs, mounting) -> MarginInput
     notes: list[str] = []
     file_catalogs = [base_dir / str(c) for c in mech.get("catalog", [])]
     chosen, chosen_from = _choose_mounting(mounting, catalogs, mech, file_catalogs, source)
+    own = chosen_from.startswith(source)
     try:
         defaults = cat.load([*file_catalogs, *catalogs], mounting=chosen)
+        if temperatures is None:
+            temperatures = _operating_temperatures(r, chosen, notes)
+        title = str(data.get("title", "")) if own else _mechanism_title(chosen, chosen_from)
         parameters = _parameters(r, mech, eol, chosen, lives, defaults.lubricant)
         nominal = next(iter(parameters.values()), {})
         tolerances = _tolerances(r, data, chosen, nominal, notes) if nominal else None
@@ -888,14 +934,13 @@ def _parse(data, base_dir: Path, source: str, catalogs, mounting) -> MarginInput
     _check_speed_range(r, motors, speed)
     if r.problems:
         raise _Problems(r.problems)
-    title = data.get("title", "")
-    if not chosen_from.startswith(source):
+    if not own:
         notes.append(
-            f"mounting {chosen} comes from {chosen_from}: the input file's title and "
-            "its other torques and motor were written for its own mechanism"
+            f"mounting {chosen} comes from {chosen_from}: the input file's motor and other "
+            "torques were written for its own mechanism, and are applied to this one"
         )
     return MarginInputs(
-        title=str(title),
+        title=title,
         source=source,
         mounting=chosen,
         mounting_from=chosen_from,
@@ -912,6 +957,13 @@ def _parse(data, base_dir: Path, source: str, catalogs, mounting) -> MarginInput
         transient=transient,
         notes=(*notes, *([f"end of life: {eol['source']}"] if eol else [])),
     )
+
+
+def _mechanism_title(mounting: str, chosen_from: str) -> str:
+    """The title of a study run on another mechanism than its file's: that mounting's name."""
+    from servofmu.physics import catalog
+
+    return f"{catalog.mounting(mounting).name} (mounting {mounting}, from {chosen_from})"
 
 
 def _choose_mounting(mounting, catalogs, mech: Mapping, file_catalogs, source: str):

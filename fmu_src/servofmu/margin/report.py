@@ -10,11 +10,12 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import save_figure, written
 from servofmu.physics.units import DEG, NMM, ZERO_CELSIUS
 
 from .inputs import CASES
 from .standard import CATEGORIES, TERMS
-from .study import BEARING_TERMS, FLAGS, PARTS_COLUMNS, MarginResult
+from .study import BEARING_TERMS, FLAG_MEANINGS, FLAGS, PARTS_COLUMNS, MarginResult
 
 CASE_LABELS = {"start": "start (breakaway)", "run": "running"}
 SYMBOLS = {
@@ -49,6 +50,7 @@ COLUMNS = (
     ("bearing_torque", "bearing torque [N.mm]", _nmm),
     *((k, f"bearing {k.replace('_', ' ')} [N.mm]", _nmm) for k in BEARING_TERMS),
     ("preload", "preload [N]", float),
+    ("max_contact_pressure", "max contact pressure [MPa]", lambda v: v / 1e6),
     *((f, f, lambda v: int(bool(v))) for f in FLAGS),
     *(
         (f"factored_{c}", f"{c.replace('_', ' ')} {SYMBOLS[c]} factored [N.mm]", _nmm)
@@ -60,6 +62,9 @@ COLUMNS = (
     ("minimum", "minimum actuation torque T_min [N.mm]", _nmm),
     ("available", "actuation torque T [N.mm]", _nmm),
     ("margin", "margin T/T_min-1 [-]", float),
+    ("ecss_ratio", "ECSS ratio MR=(T-1.25T_D-T_L)/sum(u.R) [-]", float),
+    ("verdict", "verdict", str),
+    ("flags", "flags", str),
 )
 
 
@@ -90,12 +95,11 @@ def write_csv(rows: list[dict], path) -> Path:
     ['life,case,temperature [degC],margin T/T_min-1 [-]', 'as given,run,-40,0.25']
     """
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     keys = set().union(*(r.keys() for r in rows)) if rows else set()
     columns = [c for c in COLUMNS if c[0] in keys]
     known = {c[0] for c in COLUMNS}
     extra = sorted(keys - known)  # drawn parameters (SI)
-    with path.open("w", newline="", encoding="utf-8") as fh:
+    with written(path) as part, part.open("w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh)
         w.writerow([c[1] for c in columns] + [f"{k} [SI]" for k in extra])
         for r in rows:
@@ -112,27 +116,28 @@ def _fmt(v):
     return v
 
 
-def _flags(row) -> str:
-    return "".join(letter for f, letter in FLAGS.items() if row.get(f))
+def _key(r) -> tuple:
+    return r["life"], r["case"], round(r["temperature"], 9)
 
 
 def _draw_stats(result: MarginResult) -> dict:
-    """{(life, case, temperature): (min, P(margin < 0), n)} over the draws."""
+    """{(life, case, temperature): (the governing draw (smallest margin), P(margin < 0), n,
+    the number of draws not verified)} over the draws."""
     groups: dict = {}
     for r in result.draws:
-        groups.setdefault((r["life"], r["case"], round(r["temperature"], 9)), []).append(
-            r["margin"]
-        )
+        groups.setdefault(_key(r), []).append(r)
     out = {}
-    for key, m in groups.items():
-        a = np.asarray(m, dtype=float)
-        bad = ~(a >= 0.0)
-        out[key] = (
-            float(np.nanmin(a)) if np.isfinite(a).any() else math.nan,
-            float(bad.mean()),
-            len(a),
-        )
+    for key, rows in groups.items():
+        a = np.asarray([r["margin"] for r in rows], dtype=float)
+        worst = rows[int(np.argmin(np.where(np.isnan(a), -np.inf, a)))]
+        unverified = sum(1 for r in rows if r["verdict"] == "not verified")
+        out[key] = (worst, float((~(a >= 0.0)).mean()), len(rows), unverified)
     return out
+
+
+def _verdict_text(verdict: str, flags: str) -> str:
+    """The verdict with the flags that made a row not verified (or that a row not met has)."""
+    return f"{verdict} ({flags})" if flags else verdict
 
 
 def where(block: str, row: dict) -> str:
@@ -198,7 +203,11 @@ def to_text(result: MarginResult, files=()) -> str:
     lines = [
         f"Motorisation (torque) margin — {f.name}",
         f"  T_min = {f.motorisation:g} × Σ u·R + {f.inertial_resistance:g} × T_D + T_L; "
-        "margin = T / T_min − 1 (≥ 0 meets T ≥ T_min)",
+        "margin = T / T_min − 1 (≥ 0 meets T ≥ T_min); the same rule as a ratio: "
+        f"MR = (T − {f.inertial_resistance:g} × T_D − T_L) / Σ u·R (≥ {f.motorisation:g} meets "
+        "it)",
+        "  verdict per row: met (margin ≥ 0, nothing flagged), not met (margin < 0 or no "
+        "bearing state), not verified (margin ≥ 0 with a flag that affects the row)",
     ]
     if inp.title:
         lines.append(f"  {inp.title}")
@@ -249,41 +258,54 @@ def _table(result: MarginResult) -> list[str]:
     mc = bool(stats)
     head = (
         f"{'life':>8} {'case':>17} {'T [°C]':>7} {'bearing [N·mm]':>14} {'Σu·R [N·mm]':>12} "
-        f"{'T_min [N·mm]':>12} {'T [N·mm]':>9} {'margin [-]':>10}"
+        f"{'T_min [N·mm]':>12} {'T [N·mm]':>9} {'margin [-]':>10} {'MR [-]':>7} "
+        f"{'verdict (flags)':<20}"
     )
     if mc:
         n = next(iter(stats.values()))[2]
-        head += f" {f'min of {n} draws':>16} {'P(margin<0)':>11}"
-    lines = [head + " flags"]
+        head += (
+            f" {f'min of {n} draws':>16} {'P(margin<0)':>11} {'not verified':>12} "
+            "governing draw (flags)"
+        )
+    lines = [head]
     for r in result.steady:
         line = (
             f"{r['life']:>8} {CASE_LABELS[r['case']]:>17} "
             f"{r['temperature'] - ZERO_CELSIUS:>7.1f} {r['bearing_torque'] / NMM:>14.4g} "
             f"{r['factored_sum'] / NMM:>12.4g} {r['minimum'] / NMM:>12.4g} "
-            f"{r['available'] / NMM:>9.4g} {r['margin']:>+10.3f}"
+            f"{r['available'] / NMM:>9.4g} {r['margin']:>+10.3f} {r['ecss_ratio']:>7.3g} "
+            f"{_verdict_text(r['verdict'], r['flags']):<20}"
         )
-        if mc:
-            lo, p, _ = stats.get(
-                (r["life"], r["case"], round(r["temperature"], 9)), (math.nan, math.nan, 0)
+        if _key(r) in stats:
+            worst, p, n, unverified = stats[_key(r)]
+            line += (
+                f" {worst['margin']:>+16.3f} {p:>11.3f} {f'{unverified} of {n}':>12} "
+                f"draw {worst['draw']}: {_verdict_text(worst['verdict'], worst['flags'])}"
             )
-            line += f" {lo:>+16.3f} {p:>11.3f}"
-        lines.append(line + f" {_flags(r)}")
-    lines.append(
-        "flags: O overloaded (contact pressure above ISO 76's limit), U unloaded "
-        "(preload lost), L locked (no operating clearance), X outside the range of the "
-        "lubricant's data (its viscosity extrapolated or held: the bearing torque there is "
-        "not backed by data)"
-    )
+        lines.append(line.rstrip())
+    lines.append("flags (each puts the rows it affects in doubt: not verified, or a not met "
+                 "that may be worse):")  # fmt: skip
+    lines += [f"  {letter} {FLAG_MEANINGS[letter]}" for letter in FLAGS.values()]
     return lines
 
 
 def _worst(result: MarginResult) -> list[str]:
     block, r = result.worst
-    verdict = "met" if result.passed else "NOT MET"
     total = sum(1 for _ in result.rows())
-    bad = sum(1 for _, row in result.rows() if not row["margin"] >= 0.0)
+    counts = {v: 0 for v in ("met", "not met", "not verified")}
+    letters = dict.fromkeys(FLAGS.values(), 0)
+    for _, row in result.rows():
+        counts[row["verdict"]] += 1
+        for letter in row["flags"]:
+            letters[letter] += 1
+    flags = (
+        "flags: " + ", ".join(f"{x} {FLAG_MEANINGS[x].split(':')[0]}" for x in r["flags"])
+        if r["flags"]
+        else "no flag"
+    )
     lines = [
-        f"worst: margin {r['margin']:+.3f} — {where(block, r)}",
+        f"worst: margin {r['margin']:+.3f}, MR {r['ecss_ratio']:.3g} — {where(block, r)} — "
+        f"{r['verdict']}; {flags}",
         f"  T = {r['available'] / NMM:.4g} N·mm against T_min = {r['minimum'] / NMM:.4g} N·mm; "
         f"bearing {r['bearing_torque'] / NMM:.4g} N·mm; factored [N·mm]: "
         + ", ".join(
@@ -294,9 +316,14 @@ def _worst(result: MarginResult) -> list[str]:
             for k in TERMS
             if r[k]
         ),
-        f"T ≥ T_min (ECSS-E-ST-33-01C 4.7.5.3.2 b): {verdict} — negative margin at {bad} of "
-        f"{total} points computed",
     ]
+    flagged = ", ".join(f"{x} {n}" for x, n in letters.items() if n)
+    lines.append(
+        f"T ≥ T_min (ECSS-E-ST-33-01C 4.7.5.3.2 b): {result.verdict.upper()} — of {total} rows "
+        f"computed, {counts['met']} met, {counts['not met']} not met (negative margin or no "
+        f"state), {counts['not verified']} not verified"
+        + (f" (rows flagged: {flagged})" if flagged else "")
+    )
     return lines
 
 
@@ -362,7 +389,6 @@ def plot(result: MarginResult, path) -> Path:
     import matplotlib.pyplot as plt
 
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     transient = bool(result.transient)
     fig, axes = plt.subplots(2 if transient else 1, 1, figsize=(7.4, 8.4 if transient else 5.2))
     ax = axes[0] if transient else axes
@@ -381,6 +407,16 @@ def plot(result: MarginResult, path) -> Path:
                 ms=3,
                 label=label,
             )
+            doubt = [r for r in rows if r["verdict"] == "not verified"]
+            ax.plot(
+                [r["temperature"] - ZERO_CELSIUS for r in doubt],
+                [r["margin"] for r in doubt],
+                "o",
+                mfc="none",
+                mec="k",
+                ms=7,
+                label=None,
+            )
             draws = [r for r in result.draws if r["life"] == life and r["case"] == case]
             if draws:
                 lo, hi = _band(draws)
@@ -397,13 +433,15 @@ def plot(result: MarginResult, path) -> Path:
                     color=colours[case],
                     label=label,
                 )
+    if any(r["verdict"] == "not verified" for r in result.steady):
+        ax.plot([], [], "o", mfc="none", mec="k", ms=7, label="not verified (a flag: the table)")
     if result.draws:
         n = len({r["draw"] for r in result.draws})
         ax.fill_between(
             [], [], [], color="0.6", alpha=0.4, lw=0, label=f"range of {n} Monte-Carlo draws"
         )
     block, w = result.worst
-    text = f"worst {w['margin']:+.3f}"
+    text = f"worst {w['margin']:+.3f} ({w['verdict']}{', ' + w['flags'] if w['flags'] else ''})"
     if block == "transient":
         axes[1].plot([w["time"] / 60.0], [w["margin"]], "r*", ms=14, zorder=5, label="worst")
         axes[1].annotate(
@@ -432,7 +470,7 @@ def plot(result: MarginResult, path) -> Path:
         a.grid(True, alpha=0.3)
         a.set_ylabel("margin T / T_min − 1 [-]")
     ax.set_xlabel("temperature, uniform [°C]")
-    ax.legend(fontsize=7, loc="lower right", ncol=2)
+    ax.legend(fontsize=7, loc="upper left", ncol=2)
     title = f"{result.inputs.title or result.inputs.mounting} — {result.inputs.factors.name}"
     ax.set_title("\n".join(textwrap.wrap(title, 90)), fontsize=8)
     if transient:
@@ -464,7 +502,7 @@ def plot(result: MarginResult, path) -> Path:
         twin.set_ylabel("temperature [°C]", color="0.35")
         twin.legend(fontsize=7, loc="center right")
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save_figure(fig, path, dpi=110)
     plt.close(fig)
     return path
 

@@ -10,8 +10,10 @@ the minimum actuation torque is
 
 with T_D the inertial resistance torque of the customer's worst-case acceleration and T_L
 the deliverable output torque; the actuation torque T must be ≥ T_min. The margin reported
-here is T / T_min − 1 (≥ 0: the rule is met). Which revision the factors come from, and what
-could not be checked, is written in the data file and in :attr:`Factors.name`.
+here is T / T_min − 1 (≥ 0: the rule is met), and beside it the rule read as a ratio,
+MR = (T − 1.25·T_D − T_L) / Σ u·R (≥ m = 2: the rule is met; :func:`motorisation_ratio`).
+Which revision the factors come from, and what could not be checked, is written in the data
+file and in :attr:`Factors.name`.
 
 The kinds of resistance (:data:`CATEGORIES`) are Table 4-2's rows; :data:`TERMS` are the two
 torques the equation adds outside the factored sum.
@@ -269,6 +271,51 @@ def minimum_actuation_torque(factored_sum, inertial_resistance, deliverable, fac
         + factors.inertial_resistance * inertial_resistance
         + deliverable
     )
+
+
+def motorisation_ratio(available, factored_sum, inertial_resistance, deliverable,
+                       factors: Factors):  # fmt: skip
+    """The rule read as a ratio: MR = (T − f_D·T_D − T_L) / Σ u_k·R_k, the actuation torque
+    left for the factored resistances over their sum; ECSS-E-ST-33-01C 4.7.5.3.1 d and
+    4.7.5.3.2 b (T ≥ T_min) hold exactly when MR ≥ m (the motorisation factor, 2). +inf where
+    the sum is 0.
+
+    Beside the margin T/T_min − 1 (:func:`torque_margin`): both cross their thresholds (MR = 2,
+    margin = 0) at the same point, but the margin relates T to everything it must overcome,
+    T_D and T_L included, while MR measures how many times T covers the factored resistances
+    alone once T_D and T_L are served (the factor the rule requires, 2, is what an engineer
+    used to a "motorisation ratio" checks).
+
+    Parameters
+    ----------
+    available : float or array_like
+        T [N·m].
+    factored_sum : float or array_like
+        Σ u_k·R_k [N·m].
+    inertial_resistance, deliverable : float or array_like
+        T_D, T_L [N·m].
+    factors : Factors
+        f_D.
+
+    Returns
+    -------
+    float or ndarray
+        MR [-].
+
+    Examples
+    --------
+    >>> # (20 − 1.25 × 0.4 − 0.3) mN·m / 7.95 mN·m
+    >>> round(motorisation_ratio(20.0e-3, 7.95e-3, 0.4e-3, 0.3e-3, ecss_factors()), 6)
+    2.415094
+    """
+    left = np.asarray(available, dtype=float) - (
+        factors.inertial_resistance * np.asarray(inertial_resistance, dtype=float)
+        + np.asarray(deliverable, dtype=float)
+    )
+    total = np.asarray(factored_sum, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = np.where(total == 0.0, np.inf, left / total)
+    return float(ratio) if ratio.ndim == 0 else ratio
 
 
 def torque_margin(available, minimum):

@@ -22,7 +22,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .inputs import CASES, MarginInputs, Motor
-from .standard import CATEGORIES, Factors, factored_torque, minimum_actuation_torque, torque_margin
+from .standard import (
+    CATEGORIES,
+    Factors,
+    factored_torque,
+    minimum_actuation_torque,
+    motorisation_ratio,
+    torque_margin,
+)
 
 #: The bearing library's torque terms reported with each row [N·m].
 BEARING_TERMS = (
@@ -32,8 +39,92 @@ BEARING_TERMS = (
     "viscous_torque",
     "grease_torque",
 )
-#: The bearing's flags a margin row carries, with the letter the table shows for each.
-FLAGS = {"overloaded": "O", "unloaded": "U", "locked": "L", "outside_lubricant_range": "X"}
+#: The flags a margin row carries, with the letter the table shows for each: the bearing
+#: model's, and whether a torque table was read outside its temperatures (held at its end).
+FLAGS = {
+    "overloaded": "O",
+    "unloaded": "U",
+    "locked": "L",
+    "outside_lubricant_range": "X",
+    "breakaway_lower_bound": "B",
+    "table_extrapolated": "T",
+}
+#: What each flag says about the row's numbers.
+FLAG_MEANINGS = {
+    "O": "overloaded: a contact pressure above ISO 76's 4200 MPa, the balls dent the races",
+    "U": "unloaded: no ball carries load (preload lost, no external load): the bearing torque "
+    "is only its lubricant's drag, without the unloaded balls' skid and cage drag",
+    "L": "locked: no operating clearance left or no load equilibrium",
+    "X": "outside the range of the lubricant's data: its viscosity extrapolated, or held below "
+    "its flow limit",
+    "B": "breakaway only a lower bound: the lubricant has no published starting torque",
+    "T": "a torque table read outside its temperatures, held at its end value",
+}
+#: A row's verdict: its margin ≥ 0 and nothing flagged that affects it; a negative (or no)
+#: margin; a margin ≥ 0 that a flag puts in doubt.
+VERDICTS = ("met", "not met", "not verified")
+#: The exit code of ``servofmu margin`` for each verdict of the study (2: a bad input).
+EXIT_CODES = {"met": 0, "not met": 1, "not verified": 3}
+
+
+def row_flags(row: Mapping) -> str:
+    """The letters of the flags (:data:`FLAGS`) that affect a margin row: every one set, except
+    ``unloaded`` where a ball still carries load (one bearing of the pair carries the external
+    load: the torque model holds) and ``breakaway_lower_bound`` in a running row.
+
+    Parameters
+    ----------
+    row : mapping
+        A margin row (its flags, ``case`` and ``max_contact_pressure`` [Pa]).
+
+    Returns
+    -------
+    str
+        The letters, in the order of :data:`FLAGS`; "" when nothing affects the row.
+
+    Examples
+    --------
+    >>> row_flags({"case": "run", "unloaded": True, "max_contact_pressure": 1e9,
+    ...            "breakaway_lower_bound": True, "outside_lubricant_range": True})
+    'X'
+    >>> row_flags({"case": "start", "unloaded": True, "max_contact_pressure": 0.0,
+    ...            "breakaway_lower_bound": True})
+    'UB'
+    """
+    letters = []
+    for name, letter in FLAGS.items():
+        if not row.get(name):
+            continue
+        if name == "unloaded" and row.get("max_contact_pressure", 0.0) > 0.0:
+            continue
+        if name == "breakaway_lower_bound" and row.get("case") != "start":
+            continue
+        letters.append(letter)
+    return "".join(letters)
+
+
+def row_verdict(margin: float, flags: str) -> str:
+    """One of :data:`VERDICTS`: "not met" when the margin is negative or not a number (no
+    bearing state), else "not verified" when a flag affects the row, else "met".
+
+    Parameters
+    ----------
+    margin : float
+        T/T_min − 1 [-].
+    flags : str
+        :func:`row_flags`.
+
+    Returns
+    -------
+    str
+        The verdict.
+
+    >>> row_verdict(0.2, ""), row_verdict(0.2, "X"), row_verdict(-0.1, "X")
+    ('met', 'not verified', 'not met')
+    """
+    if not margin >= 0.0:
+        return "not met"
+    return "not verified" if flags else "met"
 
 
 def available_torque(motor: Motor, temperature, speed):
@@ -142,7 +233,9 @@ def margin_terms(
     dict
         ``factored_<category>`` for each of :data:`~.standard.CATEGORIES`,
         ``inertial_resistance`` (T_D), ``deliverable`` (T_L), ``factored_sum``,
-        ``minimum``, ``available`` [N·m] and ``margin`` [-].
+        ``minimum``, ``available`` [N·m], ``margin`` and ``ecss_ratio`` [-]
+        (:func:`~.standard.torque_margin`, :func:`~.standard.motorisation_ratio`), and
+        ``table_extrapolated`` (a table torque read outside its temperatures).
 
     Examples
     --------
@@ -177,6 +270,14 @@ def margin_terms(
     )
     out["available"] = np.broadcast_to(np.asarray(available, dtype=float), t.shape).copy()
     out["margin"] = np.asarray(torque_margin(out["available"], out["minimum"]))
+    out["ecss_ratio"] = np.asarray(
+        motorisation_ratio(out["available"], out["factored_sum"], out["inertial_resistance"],
+                           out["deliverable"], factors)
+    )  # fmt: skip
+    out["table_extrapolated"] = np.zeros(t.shape, bool)
+    for r in torques:
+        if case in r.cases:
+            out["table_extrapolated"] |= r.outside(t)
     return out
 
 
@@ -220,9 +321,22 @@ class MarginResult:
         return min(self.rows(), key=key)
 
     @property
+    def verdict(self) -> str:
+        """The study's verdict (:data:`VERDICTS`): "not met" when any row is, else "not
+        verified" when any row is, else "met"."""
+        found = {row["verdict"] for _, row in self.rows()}
+        return next((v for v in ("not met", "not verified") if v in found), "met")
+
+    @property
+    def exit_code(self) -> int:
+        """0 every row met, 1 a margin negative (or none), 3 none negative but a row not
+        verified (:data:`EXIT_CODES`)."""
+        return EXIT_CODES[self.verdict]
+
+    @property
     def passed(self) -> bool:
-        """True when every margin is a number ≥ 0."""
-        return all(row["margin"] >= 0.0 for _, row in self.rows())
+        """True when every row is met: its margin a number ≥ 0 and nothing flagged."""
+        return self.verdict == "met"
 
 
 def run(inputs: MarginInputs, result: MarginResult | None = None) -> MarginResult:
@@ -330,7 +444,8 @@ def _rows(
             "bearing_torque": bearing["bearing_torque"],
             **{k: getattr(out, k) for k in BEARING_TERMS},
             "preload": out.preload,
-            **{f: getattr(out, f) for f in FLAGS},
+            "max_contact_pressure": out.max_contact_pressure,
+            **{f: getattr(out, f) for f in FLAGS if f != "table_extrapolated"},
             **terms,
         }
         columns = {k: np.broadcast_to(np.asarray(v), np.shape(temps)) for k, v in columns.items()}
@@ -338,6 +453,8 @@ def _rows(
             row = {"life": life, "case": case, "speed": speed, "temperature": float(t)}
             row |= {key: (_scalar(v[k]) if np.ndim(v) else v) for key, v in extra.items()}
             row |= {key: _scalar(v[k]) for key, v in columns.items()}
+            row["flags"] = row_flags(row)
+            row["verdict"] = row_verdict(row["margin"], row["flags"])
             rows.append(row)
     return rows
 

@@ -35,6 +35,8 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import save_figure, written
+
 from ..physics import catalog
 from ..physics.catalog import quantity
 from ..physics.ehl_rolling import ehl_rolling_torque
@@ -305,9 +307,12 @@ def _viscosity_rows(out_dir: Path) -> tuple[list[Row], list[Parameter], list[str
                 f"{kelvin_to_celsius(model.lower_limit):g} … "
                 f"{kelvin_to_celsius(model.upper_limit):g}",
                 "degC",
-                f"{model.source('lower_limit')}; {model.source('upper_limit')}",
+                f"{model.source('lower_limit')}; {model.source('upper_limit')} (the range of "
+                "its data)",
             )
         )
+        flow = kelvin_to_celsius(model.flow_limit) if model.flow_limit else "none"
+        params.append(Parameter(f"{key}.flow_limit", flow, "degC", model.source("flow_limit")))
     rows += _yu_viscosity_rows()
     files = _viscosity_files(out_dir, table)
     return rows, params, files
@@ -344,7 +349,7 @@ def _viscosity_files(out_dir: Path, table) -> list[str]:
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     path = out_dir / "viscosity_points.csv"
-    with path.open("w", newline="") as fh:
+    with written(path) as part, part.open("w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["lubricant", "temperature [degC]", "published [cSt]", "law [cSt]",
                     "error [%]"])  # fmt: skip
@@ -382,7 +387,7 @@ def _viscosity_files(out_dir: Path, table) -> list[str]:
     ax.legend(fontsize=8)
     fig.tight_layout()
     png = out_dir / "viscosity_fits.png"
-    fig.savefig(png)
+    save_figure(fig, png)
     plt.close(fig)
     return [str(path), str(png)]
 

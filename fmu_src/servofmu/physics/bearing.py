@@ -239,7 +239,8 @@ class BearingModel:
         0.301
         """
         point = self.update(temperature, axial_load, radial_load)
-        return point_outputs(point, self.solver.speed_outputs(float(speed)))
+        speed_outputs = self.solver.speed_outputs(float(speed))
+        return point_outputs(point, speed_outputs, self.pair.breakaway_lower_bound)
 
     def speed_outputs(self, speed: float) -> tuple[float, float, float, float, float, float]:
         """(friction_torque, running_torque, sliding_torque, viscous_torque, grease_torque

@@ -250,11 +250,12 @@ def parameter_problems(p: Mapping[str, object]) -> list[str]:
         )
     if p["loop_reading"] == "printed" and not (p["housing_length"] and p["shaft_length"]):
         found.append("loop_reading = printed needs a housing and a shaft member (lengths > 0)")
-    if p["grease_f0"] > 0 and p["lubrication"] != "grease":
-        found.append(
-            f"grease_f0 = {p['grease_f0']!r} (a grease term) needs lubrication = grease (the base "
-            f"oil's viscosity), not {p['lubrication']}"
-        )
+    for name in ("grease_f0", "grease_starting_ratio"):
+        if p[name] > 0 and p["lubrication"] != "grease":
+            found.append(
+                f"{name} = {p[name]!r} (a grease term) needs lubrication = grease (the base "
+                f"oil's viscosity), not {p['lubrication']}"
+            )
     return found
 
 
@@ -262,11 +263,11 @@ def _lubricant_problems(p: Mapping[str, object]) -> list[str]:
     """The cold point and the range of the lubricant's data, each problem naming the values."""
     found = []
     lo, hi = p["lubricant_minimum_temperature"], p["lubricant_maximum_temperature"]
-    if not lo < hi:
-        found.append(
-            f"lubricant_maximum_temperature = {hi!r} K must lie above "
-            f"lubricant_minimum_temperature = {lo!r} K"
-        )
+    for name in ("lubricant_minimum_temperature", "lubricant_data_minimum_temperature"):
+        if not p[name] < hi:
+            found.append(
+                f"lubricant_maximum_temperature = {hi!r} K must lie above {name} = {p[name]!r} K"
+            )
     nu, t = p["lubricant_viscosity_cold"], p["lubricant_cold_temperature"]
     if nu != 0.0 and (not t > 0.0 or min(abs(t - T40), abs(t - T100)) < 1.0):
         found.append(
@@ -289,19 +290,20 @@ def _lubricant_problems(p: Mapping[str, object]) -> list[str]:
         found.append(
             f"{cold}lubricant_viscosity_40 = {p['lubricant_viscosity_40']!r} and "
             f"lubricant_viscosity_100 = {p['lubricant_viscosity_100']!r} m2/s with "
-            f"lubricant_minimum_temperature = {lo!r} K: {err}"
+            f"lubricant_minimum_temperature = {lo!r} K and lubricant_below_flow_limit = "
+            f"{p['lubricant_below_flow_limit']}: {err}"
         )
     return found
 
 
 def _viscosity(p: Mapping[str, object]):
     """The viscosity model of parameter set ``p`` (:func:`.viscosity.viscosity_model`): its
-    range runs from ``lubricant_minimum_temperature`` (a flow limit: pour point or minimum
-    temperature), or the coldest viscosity point if lower or when none is given (0), to
-    ``lubricant_maximum_temperature``; without a flow limit the ASTM D341 line is extrapolated
-    below its coldest point (:mod:`.viscosity`)."""
+    data run from the coldest of its viscosity points and ``lubricant_data_minimum_temperature``
+    (0: none) to ``lubricant_maximum_temperature``; its flow limit is
+    ``lubricant_minimum_temperature`` (0: none), below which ``lubricant_below_flow_limit``
+    holds or extrapolates (:mod:`.viscosity`)."""
     nu_cold, t_cold = p["lubricant_viscosity_cold"], p["lubricant_cold_temperature"]
-    flow = p["lubricant_minimum_temperature"]
+    data = p["lubricant_data_minimum_temperature"]
     coldest = min(T40, t_cold) if nu_cold > 0.0 else T40
     return viscosity_model(
         p["lubricant_viscosity_40"],
@@ -309,9 +311,10 @@ def _viscosity(p: Mapping[str, object]):
         p["lubricant_walther_c"] / CST,
         (t_cold, nu_cold) if nu_cold > 0.0 else None,
         key="parameters",
-        lower_limit=min(flow, coldest) if flow > 0.0 else coldest,
+        lower_limit=min(data, coldest) if data > 0.0 else coldest,
         upper_limit=p["lubricant_maximum_temperature"],
-        flow_limit=flow > 0.0,
+        flow_limit=p["lubricant_minimum_temperature"],
+        below_flow_limit=p["lubricant_below_flow_limit"],
     )
 
 
@@ -340,7 +343,7 @@ def friction_from_parameters(p: Mapping[str, object]) -> FrictionModel:
         **{f: p[f"skf_{f}"] for f in ("r1", "r2", "r3", "s1", "s2", "s3", "kz")},
     )
     grease = None
-    if p["grease_f0"] > 0:
+    if p["grease_f0"] > 0 or p["grease_starting_ratio"] > 0:
         grease = GreaseTorqueTerm(
             f0=p["grease_f0"],
             starting_ratio=p["grease_starting_ratio"],

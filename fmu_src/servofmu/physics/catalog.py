@@ -53,6 +53,9 @@ MOUNTING_TABLES = ("coefficients", "tolerances")
 #: Entries added by user catalogues: {table: {key: (entry, file)}}, in the order added.
 _USER: dict[str, dict[str, tuple[dict, str]]] = {t: {} for t in USER_TABLES}
 _generation = [0]
+#: The merged tables (package entries, then the user's), built once per :func:`generation`:
+#: a lookup costs O(1), not a copy of the table.
+_MERGED: dict[str, dict] = {}
 
 
 def _table(name: str) -> dict:
@@ -61,7 +64,10 @@ def _table(name: str) -> dict:
     extra = _USER.get(name)
     if not extra:
         return table
-    return {**table, **{key: entry for key, (entry, _) in extra.items()}}
+    merged = _MERGED.get(name)
+    if merged is None:
+        merged = _MERGED[name] = {**table, **{key: entry for key, (entry, _) in extra.items()}}
+    return merged
 
 
 def origin(table: str, key: str) -> str:
@@ -108,6 +114,7 @@ def generation() -> int:
 
 def _changed() -> None:
     _generation[0] += 1
+    _MERGED.clear()
     for cached in (material, lubricant_record, lubricant, bearing, mounting,
                    mounting_coefficients, calibrated_loop_stiffness):  # fmt: skip
         cached.cache_clear()
@@ -373,19 +380,17 @@ def _reference_points(v: dict, nu: dict) -> list[tuple[float, float]]:
     return [(T40, nu["viscosity_40"]), (T100, nu["viscosity_100"])]
 
 
-def _range(v: dict, prov: dict, temperatures) -> tuple[float, float, str, str]:
-    """(lower, upper limit [K], their sources) of a lubricant's data (see
-    :mod:`.viscosity`): lower = the lowest of its pour point, its ``minimum_temperature``
-    (the lowest temperature of its data where no pour point is published) and the
-    temperatures of its viscosity points; upper = its ``maximum_temperature``, else its
-    highest viscosity point."""
-    low = [(t, "the lowest viscosity point") for t in temperatures]
-    for field, what in (
-        ("pour_point", "pour point"),
-        ("minimum_temperature", "minimum_temperature"),
-    ):
-        if field in v:
-            low.append((v[field], f"{what} ({prov[field]})"))
+def _range(v: dict, prov: dict, temperatures) -> tuple[dict, tuple]:
+    """The range of a lubricant's data and its flow limit (see :mod:`.viscosity`) as keyword
+    arguments of a viscosity model, with their sources: ``lower_limit`` = the coldest of its
+    viscosity points and its ``data_minimum_temperature`` (the coldest temperature a paper's
+    fit was used at); ``upper_limit`` = its ``maximum_temperature``, else its highest
+    viscosity point; ``flow_limit`` = its ``pour_point``, else its ``minimum_temperature``
+    (the maker's lower operating temperature), else 0 (none published)."""
+    low = [(t, "the coldest viscosity point") for t in temperatures]
+    if "data_minimum_temperature" in v:
+        low.append((v["data_minimum_temperature"],
+                    f"data_minimum_temperature ({prov['data_minimum_temperature']})"))  # fmt: skip
     lower, lo_src = min(low)
     if "maximum_temperature" in v:
         upper, hi_src = (
@@ -394,24 +399,37 @@ def _range(v: dict, prov: dict, temperatures) -> tuple[float, float, str, str]:
         )
     else:
         upper, hi_src = max(temperatures), "the highest viscosity point"
-    return lower, upper, f"derived: {lo_src}", f"derived: {hi_src}"
+    flow, flow_src = (
+        0.0,
+        (
+            "assumed: none: no pour point or lower operating temperature published, so the law is "
+            "extrapolated at every temperature below its data"
+        ),
+    )
+    for field, what in (("pour_point", "pour point"), ("minimum_temperature", "lower operating "
+                        "temperature")):  # fmt: skip
+        if field in v:
+            flow, flow_src = v[field], f"derived: its {what}, {field} ({prov[field]})"
+            break
+    limits = {"lower_limit": lower, "upper_limit": upper, "flow_limit": flow}
+    sources = (
+        ("lower_limit", f"derived: {lo_src}"),
+        ("upper_limit", f"derived: {hi_src}"),
+        ("flow_limit", flow_src),
+    )
+    return limits, sources
 
 
 def _viscosity_model(walther: WaltherViscosity, v: dict, prov: dict, nu: dict, points):
-    """The viscosity model of a fluid lubricant entry (:mod:`.viscosity`), with its range: the
-    ASTM D341 model of its reference pair (``walther``, :func:`_walther`) when it has no
-    further ``viscosity_points``, else Vogel's law through the reference pair and every point
-    (a lubricant's published points are used, not only checked)."""
+    """The viscosity model of a fluid lubricant entry (:mod:`.viscosity`), with its range and
+    flow limit: the ASTM D341 model of its reference pair (``walther``, :func:`_walther`) when
+    it has no further ``viscosity_points``, else Vogel's law through the reference pair and
+    every point (a lubricant's published points are used, not only checked)."""
     ref = _reference_points(v, nu)
     all_points = [*ref, *points]
-    lower, upper, lo_src, hi_src = _range(v, prov, [t for t, _ in all_points])
-    limits = {"lower_limit": lower, "upper_limit": upper}
-    range_prov = (("lower_limit", lo_src), ("upper_limit", hi_src))
+    limits, range_prov = _range(v, prov, [t for t, _ in all_points])
     if not points:
-        no_flow_limit = not any(f in v for f in ("pour_point", "minimum_temperature"))
-        return dataclasses.replace(
-            walther, provenance=walther.provenance + range_prov, **limits
-        ).extrapolating(no_flow_limit)
+        return dataclasses.replace(walther, provenance=walther.provenance + range_prov, **limits)
     model = vogel_from_points(all_points, walther.key, walther.name, **limits)
     return dataclasses.replace(model, provenance=model.provenance + range_prov)
 
@@ -520,6 +538,7 @@ def _lubricant_record(key: str, entry: dict) -> LubricantRecord:
         density_temperature=v.get("density_temperature"),
         pour_point=v.get("pour_point"),
         minimum_temperature=v.get("minimum_temperature"),
+        data_minimum_temperature=v.get("data_minimum_temperature"),
         maximum_temperature=v.get("maximum_temperature"),
         oil_class=entry.get("oil_class", ""),
         low_temperature_torque=torques,

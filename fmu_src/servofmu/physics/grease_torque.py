@@ -29,6 +29,19 @@ law then carries it to another temperature (through ν(T)), speed (n^(2/3)) and 
 (dm³). Starting torque: the datasheet's starting/running ratio ks, taken as constant
 (:func:`starting_ratio`): M_start = ks·M0 at the test's speed.
 
+**The cold start.** What a lubricant adds to a bearing's breakaway after a soak at rest is
+taken from its published starting-torque test: the breakaway adds ks times the lubricant's
+running torque at the test's speed, M_start = ks·M0(ν(T), n_test, dm), so that it follows the
+base oil's viscosity with temperature. Yu 2017 §1 cites Wikström & Höglund (Tribology
+Transactions 39(3), 1996, parts I and II: starting and steady-state torque of grease-lubricated
+rolling bearings at low temperatures) for the base oil's viscosity as the main cause of the
+rise of a bearing's torque in the cold; the starting test's ratio carries the grease's yield
+at rest, which no viscosity gives. ks and f0 are calibrated on the named datasheet points
+(:func:`fit_points`); at any other temperature, speed or bearing the term is a prediction.
+A lubricant without a published starting torque has no ks (0): BearingFriction then sets
+``breakaway_lower_bound``, since its breakaway holds only the zero-speed limit of the viscous
+term (a grease's yield at rest is missing from it).
+
 Limits (stated, not modelled):
 
 - dm³ presumes geometrically similar bearings with the same relative grease fill. The test
@@ -99,12 +112,15 @@ def starting_ratio(starting_torque, running_torque):
 
 @dataclass(frozen=True)
 class GreaseTorqueTerm:
-    """A calibrated grease torque term (see the module docstring for the law and its limits).
+    """A calibrated grease torque term (see the module docstring for the law and its limits):
+    a running part (f0 > 0) and a cold start (ks > 0), either of them 0 when its data are
+    missing.
 
     Attributes
     ----------
-    f0 : Palmgren factor [-], calibrated
-    starting_ratio : ks = M_start/M_run [-], calibrated
+    f0 : Palmgren factor [-], calibrated (0: no running part; the cold start then multiplies
+        the friction model's own viscous torque)
+    starting_ratio : ks = M_start/M_run [-], calibrated (0: no starting data)
     reference_speed : the test's speed [rad/s], at which ks was measured
     provenance : ((field, source), ...)
     """
@@ -115,9 +131,16 @@ class GreaseTorqueTerm:
     provenance: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self):
-        check_positive("f0", self.f0)
-        check_range("starting_ratio", self.starting_ratio, 0.1, 1000.0)
+        check_range("f0", self.f0, 0.0, None)
+        check_range("starting_ratio", self.starting_ratio, 0.0, 1000.0)
         check_positive("reference_speed", self.reference_speed, "rad/s")
+        if not (self.f0 > 0.0 or self.starting_ratio > 0.0):
+            raise ValueError("a grease term needs f0 > 0 or starting_ratio > 0 (else: none)")
+
+    @property
+    def has_start(self) -> bool:
+        """Whether the term knows the lubricant's starting torque (ks > 0)."""
+        return self.starting_ratio > 0.0
 
     def running(self, kinematic_viscosity, speed, mean_diameter):
         """Running torque of one grease-packed bearing [N·m] at base-oil viscosity ν [m²/s],
@@ -140,6 +163,94 @@ class GreaseTorqueTerm:
         return self.starting_ratio * self.running(
             kinematic_viscosity, self.reference_speed, mean_diameter
         )
+
+
+def relative_fit(ratios) -> float:
+    """x minimising Σ (x·r_i − 1)²: Σ r_i / Σ r_i² (a relative least-squares scale).
+
+    Parameters
+    ----------
+    ratios : sequence of float
+        r_i [-], > 0.
+
+    Returns
+    -------
+    float
+        x [-].
+
+    >>> relative_fit([1.0, 1.0])
+    1.0
+    """
+    return sum(ratios) / sum(r * r for r in ratios)
+
+
+def fit_points(points, rig, visc):
+    """f0 and ks fitted on published torques of one test (relative least squares: f0 on the
+    running torques, then ks on the starting torques with the model's own running torques;
+    one point: both exactly), and the per-point numbers.
+
+    Parameters
+    ----------
+    points : sequence of :class:`GreaseTorquePoint` of one test
+    rig : the test's :class:`TorqueTest`
+    visc : the base oil's viscosity model (its law, extrapolated where it must be)
+
+    Returns
+    -------
+    tuple
+        (f0, ks, rows): rows = [(temperature [K], ν [m²/s], M_start, M_run [N·m], f0_i [-])].
+
+    >>> rig, visc = torque_test("jis_k2220"), base_oil_viscosity("molykote_g1074")
+    >>> f0, ks, rows = fit_points(grease_torque_points("molykote_g1074"), rig, visc)
+    >>> round(f0, 2), round(ks, 2), len(rows)
+    (10.89, 1.98, 1)
+    """
+    rows = []
+    for p in points:
+        nu = float(visc.kinematic_viscosity(p.temperature))
+        f0_i = grease_factor(p.running_torque, nu, rig.speed, rig.mean_diameter)
+        rows.append((p.temperature, nu, p.starting_torque, p.running_torque, f0_i))
+    f0 = relative_fit([1.0 / r[4] for r in rows])
+    # the model's running torque at the test speed: f0·u_i = r_run·f0/f0_i
+    model_run = [r[3] * f0 / r[4] for r in rows]
+    ks = relative_fit([m / r[2] for m, r in zip(model_run, rows, strict=True)])
+    return f0, ks, rows
+
+
+def lubricant_term(lubricant: str) -> GreaseTorqueTerm | None:
+    """The grease term of catalogue lubricant ``lubricant`` calibrated on its published
+    low-temperature torques (``data/grease_torques.toml``; :func:`fit_points` on the points of
+    the test its first point names), or None when it has none.
+
+    Returns
+    -------
+    GreaseTorqueTerm or None
+
+    >>> t = lubricant_term("molykote_g1074")
+    >>> round(t.f0, 2), round(t.starting_ratio, 2), dict(t.provenance)["f0"][:10]
+    (10.89, 1.98, 'calibrated')
+    >>> lubricant_term("krytox_143aa") is None
+    True
+    """
+    points = grease_torque_points(lubricant)
+    if not points:
+        return None
+    test = points[0].test
+    chosen = [p for p in points if p.test == test]
+    rig = torque_test(test)
+    f0, ks, rows = fit_points(chosen, rig, base_oil_viscosity(lubricant))
+    where = ", ".join(f"{t - 273.15:g} °C" for t, *_ in rows)
+    src = f"calibrated: {rig.name} datasheet point(s) of {lubricant} at {where}"
+    return GreaseTorqueTerm(
+        f0=f0,
+        starting_ratio=ks,
+        reference_speed=rig.speed,
+        provenance=(
+            ("f0", src + " (running torque)"),
+            ("starting_ratio", src + " (starting/running)"),
+            ("reference_speed", f"{rig.source('speed')} ({test})"),
+        ),
+    )
 
 
 def calibrate_grease_term(
@@ -305,8 +416,8 @@ def grease_torque_points(lubricant: str) -> list[GreaseTorquePoint]:
 
 
 def base_oil_viscosity(lubricant: str):
-    """The base oil's :class:`viscosity.WaltherViscosity` of ``lubricant`` from its ν40 and
-    ν100 in ``data/grease_torques.toml`` (ASTM D341 two-point fit).
+    """The base oil's viscosity model of catalogue lubricant ``lubricant``
+    (``data/lubricants.toml``: the values of a grease are its base oil's).
 
     Parameters
     ----------
@@ -314,19 +425,19 @@ def base_oil_viscosity(lubricant: str):
 
     Returns
     -------
-    :class:`viscosity.WaltherViscosity`
+    :class:`viscosity.ViscosityRange` (its law: the ASTM D341 line through ν40 and ν100, or
+    Vogel's law through further points)
 
     >>> nu = base_oil_viscosity("molykote_g1074")
     >>> round(float(nu.kinematic_viscosity(313.15)) * 1e6, 3)   # 53 mm²/s at 40 °C
     53.0
     """
-    from .catalog import _table
-    from .viscosity import walther_from_two_points
+    from .catalog import keys
+    from .catalog import lubricant as viscosity
 
-    entry = _table("grease_torques").get("greases", {}).get(lubricant)
-    if entry is None or "base_oil_nu40" not in entry:
-        raise ValueError(f"lubricant = {lubricant!r} has no base-oil viscosities in grease_torques")
-    v = _entry_quantities(entry, ("base_oil_nu40", "base_oil_nu100"))[0]
-    return walther_from_two_points(
-        313.15, v["base_oil_nu40"], 373.15, v["base_oil_nu100"], key=lubricant, name=entry["name"]
-    )
+    if lubricant not in keys("lubricants"):
+        raise ValueError(f"lubricant = {lubricant!r} has no base-oil viscosities in lubricants")
+    model = viscosity(lubricant)
+    if model is None:
+        raise ValueError(f"lubricant = {lubricant!r} is a dry film: no base-oil viscosity")
+    return model

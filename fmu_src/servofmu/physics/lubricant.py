@@ -64,10 +64,12 @@ class LubricantRecord:
     viscosity_points : further published (temperature [K], viscosity [m²/s]) points; the
         model passes through them (three points in all) or is fitted to them (more)
     density : base-oil density [kg/m³] at ``density_temperature`` [K] (None: not published)
-    pour_point : base-oil pour point [K] (None: not published)
-    minimum_temperature : where no pour point is published, the lowest temperature of the
-        lubricant's data (the maker's lowest operating temperature, or the lowest temperature
-        a paper used its fit at) [K] (None: not given)
+    pour_point : base-oil pour point [K] (None: not published): its flow limit
+    minimum_temperature : the maker's lower operating temperature [K] (None: not given): the
+        flow limit where no pour point is published
+    data_minimum_temperature : the coldest temperature its viscosity data reach where no
+        viscosity point is recorded there (the lowest temperature a paper used its fit at) [K]
+        (None: its coldest viscosity point); a data end, not a flow limit
     maximum_temperature : the upper end of the lubricant's data (the maker's upper operating
         temperature, or the highest temperature a paper used its fit at) [K] (None: the
         highest viscosity point is the upper end)
@@ -89,6 +91,7 @@ class LubricantRecord:
     density_temperature: float | None = None
     pour_point: float | None = None
     minimum_temperature: float | None = None
+    data_minimum_temperature: float | None = None
     maximum_temperature: float | None = None
     oil_class: str = ""
     low_temperature_torque: tuple[TorqueTest, ...] = ()
@@ -121,7 +124,8 @@ class LubricantRecord:
             check_positive("density", self.density, "kg/m³")
         if self.density_temperature is not None:
             check_temperature("density_temperature", self.density_temperature)
-        for name in ("pour_point", "minimum_temperature", "maximum_temperature"):
+        for name in ("pour_point", "minimum_temperature", "data_minimum_temperature",
+                     "maximum_temperature"):  # fmt: skip
             if getattr(self, name) is not None:
                 check_temperature(name, getattr(self, name))
 

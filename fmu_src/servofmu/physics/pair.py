@@ -16,6 +16,7 @@ from .fits import mounted_geometry
 from .friction import FrictionCoefficients
 from .friction_models import DEFAULT_FRICTION, FrictionModel, preset
 from .geometry import BallBearing, RaceGeometry
+from .grease_torque import lubricant_term
 from .mounting import Mounting
 from .pair_kernels import PairRows, loop_closure_at
 from .preload import ROLES, TANDEM, shim_for_preload, tandem_offsets
@@ -69,12 +70,27 @@ class BearingPair:
             raise ValueError("lubrication = 'grease' needs a lubricant viscosity model")
         if self.friction.grease is not None and self.lubrication != "grease":
             raise ValueError(
-                "a grease term (grease_f0 > 0) needs lubrication = 'grease' (the base oil's "
-                f"viscosity), not {self.lubrication!r}"
+                "a grease term (grease_f0 > 0 or grease_starting_ratio > 0) needs lubrication = "
+                f"'grease' (the base oil's viscosity), not {self.lubrication!r}"
             )
         check_positive("regularisation_speed", self.regularisation_speed, "rad/s")
         check_positive("stribeck_speed", self.stribeck_speed, "rad/s")
         check_positive("pressure_limit", self.pressure_limit, "Pa")
+
+    @property
+    def breakaway_lower_bound(self) -> bool:
+        """True when the pair's breakaway is only a lower bound: a fluid lubricant without
+        published starting data (no cold start, ks, in its grease term: :mod:`.grease_torque`).
+        Its breakaway then holds the zero-speed limit of the viscous term alone, not what a
+        cold-soaked lubricant adds at rest (a grease's yield). A dry film has no such term.
+
+        >>> BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa").breakaway_lower_bound
+        True
+        >>> BearingPair.from_catalog("yu2017_gimbal", "molykote_g1074").breakaway_lower_bound
+        False
+        """
+        g = self.friction.grease
+        return self.lubricant is not None and (g is None or not g.has_start)
 
     @property
     def sliding(self) -> bool:
@@ -94,8 +110,9 @@ class BearingPair:
         bearing and its friction coefficients, ``data/coefficients.toml``, calibrated where a
         paper allows) and ``lubricant`` (``data/lubricants.toml``; a dry film gives solid
         lubrication), with ``friction_model`` (:data:`~.friction_models.FRICTION_MODELS`, its
-        numbers from the catalogue: :func:`~.friction_models.preset`). Other fields as keyword
-        overrides.
+        numbers from the catalogue: :func:`~.friction_models.preset`) and the lubricant's grease
+        term calibrated on its published low-temperature torques where it has any (its cold
+        start: :func:`~.grease_torque.lubricant_term`). Other fields as keyword overrides.
 
         >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
         >>> round(pair.coefficients.sliding_friction, 4)  # calibrated on Yu 2017 (§3, Fig 8)
@@ -106,13 +123,14 @@ class BearingPair:
         coefficients = catalog.mounting_coefficients(mounting)
         if coefficients is not None:
             kwargs["coefficients"] = coefficients
-        record = None
+        record, grease = None, None
         if lubricant is not None:
             visc = catalog.lubricant(lubricant)
             kwargs["lubricant"] = visc
             kwargs["lubrication"] = "solid" if visc is None else "grease"
             record = catalog.lubricant_record(lubricant)
-        kwargs["friction"] = preset(kwargs["bearing"], record, friction_model)
+            grease = lubricant_term(lubricant)  # its published torques: the cold start
+        kwargs["friction"] = preset(kwargs["bearing"], record, friction_model, grease)
         kwargs.update(overrides)
         return cls(**kwargs)
 

@@ -313,13 +313,11 @@ def _vogel_exponent(
 
 
 @cython.cfunc
-def _operating_temperature(
-    t: cython.double, lower_limit: cython.double, extrapolate_below: cython.bint
-) -> cython.double:
+def _operating_temperature(t: cython.double, hold: cython.double) -> cython.double:
     """The temperature [K] at which a lubricant's law gives the viscosity a bearing model
-    uses at ``t`` [K]: ``t``, or the lower end of its data below it unless the law is
-    extrapolated there (:meth:`.viscosity.ViscosityRange.operating_viscosity_at`)."""
-    return t if extrapolate_below or t > lower_limit else lower_limit
+    uses at ``t`` [K]: ``t``, or the temperature ``hold`` [K] below which the viscosity is
+    held (0: never; :meth:`.viscosity.ViscosityRange.operating_viscosity_at`)."""
+    return t if t > hold else hold
 
 
 @cython.cfunc
@@ -834,7 +832,7 @@ class PairConstants:
     law_a: cython.double
     law_b: cython.double
     law_c: cython.double
-    extrapolate_below: cython.bint
+    hold_temperature: cython.double
     lubricated: cython.bint
     lower_limit: cython.double
     upper_limit: cython.double
@@ -870,8 +868,8 @@ class PairConstants:
         "density",
         "e_housing",
         "e_shaft",
-        "extrapolate_below",
         "grease",
+        "hold_temperature",
         "housing_outer_diameter",
         "hysteresis_loss",
         "inner_curvature",
@@ -972,10 +970,11 @@ class PairConstants:
         self.rows = PairRows(rows.is_tandem, rows.stiffness, rows.thrust)
         self.spring_stiffness = self.rows.spring
         visc = pair.lubricant
-        # the lubricant's law on floats, held below its range, and the range (:mod:`.viscosity`)
+        # the lubricant's law on floats, held below its flow limit when the user chose so, and
+        # the range of its data (:mod:`.viscosity`)
         self.viscosity = None if visc is None else visc.operating_viscosity_at
         self.law, self.law_a, self.law_b, self.law_c = _law(visc)
-        self.extrapolate_below = visc is not None and visc.extrapolate_below
+        self.hold_temperature = 0.0 if visc is None else visc.hold_temperature
         self.lubricated = visc is not None
         self.lower_limit = 0.0 if visc is None else visc.lower_limit
         self.upper_limit = _INF if visc is None else visc.upper_limit
@@ -1018,11 +1017,11 @@ def _law(visc) -> tuple:
 @cython.cfunc
 def _viscosity(c: PairConstants, t: cython.double) -> cython.double:
     """The viscosity [m²/s] the bearing uses at the lubricant's temperature ``t`` [K] (Yu 2017
-    eq 18 or Vogel's law, held below the data unless extrapolated; :mod:`.viscosity`)."""
+    eq 18 or Vogel's law, held below the flow limit when chosen; :mod:`.viscosity`)."""
     if c.law == _NO_LAW:
         return 0.0
     nu: cython.double = _INF
-    at: cython.double = _operating_temperature(t, c.lower_limit, c.extrapolate_below)
+    at: cython.double = _operating_temperature(t, c.hold_temperature)
     if c.law == _WALTHER:
         nu = _walther_cst(log10(at), c.law_a, c.law_b, c.law_c) * _CST
     elif c.law == _VOGEL:

@@ -514,8 +514,9 @@ class BearingOutputs:
     inner_ring_torque/outer_ring_torque [N·m], max_contact_pressure [Pa],
     outer/inner_fit_pressure [Pa], outer/inner_interference [m], force_a/force_b [N],
     axial_displacement [m]; axial_play [m] (:func:`axial_play`), reverse_loaded
-    (:func:`state_flags`) and outside_lubricant_range (the lubricant's temperature outside the
-    range of its data, :mod:`.viscosity`).
+    (:func:`state_flags`), outside_lubricant_range (the lubricant's temperature outside the
+    range of its data, :mod:`.viscosity`) and breakaway_lower_bound (a fluid lubricant without
+    published starting data: :attr:`.pair.BearingPair.breakaway_lower_bound`).
     """
 
     friction_torque: float
@@ -548,6 +549,7 @@ class BearingOutputs:
     axial_play: float
     reverse_loaded: bool
     outside_lubricant_range: bool
+    breakaway_lower_bound: bool = False
 
     def as_dict(self) -> dict:
         return {f.name: getattr(self, f.name) for f in fields(self)}
@@ -562,16 +564,11 @@ def _speed_terms(pair: BearingPair, viscosity, pitch_diameter, coulomb, excess, 
     contacts' sliding torque [N·m] and the model's ``rolling`` data (:func:`rolling_data`);
     floats in, floats out on the per-step path."""
     fm = pair.friction
-    model = fm.model
-    if model == "yu2017":
-        s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
-        viscous = 2.0 * _palmgren(viscosity, w, pitch_diameter, s0)
-        running = coulomb + viscous
-    elif model == "skf2004":
-        viscous, sliding = skf_torques(pair, rolling, viscosity, w)
+    viscous, skf_sliding = _model_terms(pair, viscosity, pitch_diameter, rolling, w)
+    if skf_sliding is not None:
+        sliding = skf_sliding
         running = coulomb + sliding + viscous
     else:
-        viscous = ehl_torque(rolling, w)
         running = coulomb + viscous
     if fm.grease is None:
         grease = 0.0
@@ -580,6 +577,19 @@ def _speed_terms(pair: BearingPair, viscosity, pitch_diameter, coulomb, excess, 
         running = running + grease
     signed = _regularised(w, running, excess, pair.regularisation_speed, pair.stribeck_speed)
     return signed, running, sliding, viscous, grease
+
+
+def _model_terms(pair: BearingPair, viscosity, pitch_diameter, rolling, w):
+    """(viscous torque, SKF's sliding torque or None) [N·m] of the pair's friction model at
+    speed w [rad/s]: Palmgren's (yu2017, Yu 2017 eq 8), SKF's φish·φrs·Mrr and Msl (skf2004) or
+    the contacts' EHL rolling torque (ehl_per_contact)."""
+    model = pair.friction.model
+    if model == "yu2017":
+        s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
+        return 2.0 * _palmgren(viscosity, w, pitch_diameter, s0), None
+    if model == "skf2004":
+        return skf_torques(pair, rolling, viscosity, w)
+    return ehl_torque(rolling, w), None
 
 
 def _coulomb_excess(pair: BearingPair, hysteresis, spin, sliding):
@@ -626,7 +636,10 @@ def state_torques(pair: BearingPair, hysteresis, spin, sliding, viscosity, pitch
     spin + sliding, (μ_s/μ − 1)·(spin + sliding), Palmgren at rest (``rest``, :func:`rest_torque`
     when not given); ``ehl_per_contact``: the same without Palmgren (no hydrodynamic force at
     rest); ``skf2004``: Msl(n → 0) of both bearings (SKF's starting torque, no excess); plus
-    the grease term's starting torque (:func:`.friction_models.grease_rest_and_start`).
+    the lubricant's cold start (:mod:`.grease_torque`): with a grease term (f0 > 0) its
+    starting torque ks·M0 at the test speed (:func:`.friction_models.grease_rest_and_start`),
+    without one (ks alone) ks times the friction model's viscous torque at the test speed,
+    never below that torque at rest.
 
     Parameters
     ----------
@@ -655,17 +668,25 @@ def state_torques(pair: BearingPair, hysteresis, spin, sliding, viscosity, pitch
     >>> round(c * 1e3, 6), round(brk * 1e3, 6)  # N·mm: + excess + Palmgren's floor at rest
     (0.3, 0.559316)
     """
-    if pair.friction.model == "skf2004":
+    skf = pair.friction.model == "skf2004"
+    if skf:
         coulomb = excess = 0.0
         rest = skf_starting(pair, rolling)
     else:
         coulomb, excess = _coulomb_excess(pair, hysteresis, spin, sliding)
         if rest is None:
             rest = rest_torque(pair, viscosity, pitch_diameter)
-    if pair.friction.grease is not None:
+    g = pair.friction.grease
+    if g is not None and g.f0 > 0.0:  # the grease term and its start (ks·M0 at the test speed)
         g_rest, g_start = grease_rest_and_start(pair, viscosity)
         excess = excess + (g_start - g_rest)
         rest = rest + g_rest
+    elif g is not None and g.has_start:  # ks on the friction model's own viscous torque
+        v_rest = 0.0 * rest if skf else rest  # SKF's starting torque is sliding, not viscous
+        v_ref = _model_terms(pair, viscosity, pitch_diameter, rolling, g.reference_speed)[0]
+        start = g.starting_ratio * v_ref
+        maximum = max if type(start) is float and type(v_rest) is float else np.maximum
+        excess = excess + (maximum(start, v_rest) - v_rest)
     return coulomb, excess, coulomb + excess + rest
 
 
@@ -770,7 +791,13 @@ def bearing_outputs(
         axial_play=load.axial_play,
         reverse_loaded=load.reverse_loaded,
         outside_lubricant_range=thermal.outside_lubricant_range,
+        breakaway_lower_bound=_broadcast(pair.breakaway_lower_bound, running),
     )
+
+
+def _broadcast(flag: bool, like):
+    """``flag`` shaped like ``like`` (a bool for a float)."""
+    return flag if np.ndim(like) == 0 else np.full(np.shape(like), flag)
 
 
 def point_state(cls, pair: BearingPair, thermal, torques, load, flags, rest=None,
@@ -847,11 +874,12 @@ def exact_point(cls, pair: BearingPair, thermal: ThermalState, load: LoadState):
     )
 
 
-def point_outputs(point, speed_outputs) -> BearingOutputs:
+def point_outputs(point, speed_outputs, breakaway_lower_bound: bool = False) -> BearingOutputs:
     """:class:`BearingOutputs` of the state ``point`` (:class:`~.pair_kernels.PointState`) with
     the speed outputs ``speed_outputs`` = (friction, running, sliding, viscous, grease torque
-    [N·m], power loss [W]) (:meth:`~.pair_kernels.PairSolver.speed_outputs`): the same numbers
-    as :func:`bearing_outputs` on the exact path's state.
+    [N·m], power loss [W]) (:meth:`~.pair_kernels.PairSolver.speed_outputs`) and the pair's
+    ``breakaway_lower_bound``: the same numbers as :func:`bearing_outputs` on the exact path's
+    state.
 
     Returns
     -------
@@ -898,6 +926,7 @@ def point_outputs(point, speed_outputs) -> BearingOutputs:
         point.axial_play,
         point.reverse_loaded,
         point.outside_lubricant_range,
+        breakaway_lower_bound,
     )
 
 

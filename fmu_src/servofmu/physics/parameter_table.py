@@ -96,12 +96,16 @@ GROUPS = {
     "skf": "the SKF model's series constants and friction coefficients",
     "density": "the (base) oil's density (EHL rolling torque)",
     "grease": "the grease term's factor f0 (running torque)",
-    "grease_start": "the grease term's starting ratio and test speed (breakaway torque)",
+    "grease_start": "the cold start: the lubricant's starting ratio and test speed (breakaway)",
 }
 
 _LUBRICATIONS = (
     Choice("grease", "grease", "grease or oil: viscous Palmgren torque (Yu 2017 eq 8-9)"),
     Choice("solid", "solid", "dry film: no viscous term, differential sliding (Ning)"),
+)
+_BELOW_FLOW_LIMIT = (
+    Choice("hold", "hold", "the viscosity held at its value at the flow limit (finite torques)"),
+    Choice("extrapolate", "extrapolate", "the viscosity law extrapolated on (its steep rise)"),
 )
 _ARRANGEMENTS = (
     Choice(
@@ -542,11 +546,10 @@ def _lubricant_range_specs() -> tuple[ParameterSpec, ...]:
     return (
         _real(
             "lubricant_minimum_temperature",
-            "The lubricant's flow limit: its pour point or the maker's minimum temperature; the "
-            "range of its data starts there, or at its coldest viscosity point if lower (below "
-            "it: outside_lubricant_range, the viscosity held at its value there). 0: none "
-            "known: the range starts at the coldest viscosity point, below which the ASTM D341 "
-            "line is extrapolated",
+            "The lubricant's flow limit: its pour point, else the maker's lower operating "
+            "temperature (below it lubricant_below_flow_limit: the viscosity held at its value "
+            "there, or the law extrapolated). 0: none published: the law is extrapolated below "
+            "the data at every temperature",
             "lubricant",
             "K",
             "degC",
@@ -583,7 +586,34 @@ def _lubricant_range_specs() -> tuple[ParameterSpec, ...]:
             0.0,
             1.0e4,
         ),
+        # ---- declared after BearingFriction's appended outputs (LATER_PARAMETERS)
+        _real(
+            "lubricant_data_minimum_temperature",
+            "Coldest temperature the lubricant's viscosity data reach (a paper's fit: the "
+            "coldest temperature it was used at); below it outside_lubricant_range and the law "
+            "extrapolated down to the flow limit. 0: its coldest viscosity point (40 °C, or "
+            "lubricant_cold_temperature)",
+            "lubricant",
+            "K",
+            "degC",
+            0.0,
+            1.0e4,
+        ),
+        _choice(
+            "lubricant_below_flow_limit",
+            "Below lubricant_minimum_temperature (the flow limit: no law holds there): hold the "
+            "viscosity at its value at the limit, or extrapolate the law; "
+            "outside_lubricant_range stays set either way",
+            "lubricant",
+            "BelowFlowLimit",
+            _BELOW_FLOW_LIMIT,
+        ),
     )
+
+
+#: Parameters that BearingFriction declares after its outputs that were appended before them
+#: (pythonfmu numbers value references in declaration order: new variables come last).
+LATER_PARAMETERS = ("lubricant_data_minimum_temperature", "lubricant_below_flow_limit")
 
 
 def _skf(name, description, lo, hi):
@@ -634,16 +664,19 @@ def _friction_model_specs() -> tuple[ParameterSpec, ...]:
         ),
         _real(
             "grease_starting_ratio",
-            "Grease term: starting/running torque ratio ks of the datasheet test",
+            "Cold start: the lubricant's starting/running torque ratio ks in its published "
+            "starting-torque test; the breakaway after a soak at rest adds ks times the "
+            "lubricant's torque at grease_reference_speed. 0: no starting data "
+            "(breakaway_lower_bound)",
             "grease_start",
             "1",
             None,
-            0.1,
+            0.0,
             1000.0,
         ),
         _real(
             "grease_reference_speed",
-            "Grease term: speed of the datasheet test (ks holds there)",
+            "Cold start: speed of the starting-torque test (ks holds there)",
             "grease_start",
             "rad/s",
             "rpm",
@@ -671,6 +704,11 @@ LUBRICANT_FIELDS = (
     "lubricant_maximum_temperature",
     "lubricant_viscosity_cold",
     "lubricant_cold_temperature",
+    "lubricant_data_minimum_temperature",
+    # the grease term of its published low-temperature torques (its cold start; 0: none)
+    "grease_f0",
+    "grease_starting_ratio",
+    "grease_reference_speed",
 )
 #: The SKF series constants: a bearing preset sets them (its series, or the fallback).
 SKF_SERIES_FIELDS = ("skf_r1", "skf_r2", "skf_r3", "skf_s1", "skf_s2", "skf_s3", "skf_kz")

@@ -782,7 +782,10 @@ def _radial_start(geom: RaceGeometry, offset: float, radial_load: float) -> floa
 
 def _best_root(fun, x0):
     """(x, largest scaled residual) of scipy.optimize.root on ``fun`` (residuals and their
-    Jacobian) from ``x0``: Powell's hybrid method, then Levenberg–Marquardt when it misses."""
+    Jacobian) from ``x0``: Powell's hybrid method, then Levenberg–Marquardt when it misses;
+    then Newton's steps with the analytic Jacobian while they shrink the residual (hybr's
+    relative xtol can stop where lightly loaded balls leave a soft direction with a residual
+    of 1e-10 N; the polish takes it to rounding, as the per-step path does)."""
     best = None
     for method in ("hybr", "lm"):
         sol = root(fun, x0, jac=True, method=method, options={"xtol": 1e-14})
@@ -791,7 +794,23 @@ def _best_root(fun, x0):
             best = (sol.x, resid)
         if resid < 1e-9:
             break
-    return best
+    return _polish(fun, *best)
+
+
+def _polish(fun, x, resid, steps: int = 4):
+    """Newton's steps from ``x`` (largest scaled residual ``resid``) while each lowers it."""
+    for _ in range(steps):
+        r, jac = fun(x)
+        try:
+            dx = np.linalg.solve(jac, r)
+        except np.linalg.LinAlgError:
+            break
+        trial = x - dx
+        new = float(np.abs(fun(trial)[0]).max())
+        if not new < resid:
+            break
+        x, resid = trial, new
+    return x, resid
 
 
 def tandem_offsets(

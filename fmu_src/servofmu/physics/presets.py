@@ -20,6 +20,7 @@ from .friction import FrictionCoefficients
 from .friction_models import SKF_SOURCES, FrictionModel, lubricant_numbers
 from .friction_models import preset as friction_preset
 from .geometry import BallBearing
+from .grease_torque import lubricant_term
 from .materials import Material
 from .mounting import Mounting
 from .pair import PRESSURE_LIMIT
@@ -118,7 +119,51 @@ def lubricant_values(key: str) -> tuple[dict, dict]:
         "lubricant_density": density_src,
         "skf_film_friction": film_src,
     }
-    return values, sources
+    grease, grease_src = grease_values(key)
+    return values | grease, sources | grease_src
+
+
+def grease_values(key: str) -> tuple[dict, dict]:
+    """(values, sources) of the grease term of catalogue lubricant ``key``: calibrated on its
+    published low-temperature torques (:func:`.grease_torque.lubricant_term`: f0 and the cold
+    start ks), else none (f0 = ks = 0: no starting data, ``breakaway_lower_bound``).
+
+    Returns
+    -------
+    tuple of dict
+        (values: f0 [-], ks [-], test speed [rad/s]; sources).
+
+    Examples
+    --------
+    >>> v, s = grease_values("krytox_143aa")
+    >>> v["grease_starting_ratio"], s["grease_starting_ratio"][:30]
+    (0.0, 'none: no published starting to')
+    >>> round(grease_values("molykote_g1074")[0]["grease_starting_ratio"], 2)
+    1.98
+    """
+    term = lubricant_term(key)
+    if term is None:
+        none = f"none: no published starting torque of {key} (grease_torques.toml)"
+        values = {"grease_f0": 0.0, "grease_starting_ratio": 0.0, "grease_reference_speed": RPM}
+        sources = {
+            "grease_f0": f"{none}: no grease term",
+            "grease_starting_ratio": f"{none}: the breakaway is a lower bound",
+            "grease_reference_speed": "not used: the 1 r/min of ASTM D1478 and JIS K 2220",
+        }
+        return values, sources
+    prov = dict(term.provenance)
+    return (
+        {
+            "grease_f0": term.f0,
+            "grease_starting_ratio": term.starting_ratio,
+            "grease_reference_speed": term.reference_speed,
+        },
+        {
+            "grease_f0": prov["f0"],
+            "grease_starting_ratio": prov["starting_ratio"],
+            "grease_reference_speed": prov["reference_speed"],
+        },
+    )
 
 
 def viscosity_values(rec) -> tuple[dict, dict]:
@@ -143,22 +188,21 @@ def viscosity_values(rec) -> tuple[dict, dict]:
     values = {
         "lubricant_viscosity_40": float(rec.viscosity_40),
         "lubricant_viscosity_100": float(rec.viscosity_100),
-        # a flow limit only: without one the FMU starts the range at the coldest point itself
-        "lubricant_minimum_temperature": 0.0
-        if model.extrapolate_below
-        else float(model.lower_limit),
+        "lubricant_minimum_temperature": float(model.flow_limit),
         "lubricant_maximum_temperature": float(model.upper_limit),
+        # the record's data end; its viscosity points give theirs themselves (0)
+        "lubricant_data_minimum_temperature": float(rec.data_minimum_temperature or 0.0),
     }
     sources = {
         "lubricant_viscosity_40": f"{rec.source('viscosity_40')} ({key})",
         "lubricant_viscosity_100": f"{rec.source('viscosity_100')} ({key})",
-        "lubricant_minimum_temperature": (
-            f"no pour point or minimum temperature published: the range starts at the coldest "
-            f"viscosity point, and the ASTM D341 line is extrapolated below it ({key})"
-            if model.extrapolate_below
-            else f"{model.source('lower_limit')} ({key})"
-        ),
+        "lubricant_minimum_temperature": f"{model.source('flow_limit')} ({key})",
         "lubricant_maximum_temperature": f"{model.source('upper_limit')} ({key})",
+        "lubricant_data_minimum_temperature": (
+            f"{rec.source('data_minimum_temperature')} ({key})"
+            if rec.data_minimum_temperature
+            else f"none: its data end at its coldest viscosity point ({key})"
+        ),
     }
     if not isinstance(model, VogelViscosity):
         values |= {
@@ -504,21 +548,17 @@ def _coefficient_values(mounting: str, solid: bool) -> tuple[dict, dict]:
         "pressure_limit": "handbook: ISO 76, 4200 MPa for ball bearings",
     }
     fm = FrictionModel()  # the catalogue's SKF coefficients (μbl, Krs)
-    unused = "not used (grease_f0 = 0: no grease term)"
     values |= {
         "friction_model": "yu2017",
         "skf_replenishment": fm.skf_replenishment,
         "skf_boundary_friction": fm.skf_boundary_friction,
-        "grease_f0": 0.0,
-        "grease_starting_ratio": 1.0,
-        "grease_reference_speed": RPM,
+        "lubricant_below_flow_limit": "hold",
     }
     sources |= {
         "friction_model": "assumed: Yu 2017's model, the default for the paper reproductions",
         **SKF_SOURCES,
-        "grease_f0": "assumed: off (calibrate it on a datasheet: servofmu calibrate --datasheet)",
-        "grease_starting_ratio": f"{unused}: 1",
-        "grease_reference_speed": f"{unused}: the 1 r/min of ASTM D1478 and JIS K 2220",
+        "lubricant_below_flow_limit": "assumed: hold the viscosity at the flow limit (finite "
+        "torques; outside_lubricant_range says they are not backed by data)",
     }
     return values, sources
 

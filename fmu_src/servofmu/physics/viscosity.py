@@ -37,38 +37,43 @@ is used at), and through the four points of X/C 5606J it misses none by more tha
 (``servofmu paper validation``, section viscosity).
 
 **Range.** A viscosity model knows a lubricant between ``lower_limit`` and ``upper_limit``
-[K] (:attr:`ViscosityRange`): from its pour point (or its lowest published viscosity if that
-is lower) to an upper limit the catalogue states (the maker's upper operating temperature,
-else the highest published viscosity). ASTM D341-20 §3.1 limits its charts to temperatures
-where the oil is a homogeneous liquid, above its cloud point; the pour point, a few kelvin
-below the cloud point, is what lubricant datasheets publish. Outside the range
-:meth:`ViscosityRange.outside` flags the point, and :meth:`ViscosityRange.operating_viscosity`
-gives what a bearing model uses there:
+[K] (:class:`ViscosityRange`): from the coldest temperature its data reach (its coldest
+published viscosity, or the coldest temperature a paper's fit was used at) to an upper limit
+the catalogue states (the maker's upper operating temperature, else the highest published
+viscosity). Outside the range :meth:`ViscosityRange.outside` flags the point. A lubricant's
+*flow limit* ``flow_limit`` is a different number: its published pour point (ASTM D97: the
+lowest temperature at which it still flows), or, where none is published, the maker's lower
+operating temperature. ASTM D341-20 §3.1 limits its charts to temperatures where the oil is a
+homogeneous liquid, above its cloud point, a few kelvin above the pour point. A data end is
+not a flow limit: an oil known to −40 °C may flow at −60 °C. What a bearing model uses
+(:meth:`ViscosityRange.operating_viscosity`):
 
-- below a lower limit that is a *flow limit* (a pour point, a maker's minimum temperature, or
-  the coldest temperature a law was fitted over: the record vouches that the liquid law ends
-  there), the lubricant no longer flows as the law says (a gel, then a solid) and no number is
-  known: the viscosity is held at its value at the limit, keeping the torques finite;
-- below a lower limit that is only the lubricant's coldest published viscosity (no flow limit
-  known, ``extrapolate_below``: a datasheet's ν40 and ν100 alone), the lubricant is still a
-  liquid for all the record says, and the ASTM D341 line is extrapolated: it is the usual
-  estimate of a cold oil's viscosity (§1.2), finite at every temperature, and holding the
-  40 °C value would understate a cold bearing's torque many times over. (Vogel's law, fitted
-  through a cold point, diverges at T∞ and is held below its lower limit.)
+- between the data end and the flow limit, the law extrapolated (flagged): the liquid still
+  flows, and its law is the usual estimate there (D341 §1.2 draws a petroleum oil's line
+  straight; Vogel's third constant bends it towards its divergence T∞);
+- below the flow limit no law holds (a gel, then a glass): the user's choice
+  ``below_flow_limit`` (:data:`BELOW_FLOW_LIMIT`), ``"hold"`` the viscosity at its value at
+  the limit (the default: finite torques, the flag says they are not backed by data) or
+  ``"extrapolate"`` the law further (a bound the other way: the law's steep rise);
+- a lubricant without a published flow limit (``flow_limit`` 0) is extrapolated at every
+  temperature below its data: nothing says where its liquid law ends;
 - above the upper limit the law is extrapolated (D341 §1.2: the lines stay straight to about
   340 °C; the viscosity keeps falling and the viscous torque with it).
+
+Vogel's law diverges at T∞: it must lie below the coldest temperature the model is used at
+(the hold temperature, else the lowest temperature the FMUs accept,
+:data:`._checks.TEMPERATURE_RANGE`).
 """
 
 from __future__ import annotations
 
-import dataclasses
 import itertools
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import check_positive, check_range, check_temperature
+from ._checks import TEMPERATURE_RANGE, check_choice, check_positive, check_range, check_temperature
 from .pair_kernels import (  # the laws' kernels, shared with the per-step path
     _operating_temperature,
     _vogel_exponent,
@@ -78,24 +83,30 @@ from .units import CST
 
 #: The reference temperatures of ν40 and ν100 (ISO 3448, ASTM D341) [K].
 T40, T100 = 313.15, 373.15
+#: What a bearing model does below a lubricant's flow limit (module docstring).
+BELOW_FLOW_LIMIT = ("hold", "extrapolate")
 
 
 @dataclass(frozen=True)
 class ViscosityRange:
-    """The temperatures a lubricant's viscosity data cover, and what a bearing model uses
-    outside them (module docstring). Base of the viscosity models.
+    """The temperatures a lubricant's viscosity data cover, its flow limit, and what a bearing
+    model uses outside the data (module docstring). Base of the viscosity models.
 
     Attributes
     ----------
-    lower_limit : its pour point, or its lowest published viscosity if lower [K] (0: none)
+    lower_limit : the coldest temperature its data reach [K] (0: none)
     upper_limit : the upper limit its catalogue entry states [K] (inf: none)
-    extrapolate_below : True when ``lower_limit`` is only the coldest published viscosity (no
-        flow limit known): the law is extrapolated below it; False: held at its value there
+    flow_limit : its pour point, or the maker's lower operating temperature where no pour
+        point is published [K] (0: none published: the law is extrapolated at every
+        temperature below the data)
+    below_flow_limit : "hold" (the viscosity at its value at the flow limit) or
+        "extrapolate" (the law) below the flow limit (:data:`BELOW_FLOW_LIMIT`)
     """
 
     lower_limit: float = 0.0
     upper_limit: float = math.inf
-    extrapolate_below: bool = False
+    flow_limit: float = 0.0
+    below_flow_limit: str = "hold"
 
     def _check_range(self):
         lo = check_range("lower_limit", self.lower_limit, 0.0, None, unit="K")
@@ -103,19 +114,43 @@ class ViscosityRange:
             raise ValueError(
                 f"upper_limit = {self.upper_limit!r} K must lie above lower_limit = {lo!r} K"
             )
+        check_range("flow_limit", self.flow_limit, 0.0, self.upper_limit, unit="K")
+        check_choice("below_flow_limit", self.below_flow_limit, BELOW_FLOW_LIMIT)
+
+    @property
+    def hold_temperature(self) -> float:
+        """The temperature [K] below which the viscosity is held at its value there: the flow
+        limit (the data end if that is colder) when ``below_flow_limit`` is "hold"; 0 when the
+        law is extrapolated everywhere.
+
+        >>> ViscosityRange(233.15, 333.15, flow_limit=213.15).hold_temperature
+        213.15
+        >>> ViscosityRange(233.15, 333.15, 213.15, "extrapolate").hold_temperature
+        0.0
+        """
+        if self.flow_limit > 0.0 and self.below_flow_limit == "hold":
+            return min(self.flow_limit, self.lower_limit or self.flow_limit)
+        return 0.0
+
+    @property
+    def coldest_use(self) -> float:
+        """The coldest temperature [K] at which the law is evaluated: the hold temperature,
+        else the lowest temperature the models accept (:data:`._checks.TEMPERATURE_RANGE`)."""
+        return self.hold_temperature or TEMPERATURE_RANGE[0]
 
     def _check_held(self):
-        """The viscosity held below ``lower_limit`` must be a number: the law there, finite."""
-        if self.lower_limit > 0.0 and not self.extrapolate_below:
-            try:
-                nu = self.viscosity_at(self.lower_limit)
-            except (OverflowError, ZeroDivisionError):
-                nu = math.inf
-            if not 0.0 < nu < math.inf:
-                raise ValueError(
-                    f"the viscosity at lower_limit = {self.lower_limit!r} K is {nu!r} m²/s: "
-                    "the law has no finite value there (raise the lower limit)"
-                )
+        """The law must be a finite number down to :attr:`coldest_use`."""
+        t = self.coldest_use
+        try:
+            nu = self.viscosity_at(t)
+        except (OverflowError, ZeroDivisionError, ValueError):
+            nu = math.inf
+        if not 0.0 < nu < math.inf:
+            where = "flow_limit" if self.hold_temperature else "the coldest temperature accepted"
+            raise ValueError(
+                f"the viscosity at {where} = {t!r} K is {nu!r} m²/s: the law has no finite "
+                "value there (raise the flow limit, or hold below it)"
+            )
 
     def kinematic_viscosity(self, temperature):  # the law (subclasses)
         raise NotImplementedError
@@ -123,27 +158,9 @@ class ViscosityRange:
     def viscosity_at(self, t: float) -> float:  # the law on one float (subclasses)
         raise NotImplementedError
 
-    def extrapolating(self, below: bool = True):
-        """This model with ``extrapolate_below`` set to ``below`` where its law allows it (the
-        ASTM D341 line, finite everywhere; Vogel's law diverges at T∞ and stays held).
-
-        Returns
-        -------
-        ViscosityRange
-
-        Examples
-        --------
-        >>> v = walther_from_reference(32e-6, 5.4e-6, lower_limit=313.15)
-        >>> v.extrapolating().extrapolate_below, v.extrapolate_below
-        (True, False)
-        """
-        if isinstance(self, VogelViscosity) or below == self.extrapolate_below:
-            return self
-        return dataclasses.replace(self, extrapolate_below=below)
-
     def outside(self, temperature):
         """True where ``temperature`` [K] (float or array) lies outside
-        [``lower_limit``, ``upper_limit``].
+        [``lower_limit``, ``upper_limit``], the range of the data.
 
         Returns
         -------
@@ -158,10 +175,20 @@ class ViscosityRange:
         out = (t < self.lower_limit) | (t > self.upper_limit)
         return bool(out) if out.ndim == 0 else out
 
+    def below_flow(self, temperature):
+        """True where ``temperature`` [K] (float or array) lies below the flow limit (never
+        without one).
+
+        >>> ViscosityRange(233.15, 333.15, flow_limit=213.15).below_flow(203.15)
+        True
+        """
+        t = np.asarray(temperature)
+        out = (t < self.flow_limit) & (self.flow_limit > 0.0)
+        return bool(out) if out.ndim == 0 else out
+
     def operating_viscosity(self, temperature):
         """The viscosity a bearing model uses at ``temperature`` [K] (float or array): the
-        law's; below ``lower_limit`` held at its value there, or the law extrapolated when
-        ``extrapolate_below`` (module docstring) [m²/s].
+        law's, held below :attr:`hold_temperature` (module docstring) [m²/s].
 
         Returns
         -------
@@ -170,24 +197,19 @@ class ViscosityRange:
 
         Examples
         --------
-        >>> held = walther_from_reference(32e-6, 5.4e-6, lower_limit=253.15)
+        >>> held = walther_from_reference(32e-6, 5.4e-6, lower_limit=273.15, flow_limit=253.15)
         >>> bool(held.operating_viscosity(173.15) == held.kinematic_viscosity(253.15))
         True
-        >>> import dataclasses
-        >>> free = dataclasses.replace(held, lower_limit=313.15, extrapolate_below=True)
-        >>> bool(free.operating_viscosity(253.15) == free.kinematic_viscosity(253.15))
+        >>> bool(held.operating_viscosity(263.15) == held.kinematic_viscosity(263.15))
         True
         """
         t = check_temperature("temperature", temperature)
-        if self.extrapolate_below:
-            return self.kinematic_viscosity(t)
-        return self.kinematic_viscosity(np.maximum(t, self.lower_limit))
+        hold = self.hold_temperature
+        return self.kinematic_viscosity(np.maximum(t, hold) if hold else t)
 
     def operating_viscosity_at(self, t: float) -> float:
         """:meth:`operating_viscosity` on one float [K] → [m²/s] (the per-step path)."""
-        return self.viscosity_at(
-            _operating_temperature(t, self.lower_limit, self.extrapolate_below)
-        )
+        return self.viscosity_at(_operating_temperature(t, self.hold_temperature))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -265,6 +287,7 @@ def walther_from_two_points(
     name: str = "",
     lower_limit: float = 0.0,
     upper_limit: float = math.inf,
+    **flow,
 ) -> WaltherViscosity:
     """Walther/ASTM D341 fit through two measured viscosities.
 
@@ -275,6 +298,7 @@ def walther_from_two_points(
         lg lg(ν + c) is defined
     c : additive constant [cSt] (ASTM D341: 0.7)
     lower_limit, upper_limit : the lubricant's range [K] (:class:`ViscosityRange`)
+    flow : ``flow_limit`` [K] and ``below_flow_limit`` (:class:`ViscosityRange`)
 
     Returns the :class:`WaltherViscosity` with b = (Y1 − Y2)/(lg T2 − lg T1), a = Y1 + b·lg T1,
     Y = lg lg(ν[cSt] + c).
@@ -314,6 +338,7 @@ def walther_from_two_points(
         provenance=prov,
         lower_limit=lower_limit,
         upper_limit=upper_limit,
+        **flow,
     )
 
 
@@ -325,6 +350,7 @@ def walther_from_reference(
     name: str = "",
     lower_limit: float = 0.0,
     upper_limit: float = math.inf,
+    **flow,
 ) -> WaltherViscosity:
     """Walther/ASTM D341 model through the kinematic viscosities at 40 and 100 °C, the two
     numbers of every lubricant datasheet (:func:`walther_from_two_points` at 313.15 and
@@ -337,6 +363,7 @@ def walther_from_reference(
     viscosity_40, viscosity_100 : ν at 40 and 100 °C [m²/s], ν100 < ν40
     c : Walther's additive constant [cSt] (ASTM D341: 0.7)
     lower_limit, upper_limit : the lubricant's range [K] (:class:`ViscosityRange`)
+    flow : ``flow_limit`` [K] and ``below_flow_limit`` (:class:`ViscosityRange`)
 
     Returns
     -------
@@ -357,7 +384,7 @@ def walther_from_reference(
         )
     return walther_from_two_points(
         T40, nu40, T100, nu100, c=c, key=key, name=name,
-        lower_limit=lower_limit, upper_limit=upper_limit,
+        lower_limit=lower_limit, upper_limit=upper_limit, **flow,
     )  # fmt: skip
 
 
@@ -390,12 +417,12 @@ class VogelViscosity(ViscosityRange):
         check_positive("b", self.b, "K")
         check_range("t_inf", self.t_inf, unit="K")
         self._check_range()
-        coldest = min([t for t, _ in self.points] + [self.lower_limit or math.inf])
+        coldest = min([t for t, _ in self.points] + [self.coldest_use])
         if not self.t_inf < coldest:
             raise ValueError(
                 f"Vogel's T∞ = {self.t_inf:.6g} K must lie below the lowest temperature the "
-                f"law is used at ({coldest:.6g} K: the lower limit or the coldest point), "
-                "where it diverges"
+                f"law is used at ({coldest:.6g} K: the flow limit it is held at, the coldest "
+                "temperature accepted, or the coldest point), where it diverges"
             )
         self._check_held()
 
@@ -436,6 +463,7 @@ def vogel_from_points(
     name: str = "",
     lower_limit: float = 0.0,
     upper_limit: float = math.inf,
+    **flow,
 ) -> VogelViscosity:
     """Vogel's law ln ν = a + b/(T − T∞) through ≥ 3 (T [K], ν [m²/s]) points: through three
     exactly (closed form), through more by least squares in ln ν (scipy.optimize
@@ -445,8 +473,9 @@ def vogel_from_points(
     ----------
     points : sequence of (temperature [K], kinematic viscosity [m²/s]), at three or more
         different temperatures, the viscosity falling as the temperature rises
-    lower_limit, upper_limit : the lubricant's range [K] (:class:`ViscosityRange`); T∞ must lie
-        below the lower limit
+    lower_limit, upper_limit : the lubricant's range [K] (:class:`ViscosityRange`)
+    flow : ``flow_limit`` [K] and ``below_flow_limit`` (:class:`ViscosityRange`); T∞ must lie
+        below the coldest temperature the law is used at
 
     Returns
     -------
@@ -496,7 +525,7 @@ def vogel_from_points(
     return VogelViscosity(
         key=key, name=name, a=float(a), b=float(b), t_inf=float(t_inf), points=tuple(pts),
         provenance=(("a", src), ("b", src), ("t_inf", src)),
-        lower_limit=lower_limit, upper_limit=upper_limit,
+        lower_limit=lower_limit, upper_limit=upper_limit, **flow,
     )  # fmt: skip
 
 
@@ -509,7 +538,8 @@ def viscosity_model(
     name: str = "",
     lower_limit: float = 0.0,
     upper_limit: float = math.inf,
-    flow_limit: bool = True,
+    flow_limit: float = 0.0,
+    below_flow_limit: str = "hold",
 ) -> ViscosityRange:
     """The model of a lubricant known by its ν40, ν100 and optionally one more point (the
     FMU's parameters): the ASTM D341 line through ν40 and ν100 (Walther's ``walther_c``
@@ -520,10 +550,9 @@ def viscosity_model(
     viscosity_40, viscosity_100 : ν at 40 and 100 °C [m²/s], ν100 < ν40
     walther_c : Walther's c [cSt] (used without a cold point)
     cold_point : (T [K], ν [m²/s]) or None
-    lower_limit, upper_limit : the lubricant's range [K]
-    flow_limit : whether ``lower_limit`` is a flow limit (pour point, minimum temperature):
-        False makes the ASTM D341 line extrapolated below it (``extrapolate_below``; module
-        docstring)
+    lower_limit, upper_limit : the lubricant's range of data [K]
+    flow_limit : its pour point or lower operating temperature [K] (0: none published)
+    below_flow_limit : "hold" or "extrapolate" below the flow limit (module docstring)
 
     Returns
     -------
@@ -535,10 +564,11 @@ def viscosity_model(
     >>> type(v).__name__, round(float(v.kinematic_viscosity(233.15)) * 1e6)  # cSt at −40 °C
     ('VogelViscosity', 80500)
     """
+    flow = {"flow_limit": flow_limit, "below_flow_limit": below_flow_limit}
     if cold_point is None:
         return walther_from_reference(
             viscosity_40, viscosity_100, c=walther_c, key=key, name=name,
-            lower_limit=lower_limit, upper_limit=upper_limit,
-        ).extrapolating(not flow_limit)  # fmt: skip
+            lower_limit=lower_limit, upper_limit=upper_limit, **flow,
+        )  # fmt: skip
     pts = [cold_point, (T40, viscosity_40), (T100, viscosity_100)]
-    return vogel_from_points(pts, key, name, lower_limit, upper_limit)
+    return vogel_from_points(pts, key, name, lower_limit, upper_limit, **flow)
