@@ -193,6 +193,7 @@ class ServoSlave(Fmi2Slave):
         self._input_checks = _ranges(self._inputs)
         self._inputs_in_range = accessors.range_checker(tuple(self._input_checks))
         self._param_checks = _ranges(self._params)
+        self._output_checks = [c for c in _ranges(self._outputs) if c[1:] != (-math.inf, math.inf)]
         self._choices = [v for v in self._params + self._inputs if v.type == "Enumeration"]
         self._copy = accessors.copier(tuple((v.name, v.field) for v in self._outputs if v.field))
         reals = [v for v in self._outputs if v.type == "Real"]
@@ -682,11 +683,18 @@ class ServoSlave(Fmi2Slave):
         too) refuses one outside its range, naming it. An algebraic FMU's outputs are
         recomputed from its inputs before they are read again. A stepped FMU's outputs and
         hidden state are its state: from a phase that steps or has stepped, the outputs must
-        be finite (as after every step) and pass the FMU's :meth:`state_problem`; the hidden
-        state is checked by :meth:`restore_hidden_state`."""
+        be finite (as after every step), within their declared ranges, and pass the FMU's
+        :meth:`state_problem`; the hidden state is checked by :meth:`restore_hidden_state`."""
         if self.FEEDTHROUGH or self._phase not in (STEP_COMPLETE, TERMINATED):
             return ""
-        return self._nonfinite_output() or self.state_problem()
+        problem = self._nonfinite_output()
+        if problem:
+            return problem
+        for name, lo, hi in self._output_checks:
+            x = getattr(self, name)
+            if not lo <= x <= hi:
+                return f"{name} = {x!r} is outside its declared range [{lo:g}, {hi:g}]"
+        return self.state_problem()
 
     def _restore(self, state: dict):
         """Every declared field of a checked state (never anything else: the variables by
