@@ -156,7 +156,10 @@ def test_a_signal_after_the_last_check_is_raised_when_the_run_ends(signum):
     # the work: a scenario must not start its next run as if nothing came
     from servofmu.harness.interrupt import Terminated, interruptible, terminate_as_interrupt
 
-    previous = signal.getsignal(signal.SIGTERM)
+    previous = signal.getsignal(signal.SIGTERM), signal.getsignal(signal.SIGINT)
+    # Python's own Ctrl-C handler, whatever this process inherited: a shell's background job
+    # starts with SIGINT ignored, and Python then installs none
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     terminate_as_interrupt()
     try:
         with pytest.raises(KeyboardInterrupt) as caught:
@@ -165,7 +168,8 @@ def test_a_signal_after_the_last_check_is_raised_when_the_run_ends(signum):
                 assert request.requested
         assert isinstance(caught.value, Terminated) == (signum == signal.SIGTERM)
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        signal.signal(signal.SIGTERM, previous[0])
+        signal.signal(signal.SIGINT, previous[1])
 
 
 def test_sigterm_keeps_a_scenarios_results_as_ctrl_c_does(fmus, tmp_path):

@@ -323,7 +323,7 @@ def _scenario(args) -> int:
     with _mechanism(args) as mechanism:
         check_mechanism(args.name, mechanism)
         out = Path(args.out or f"out/{args.name}")
-        result = run(args.name, out, coarse=args.coarse, mechanism=mechanism)
+        result = run(args.name, out, coarse=args.coarse, mechanism=mechanism, workers=args.workers)
     print(result.to_text())
     return 0
 
@@ -850,6 +850,12 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("name", choices=SCENARIOS, help="which scenario")
     s.add_argument("--coarse", action="store_true", help="shorter runs (as the tests use)")
     s.add_argument("--out", help="directory for CSV and PNG files (default out/NAME)")
+    s.add_argument(
+        "--workers",
+        type=_count,
+        help="processes for the scenario's independent runs (chamber_transient; default: "
+        "one per core; 1: one after another)",
+    )
     add_mechanism_options(s)
     s.set_defaults(func=_scenario)
     w = sub.add_parser(

@@ -42,6 +42,7 @@ from servofmu.physics.units import DEG, NMM, ZERO_CELSIUS
 
 from .. import load_system
 from .. import run as run_system
+from ..pool import run_parallel
 from ..signals import PiecewiseLinear
 from .common import ScenarioResult, mechanism_notes, system_path
 
@@ -167,9 +168,24 @@ def library_model(system):
     return BearingModel(pair_from_parameters(values))
 
 
-def simulate(system, profile: Profile, out: Path) -> Trace:
-    """Run ``profile`` on the loaded ``system`` (results under ``out/<key>/``) and set the
-    quasi-static curve beside it."""
+def _steps(system, profile: Profile) -> int:
+    """The communication steps of ``profile`` on ``system``."""
+    return round(profile.stop / system.step_size)
+
+
+def _simulate_profile(ssp: Path, profile: Profile, out: Path, progress=False) -> Trace:
+    """:func:`simulate` on the system in ``ssp`` (loaded here: a worker process's call)."""
+    system = load_system(ssp)
+    try:
+        return simulate(system, profile, out, progress)
+    finally:
+        system.close()
+
+
+def simulate(system, profile: Profile, out: Path, progress=False) -> Trace:
+    """Run ``profile`` on the loaded ``system`` (results under ``out/<key>/``; ``progress``:
+    a progress bar to advance by the steps, see :func:`~servofmu.harness.master.run`) and set
+    the quasi-static curve beside it."""
     # the network starts soaked at the chamber's start temperature (after the variant)
     soak = {"thermal.initial_temperature": profile.chamber(0.0)}
     res = run_system(
@@ -183,7 +199,7 @@ def simulate(system, profile: Profile, out: Path) -> Trace:
         record=list(RECORD),
         out_dir=out / profile.key,
         output_interval=ROW,
-        progress=False,
+        progress=progress,
         rates={"thermal": max(1, round(THERMAL_STEP / system.step_size))},
     )
     t = res["time"]
@@ -291,22 +307,31 @@ def cycle_changes(rows: list[dict]) -> tuple[float, float]:
 
 
 # ---------------------------------------------------------------------------- the scenario
-def run(out_dir, fmu_dir=None, coarse: bool = False, mechanism=None) -> ScenarioResult:
+def run(
+    out_dir, fmu_dir=None, coarse: bool = False, mechanism=None, workers=None
+) -> ScenarioResult:
     """The scenario on ``mechanism`` (default: the standard one): the chamber profiles on its
     ``seeker_gimbal_chamber`` system (the ThermalNetwork of its parts); Ning's cycles on his
-    space bearing for the standard mechanism only."""
+    space bearing for the standard mechanism only. The profiles are independent runs, on
+    ``workers`` processes (default one per core; 1: one after another, here) behind one
+    progress bar."""
     out = Path(out_dir)
     standard = mechanism is None or mechanism.standard
     label = "Yu gimbal in air" if standard else f"{mechanism.key} in air"
     runs = [(YU, yu_profiles(coarse))] + ([(NING, ning_profiles(coarse))] if standard else [])
-    traces: dict[str, tuple[Profile, Trace]] = {}
+    calls, counts = [], []
     for name, profiles in runs:
-        system = load_system(system_path(name, fmu_dir, mechanism))
+        ssp = system_path(name, fmu_dir, mechanism)
+        system = load_system(ssp)  # checked here once, before any run
         try:
-            for profile in profiles:
-                traces[profile.key] = (profile, simulate(system, profile, out))
+            counts += [_steps(system, p) for p in profiles]
         finally:
             system.close()
+        calls += [(ssp, p, out) for p in profiles]
+    done = run_parallel(
+        _simulate_profile, calls, steps=counts, workers=workers, desc="chamber_transient"
+    )
+    traces = {p.key: (p, tr) for (_, p, _), tr in zip(calls, done, strict=True)}
     rows, changes = [], {}
     for profile, tr in traces.values():
         if profile.system == YU:
