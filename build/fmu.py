@@ -10,8 +10,8 @@ from pathlib import Path
 
 import servofmu
 from servofmu.files import OutputError, file_mode, output_folder, scratch_folder, written
-from servofmu.fmus import slave
-from servofmu.fmus.slave import BUILD_INFO, SHIPPED, package_hash
+from servofmu.fmus import declarations
+from servofmu.fmus.package_hash import BUILD_INFO, SHIPPED, package_hash
 
 from .catalogs import Defaults
 from .documentation import write_documentation
@@ -30,8 +30,9 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
     """Build FMU ``name`` (one of :data:`FMUS`) into ``out_dir``; returns the .fmu path.
 
     The FMU carries what it runs of the servofmu package in ``resources/servofmu`` (the parts
-    :data:`~servofmu.fmus.slave.SHIPPED`: the package ``__init__``, ``physics/`` with its data
-    and ``fmus/``; every FMU the same copy, so that several FMUs can share one interpreter),
+    :data:`~servofmu.fmus.package_hash.SHIPPED`: the package ``__init__``, ``physics/`` with
+    its data and ``fmus/``; every FMU the same copy, so that several FMUs can share one
+    interpreter),
     ``resources/servofmu_build.json`` (the hash of those parts, checked at instantiation, and
     the build's start values when ``defaults`` name presets), ``resources/presets/`` (the
     catalogue's presets as SSP parameter sets, BearingFriction and ActuatorStiffness) and
@@ -56,9 +57,9 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
     problems = start_value_problems(name, start)
     if problems:  # the FMU would refuse its own start values: it is not packed
         raise ValueError(f"{name}: " + "; ".join(problems))
-    slave.BUILD_START.clear()
+    declarations.BUILD_START.clear()
     if start:
-        slave.BUILD_START[name] = start
+        declarations.BUILD_START[name] = start
     try:
         with scratch_folder("servofmu_build_") as tmp:
             tmp = Path(tmp)
@@ -95,7 +96,7 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
             with written(path) as part:  # whole under its name, never half-written
                 shutil.copyfile(built, part)
     finally:
-        slave.BUILD_START.clear()
+        declarations.BUILD_START.clear()
     return path
 
 
@@ -129,7 +130,7 @@ def start_value_problems(name: str, start: dict) -> list[str]:
 
     cls = getattr(importlib.import_module(f"servofmu.fmus.{name}"), name)
     problems = []
-    for v in slave.variables_of(cls, start):
+    for v in declarations.variables_of(cls, start):
         if v.start is None or v.causality == "output" or isinstance(v.start, str):
             continue
         where = f"start value {v.name} = {v.start!r}"

@@ -75,13 +75,14 @@ import math  # noqa: E402
 
 from pythonfmu.enums import Fmi2Status  # noqa: E402
 
+from servofmu.fmus.declarations import output, real_input, spec_parameter  # noqa: E402
 from servofmu.fmus.part_temperatures import (  # noqa: E402
     TEMPERATURE_INPUTS,
     part_inputs,
     temperature_mode_parameter,
     temperatures,
 )
-from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter  # noqa: E402
+from servofmu.fmus.runtime import ServoSlave  # noqa: E402
 from servofmu.physics import continuation  # noqa: E402
 from servofmu.physics.bearing import BearingModel  # noqa: E402
 from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in  # noqa: E402
@@ -112,8 +113,8 @@ def _out(name, description, unit, display=None, *, depends=_LOADS, groups=_STATE
     return output(
         name,
         description,
-        unit,
-        display,
+        unit=unit,
+        display_unit=display,
         type=kw.pop("kind", "Real"),
         depends=depends,
         initial_depends=(*depends, "temperature_mode", *parameters_in(*groups)),
@@ -158,39 +159,37 @@ class BearingFriction(ServoSlave):
         real_input(
             "temperature",
             "Temperature of bearings, frame and shaft (temperature_mode uniform)",
-            293.15,
-            "K",
-            "degC",
-            173.15,
-            473.15,
+            start=293.15,
+            unit="K",
+            display_unit="degC",
+            min=173.15,
+            max=473.15,
         ),
         *part_inputs(),
         real_input(
             "speed",
             "Speed of the shaft relative to the housing (signed)",
-            0.0,
-            "rad/s",
-            "rpm",
-            -1.0e4,
-            1.0e4,
+            start=0.0,
+            unit="rad/s",
+            display_unit="rpm",
+            min=-1.0e4,
+            max=1.0e4,
         ),
         real_input(
             "axial_load",
             "External axial load on the shaft, positive towards bearing A",
-            0.0,
-            "N",
-            None,
-            -1.0e5,
-            1.0e5,
+            start=0.0,
+            unit="N",
+            min=-1.0e5,
+            max=1.0e5,
         ),
         real_input(
             "radial_load",
             "External radial load, shared by the two bearings",
-            0.0,
-            "N",
-            None,
-            -1.0e5,
-            1.0e5,
+            start=0.0,
+            unit="N",
+            min=-1.0e5,
+            max=1.0e5,
         ),
         _out(
             "friction_torque",

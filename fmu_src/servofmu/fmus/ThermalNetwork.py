@@ -34,7 +34,8 @@ import math  # noqa: E402
 
 from pythonfmu.enums import Fmi2Status  # noqa: E402
 
-from servofmu.fmus.slave import Item, ServoSlave, Var  # noqa: E402
+from servofmu.fmus.declarations import Item, Var  # noqa: E402
+from servofmu.fmus.runtime import ServoSlave  # noqa: E402
 from servofmu.physics import thermal_network as tn  # noqa: E402
 
 _P = tn.preset("yu2017_gimbal_chamber")
@@ -289,7 +290,7 @@ class ThermalNetwork(ServoSlave):
                 ref = tuple(t)
         else:
             ref = None
-        new = tn._step(  # inputs checked by the slave
+        new = tn.step_unchecked(  # inputs checked by the slave
             self.network,
             t,
             self.ambient_temperature,
@@ -311,6 +312,14 @@ class ThermalNetwork(ServoSlave):
 
     def _state(self):
         return [getattr(self, n) for n, _ in _OUTPUTS]
+
+    def state_problem(self):
+        # a restored state holds temperatures a step could give (advance's rule)
+        for name, _ in _OUTPUTS:
+            t = getattr(self, name)
+            if not (math.isfinite(t) and t > 0.0):
+                return f"{name} = {t!r} K is not a temperature (finite, > 0 K)"
+        return ""
 
     def _set_state(self, values):
         for (name, _), v in zip(_OUTPUTS, values, strict=True):
