@@ -5,7 +5,7 @@ BIN     = $(VENV)/bin
 STAMP   = $(VENV)/.installed-stamp
 OUT    ?= out
 
-.PHONY: run test test-long bench lint docs clean system-deps
+.PHONY: run test test-long bench lint docs clean system-deps dist
 
 # setup.py compiles the FMU export library (build/export/) and the pair kernels
 # (physics/pair_kernels.py) at install: an edit there reinstalls
@@ -44,6 +44,13 @@ docs: $(STAMP)
 ## long mode: full-size fuzzing (10,000 cases per FMU) and soaks (1,000,000 steps); ~1 h
 test-long: $(STAMP) system-deps lint
 	$(BIN)/python -m pytest --long tests/test_robustness.py tests/test_archives.py
+
+## release: the sdist from the checkout, then the wheel from the sdist, into dist/ (the PyPA
+## frontend runs outside the checkout: the project's own build/ folder would shadow its package)
+dist: $(STAMP)
+	rm -rf dist && mkdir dist
+	cd "$$(mktemp -d)" && $(CURDIR)/$(BIN)/pyproject-build --sdist --outdir $(CURDIR)/dist $(CURDIR) \
+	  && $(CURDIR)/$(BIN)/pyproject-build --wheel --outdir $(CURDIR)/dist $(CURDIR)/dist/servofmu-*.tar.gz
 
 lint: $(STAMP)
 	$(BIN)/ruff check .
