@@ -82,12 +82,12 @@ TANDEM = {
 }
 #: The speed table's aims: loop label → largest ratio to the empty FMU.
 AIMS = {
-    "BearingFriction (speed changes)": 1.2,
-    "BearingFriction (ramp -60..+80 degC, 20 N axial)": 1.5,
-    "BearingFriction (ramp, axial 10-30 N, radial 0-20 N)": 2.0,
-    "BearingFriction tandem (ramp -60..+80 degC, 20 N axial)": 2.0,
-    "ThermalNetwork (chamber ramp, power loss changes)": 1.3,
-    "ActuatorStiffness": 1.5,
+    "BearingFriction (speed changes)": 1.0,
+    "BearingFriction (ramp -60..+80 degC, 20 N axial)": 1.3,
+    "BearingFriction (ramp, axial 10-30 N, radial 0-20 N)": 1.6,
+    "BearingFriction tandem (ramp -60..+80 degC, 20 N axial)": 1.6,
+    "ThermalNetwork (chamber ramp, power loss changes)": 1.0,
+    "ActuatorStiffness": 1.3,
 }
 
 # inputs changed every step (value at step k), the output read back, parameters set
