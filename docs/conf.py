@@ -93,6 +93,9 @@ html_theme_options = {
     "footer_end": [],
 }
 html_context = {"default_mode": "light"}
+# the validation reports' nine-column row tables take the whole width: no section navigation
+# (the breadcrumbs and the Validation page lead back)
+html_sidebars = {"_generated/validation/*": []}
 
 
 def _bars_are_absolute_values(app, what, name, obj, options, lines):
