@@ -22,7 +22,7 @@ import hashlib
 import sys
 from pathlib import Path
 
-from setuptools import Extension, setup
+from setuptools import Extension, find_namespace_packages, setup
 
 HERE = Path(__file__).parent
 EXPORT = "build/export/src"
@@ -67,6 +67,30 @@ def compiled_kernels() -> list[Extension]:
         return []
 
 
+#: The folders that hold the package's parts: {package name: (folder, the subpackages to
+#: ship, None: all)}. Every folder below them is a package (a data folder too: setuptools then
+#: ships its files, pyproject.toml's package-data, without a warning); caches and build output
+#: are not.
+PACKAGE_ROOTS = {
+    "servofmu": ("fmu_src/servofmu", None),
+    "servofmu.build": ("build", ("export", "export.*", "model_descriptions")),
+    "servofmu.harness": ("harness", None),
+    "servofmu.ssp": ("ssp", None),
+    "servofmu.examples": ("examples", None),
+}
+
+
+def packages() -> list[str]:
+    """Every package and data folder under :data:`PACKAGE_ROOTS` (their folders mapped by
+    pyproject.toml's package-dir)."""
+    found = []
+    for name, (folder, include) in PACKAGE_ROOTS.items():
+        chosen = {"include": include} if include else {}
+        subs = find_namespace_packages(folder, exclude=("*__pycache__*", "out", "out.*"), **chosen)
+        found += [name, *(f"{name}.{sub}" for sub in subs)]
+    return found
+
+
 def export_library() -> list[Extension]:
     """servofmu's FMI 2.0 export library (none outside Linux)."""
     if not sys.platform.startswith("linux"):  # the FMUs carry pythonfmu's binary elsewhere
@@ -87,4 +111,4 @@ def export_library() -> list[Extension]:
     ]
 
 
-setup(ext_modules=[*compiled_kernels(), *export_library()])
+setup(packages=packages(), ext_modules=[*compiled_kernels(), *export_library()])
