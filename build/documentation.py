@@ -43,7 +43,7 @@ def slave_class(name: str):
     --------
     >>> cls = slave_class("DCMotor")
     >>> cls.__name__, cls.__module__, cls.PHYSICS
-    ('DCMotor', 'servofmu.fmus.DCMotor', ('servofmu.physics.motor',))
+    ('DCMotor', 'servofmu.fmus.DCMotor', ('servofmu.physics.drives.motor',))
     """
     return getattr(importlib.import_module(f"servofmu.fmus.{name}"), name)
 
@@ -537,7 +537,7 @@ def _presets_rst(name: str) -> str:
     """What the presets inside the FMU are, and the catalogue entries they come from."""
     if name not in ("BearingFriction", "ActuatorStiffness"):
         return ""
-    from servofmu.physics import catalog
+    from servofmu.parameters import catalog
 
     prefix = "support\\_…" if name == "ActuatorStiffness" else ""
     kinds = ("mountings", "bearings") if prefix else ("mountings", "bearings", "lubricants")
@@ -607,7 +607,7 @@ def _build_defaults_rst(name: str, mechanism) -> str:
     (ActuatorStiffness); "" for the other FMUs or without a mechanism."""
     if mechanism is None or name not in ("BearingFriction", "ThermalNetwork", "ActuatorStiffness"):
         return ""
-    from servofmu.physics import catalog
+    from servofmu.parameters import catalog
 
     m = mechanism
     where = ", ".join(f for f, _ in m.catalogue_hashes) or "the package's catalogue"

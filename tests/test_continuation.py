@@ -1,4 +1,4 @@
-"""The per-step continuation (physics/pair_kernels.py, compiled and not) against the exact
+"""The per-step continuation (physics/pair/continuation.py, compiled and not) against the exact
 vectorised path.
 
 Every BearingFriction output of BearingModel.evaluate must equal operating_outputs (bracketing
@@ -25,7 +25,8 @@ from hypothesis import strategies as st
 from kernels import implementations, models
 from scipy.special import ellipe, ellipk
 
-from servofmu.physics import catalog, pair_kernels
+from servofmu.parameters import catalog
+from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 from servofmu.physics.bearing import (
     BearingModel,
     BearingPair,
@@ -33,11 +34,11 @@ from servofmu.physics.bearing import (
     operating_outputs,
     with_mounting,
 )
-from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
-from servofmu.physics.continuation import PURE_PYTHON
-from servofmu.physics.friction import ball_torque_terms
-from servofmu.physics.grease_torque import GreaseTorqueTerm
-from servofmu.physics.hertz import curvature_difference_of_ellipticity, ellipticity
+from servofmu.physics.compiled import PURE_PYTHON
+from servofmu.physics.contact.hertz import curvature_difference_of_ellipticity, ellipticity
+from servofmu.physics.friction.grease import GreaseTorqueTerm
+from servofmu.physics.friction.terms import ball_torque_terms
+from servofmu.physics.pair import continuation as pair_kernels
 
 REL = 1e-9
 # the axial play is h − a near zero clearance, h = √(A·Pd) there: Pd's rounding (1e-17 m on
@@ -582,7 +583,7 @@ def test_failed_warm_start_and_failed_exact_solve_name_the_point(monkeypatch, im
     # then its cold start in stages) and the exact path solves the step; when that fails
     # too, the call raises a ValueError naming temperatures and loads, and the model keeps
     # its state. The kernels fail by themselves, compiled or not (nothing replaced in them).
-    from servofmu.physics import bearing as bm
+    from servofmu.physics.pair import model as bm
 
     pair = PAIRS["yu_printed"]()
     model = BearingModel(pair, impl)
@@ -665,7 +666,8 @@ def test_random_trajectories_equal_the_exact_path(name, model, grease, parts, st
 _WITHOUT_CYTHON = """
 import json, sys
 sys.modules["cython"] = None  # as on a host without Cython: the package's own shadow names
-from servofmu.physics import continuation, pair_kernels
+from servofmu.physics import compiled as continuation
+from servofmu.physics.pair import continuation as pair_kernels
 from servofmu.physics.bearing import BearingModel, BearingPair
 assert pair_kernels.cython.__name__ == "servofmu.physics._cython_shadow", pair_kernels.cython
 pair = BearingPair.from_catalog("yu2017_gimbal_printed", "krytox_143aa")

@@ -10,7 +10,7 @@ import re
 import pytest
 from fmu_helpers import Fmu
 
-from servofmu.physics.control import PIDParameters, PIDState, pid_sample
+from servofmu.physics.drives.control import PIDParameters, PIDState, pid_sample
 
 #: K_p = 2, K_i = 10 /s, K_d = 0.01 s, T_f = T_s = 1 ms
 GAINS = dict(kp=2.0, ki=10.0, kd=0.01, derivative_filter=1e-3, sample_period=1e-3)

@@ -12,7 +12,7 @@ import pytest
 from fmu_helpers import Fmu
 from scipy.integrate import solve_ivp
 
-from servofmu.physics import motor
+from servofmu.physics.drives import motor
 
 #: Not the defaults, and k_t ≠ k_e, so that a swapped or scaled constant shows.
 P = motor.DCMotorParameters(

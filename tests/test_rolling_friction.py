@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from servofmu.physics import catalog
-from servofmu.physics import rolling_friction as rf
+from servofmu.parameters import catalog
+from servofmu.physics.friction import skf2004 as rf
 from servofmu.physics.units import RPM
 
 # 6204 (d = 20, D = 47 mm) with the series-62 constants; 7205 (25 × 52) with 72 B's.

@@ -14,7 +14,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from xml.etree.ElementTree import Comment, Element, SubElement, register_namespace, tostring
 
-from .physics.bearing_parameters import PARAMETERS
+from .parameters.bearing import PARAMETERS
 
 SSV_NS = "http://ssp-standard.org/SSP1/SystemStructureParameterValues"
 #: The ParameterSet name of every .ssv of servofmu (ecos applies one name only).
@@ -100,7 +100,7 @@ def ssv_value(spec, value) -> tuple[str, str, str | None]:
 
     Examples
     --------
-    >>> from servofmu.physics.bearing_parameters import parameter
+    >>> from servofmu.parameters.bearing import parameter
     >>> ssv_value(parameter("lubrication"), "solid"), ssv_value(parameter("bore"), 0.017)
     (('Integer', '2', 'solid'), ('Real', '0.017', None))
     """

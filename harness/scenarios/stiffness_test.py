@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from servofmu.papers.liu2014 import KEY, TABLE1, TEST_ANGLE
-from servofmu.physics.actuator import Actuator, per_degree, stiffness_breakdown
+from servofmu.physics.drives.actuator import Actuator, per_degree, stiffness_breakdown
 from servofmu.physics.units import DEG
 
 from .. import load_system

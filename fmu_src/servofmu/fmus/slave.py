@@ -130,7 +130,7 @@ _FMI_TYPES = ("Real", "Integer", "Boolean", "String")
 _DEFAULT = {"Real": 0.0, "Integer": 0, "Boolean": False, "String": ""}
 _DESCRIBING = "describing"  # the build writes the modelDescription (reads the start values)
 #: Package parts that run inside an FMU (the build ships and hashes exactly these).
-SHIPPED = ("__init__.py", "physics", "fmus")
+SHIPPED = ("__init__.py", "physics", "parameters", "fmus")
 #: Start values (and their provenance) that a build gives an FMU instead of its class's
 #: defaults (``servofmu build --catalog/--preset``): {model name: {variable: (start,
 #: source)}}, set by the build process; a built FMU reads its own from
@@ -241,7 +241,7 @@ def items(choices) -> tuple[Item, ...]:
 
 def spec_parameter(spec) -> Var:
     """The parameter variable of a physics parameter specification (an object with the
-    attributes of :class:`servofmu.physics.bearing_parameters.ParameterSpec`)."""
+    attributes of :class:`servofmu.parameters.bearing.ParameterSpec`)."""
     choice = spec.type == "Enumeration"
     return Var(
         name=spec.name,

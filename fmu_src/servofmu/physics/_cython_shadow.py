@@ -1,4 +1,4 @@
-"""The names of Cython's pure-Python mode that :mod:`.pair_kernels` uses, for an interpreter
+"""The names of Cython's pure-Python mode that :mod:`.pair.continuation` uses, for an interpreter
 without Cython (an FMU's host needs numpy and scipy only): decorators that return what they
 decorate, type names that are only read in annotations, and ``compiled = False``. With
 Cython installed its own ``cython`` module (Cython.Shadow) takes this place; compiled, the

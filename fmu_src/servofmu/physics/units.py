@@ -103,7 +103,7 @@ def rad_per_s_to_rpm(omega):
     return omega / RPM
 
 
-# Factors to SI for the unit strings allowed in the data files (physics/data/*.toml).
+# Factors to SI for the unit strings allowed in the data files (parameters/data/*.toml).
 TO_SI = {
     "m": 1.0,
     "mm": MM,
