@@ -99,7 +99,11 @@ def compiled_kernels() -> list[Extension]:
             Extension(
                 ".".join(p for p in ("servofmu.physics", parent, f"_{leaf}") if p),
                 sources=[str(_generated(name))],
-                extra_compile_args=[] if sys.platform == "win32" else ["-O2", "-g0"],
+                # Cython's C for a tuple of C doubles from Python leaves gcc unsure that it is
+                # filled on every path (it is: a conversion error raises first)
+                extra_compile_args=[]
+                if sys.platform == "win32"
+                else ["-O2", "-g0", "-Wno-maybe-uninitialized"],
                 optional=True,  # no C compiler: the Python path
             )
         )
@@ -152,7 +156,9 @@ def export_library() -> list[Extension]:
             include_dirs=[EXPORT],
             define_macros=[("Py_LIMITED_API", "0x030B0000")],
             py_limited_api=True,
-            extra_compile_args=["-std=c++17", "-g0"],  # no debug information: 0.4 MB, not 5
+            # no debug information: 0.4 MB, not 5; pythonfmu's sources compare an int index with
+            # a size_t count
+            extra_compile_args=["-std=c++17", "-g0", "-Wno-sign-compare"],
             language="c++",
             optional=True,
         )

@@ -26,7 +26,7 @@ import numpy as np
 from servofmu.parameters import catalog
 from servofmu.parameters.bearing import PARAMETER_NAMES, default_parameters
 from servofmu.parameters.presets import coefficient_set
-from servofmu.physics.units import DEG, NMM, UM, celsius_to_kelvin
+from servofmu.physics.kernels.units import DEG, NMM, UM, celsius_to_kelvin
 
 from .scenarios.common import ScenarioResult
 from .sweep import ModelTask, Uniform, cross, grid_points, run_sweep, sample_points

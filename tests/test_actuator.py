@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from servofmu.physics.drives import actuator as A
-from servofmu.physics.units import DEG
+from servofmu.physics.kernels.units import DEG
 
 
 @pytest.fixture(scope="module")

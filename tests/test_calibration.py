@@ -18,7 +18,7 @@ from servofmu.calibration import (
 )
 from servofmu.calibration.synthetic import synthesise, write_measurements
 from servofmu.parameters.bearing import default_parameters
-from servofmu.physics.units import DEG, celsius_to_kelvin
+from servofmu.physics.kernels.units import DEG, celsius_to_kelvin
 
 TEMPS = celsius_to_kelvin(np.arange(-40.0, 61.0, 10.0))
 PRINTED = default_parameters("yu2017_gimbal_printed")

@@ -14,7 +14,7 @@ import pytest
 from servofmu.parameters import catalog
 from servofmu.parameters.catalog import PROVENANCE_KINDS, bearing_from_entry
 from servofmu.physics.contact import geometry
-from servofmu.physics.units import CST, UM
+from servofmu.physics.kernels.units import CST, UM
 
 SERIES = ("718", "719", "70", "72", "618", "60", "62")
 

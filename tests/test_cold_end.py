@@ -20,13 +20,13 @@ from pythonfmu.enums import Fmi2Status
 from servofmu.parameters import catalog
 from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 from servofmu.physics.bearing import BearingModel
+from servofmu.physics.kernels.units import CST
 from servofmu.physics.lubrication.viscosity import (
     VogelViscosity,
     viscosity_model,
     vogel_from_points,
     walther_from_reference,
 )
-from servofmu.physics.units import CST
 
 KRYTOX_LOWER = 233.15  # K: -40 °C, the lower end of Yu's use of his fit (lubricants.toml)
 FLOW = 213.15  # K: a flow limit given as a parameter (Krytox 143AA has none published)

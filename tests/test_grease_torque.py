@@ -8,7 +8,7 @@ import pytest
 
 from servofmu.parameters import catalog
 from servofmu.physics.friction import grease as gt
-from servofmu.physics.units import RPM
+from servofmu.physics.kernels.units import RPM
 
 W1 = 1.0 * RPM  # 1 r/min
 

@@ -37,7 +37,7 @@ from pathlib import Path
 
 import numpy as np
 
-from servofmu.physics.units import DEG, NMM, ZERO_CELSIUS
+from servofmu.physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 
 from .. import load_system
 from .. import run as run_system

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from servofmu.physics.units import DEG, NMM, celsius_to_kelvin
+from servofmu.physics.kernels.units import DEG, NMM, celsius_to_kelvin
 
 from .. import load_system
 from .. import run as run_system

@@ -20,7 +20,7 @@ import numpy as np
 
 from servofmu.papers.liu2014 import KEY, TABLE1, TEST_ANGLE
 from servofmu.physics.drives.actuator import Actuator, per_degree, stiffness_breakdown
-from servofmu.physics.units import DEG
+from servofmu.physics.kernels.units import DEG
 
 from .. import load_system
 from .. import run as run_system

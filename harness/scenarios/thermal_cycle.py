@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from servofmu.physics.units import NMM, UM, celsius_to_kelvin
+from servofmu.physics.kernels.units import NMM, UM, celsius_to_kelvin
 
 from .. import load_system
 from .. import run as run_system

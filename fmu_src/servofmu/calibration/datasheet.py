@@ -44,7 +44,7 @@ from ..physics.friction.grease import (
     grease_torque_points,
     torque_test,
 )
-from ..physics.units import CST, RPM, kelvin_to_celsius
+from ..physics.kernels.units import CST, RPM, kelvin_to_celsius
 from .fit import UNREPLICATED_LIMIT
 
 #: The parameters a datasheet calibration writes, in the order of the parameter table: the

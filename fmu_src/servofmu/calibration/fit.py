@@ -52,7 +52,7 @@ from scipy.stats import f as f_distribution
 
 from ..parameters.bearing import PARAMETER_NAMES, pair_from_parameters
 from ..physics.bearing import operating_outputs
-from ..physics.units import DEG
+from ..physics.kernels.units import DEG
 from .measurements import FrictionMeasurements
 
 

@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from ..parameter_sets import write_ssv
-from ..physics.units import DEG, NMM, ZERO_CELSIUS
+from ..physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 from .fit import UNKNOWNS, Calibration, running_torque
 
 #: Plot markers of the measured points per direction.

@@ -24,7 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
-from servofmu.physics.units import DEG, GRAM_FORCE_CM, RPM, ZERO_CELSIUS, to_si
+from servofmu.physics.kernels.units import DEG, GRAM_FORCE_CM, RPM, ZERO_CELSIUS, to_si
 
 from .standard import (
     BASES,

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-from servofmu.physics.units import DEG, NMM, ZERO_CELSIUS
+from servofmu.physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 
 from .inputs import CASES
 from .standard import CATEGORIES, TERMS

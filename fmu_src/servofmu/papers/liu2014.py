@@ -36,7 +36,7 @@ from ..physics.drives.actuator import (
     stiffness_breakdown,
     support_axial_stiffness,
 )
-from ..physics.units import DEG, MM, celsius_to_kelvin
+from ..physics.kernels.units import DEG, MM, celsius_to_kelvin
 from .common import bearing_parameters, material_parameters, mounting_parameters
 from .report import (
     MEASURED_CHANGE,

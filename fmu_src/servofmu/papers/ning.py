@@ -29,8 +29,8 @@ from scipy.optimize import brentq
 
 from ..parameters import catalog
 from ..physics.bearing import BearingModel, BearingPair, with_mounting
+from ..physics.kernels.units import MM, NMM, RPM, UM, celsius_to_kelvin
 from ..physics.thermal.fits import mounted_geometry
-from ..physics.units import MM, NMM, RPM, UM, celsius_to_kelvin
 from .common import bearing_parameters, material_parameters, mounting_parameters
 from .report import (
     MEASURED_CHANGE,

@@ -48,8 +48,8 @@ from ..physics.friction.grease import (
 )
 from ..physics.friction.skf2004 import MU_BOUNDARY, MU_EHL, skf_constants, skf_friction
 from ..physics.friction.terms import palmgren_viscous_torque
+from ..physics.kernels.units import CST, NMM, RPM, kelvin_to_celsius
 from ..physics.lubrication.viscosity import T40, T100, VogelViscosity, walther_from_reference
-from ..physics.units import CST, NMM, RPM, kelvin_to_celsius
 from .report import (
     MEASURED_TORQUE,
     VISCOSITY_FIT,

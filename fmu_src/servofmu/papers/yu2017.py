@@ -35,9 +35,9 @@ from scipy.optimize import brentq
 from ..parameters import catalog
 from ..physics.bearing import BearingModel, BearingPair, loop_stiffness, with_mounting
 from ..physics.friction.terms import FrictionCoefficients
+from ..physics.kernels.units import DEG, MM, NMM, UM, celsius_to_kelvin
 from ..physics.pair.preload import loop_interference
 from ..physics.thermal.fits import mounted_geometry
-from ..physics.units import DEG, MM, NMM, UM, celsius_to_kelvin
 from .common import bearing_parameters, material_parameters, mounting_parameters
 from .report import (
     PAPER_MODEL,

@@ -39,13 +39,13 @@ from ..physics.friction.grease import GreaseTorqueTerm
 from ..physics.friction.models import FrictionModel
 from ..physics.friction.skf2004 import SkfConstants
 from ..physics.friction.terms import FrictionCoefficients
+from ..physics.kernels.units import CST
 from ..physics.lubrication.viscosity import T40, T100, viscosity_model
 from ..physics.materials import Material
 from ..physics.pair.configuration import BearingPair
 from ..physics.pair.mounting import Mounting
 from ..physics.pair.preload import ARRANGEMENTS, TANDEM, LoopMember, PreloadLoop, YokeArm
 from ..physics.thermal.fits import RadialFit
-from ..physics.units import CST
 from .presets import (
     DEFAULT_LUBRICANT,
     DEFAULT_MOUNTING,

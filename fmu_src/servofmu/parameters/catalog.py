@@ -20,6 +20,7 @@ from ..physics.contact.geometry import (
     clearance_from_group,
     free_contact_angle,
 )
+from ..physics.kernels.units import MM, UM, to_si
 from ..physics.lubrication.lubricant import LubricantRecord, TorqueTest
 from ..physics.lubrication.viscosity import (
     T40,
@@ -34,7 +35,6 @@ from ..physics.materials import Material
 from ..physics.pair.mounting import Mounting
 from ..physics.pair.preload import LoopMember, PreloadLoop, YokeArm
 from ..physics.thermal.fits import RadialFit
-from ..physics.units import MM, UM, to_si
 
 PROVENANCE_KINDS = ("paper", "catalogue", "handbook", "assumed", "calibrated", "derived")
 

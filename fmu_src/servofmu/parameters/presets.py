@@ -20,12 +20,12 @@ from ..physics.friction.grease import lubricant_term
 from ..physics.friction.models import SKF_SOURCES, FrictionModel, lubricant_numbers
 from ..physics.friction.models import preset as friction_preset
 from ..physics.friction.terms import FrictionCoefficients
+from ..physics.kernels.units import CST, RPM
 from ..physics.lubrication.viscosity import T40, T100, VogelViscosity
 from ..physics.materials import Material
 from ..physics.pair.configuration import PRESSURE_LIMIT
 from ..physics.pair.mounting import Mounting
 from ..physics.pair.preload import TANDEM, LoopMember, member_kind
-from ..physics.units import CST, RPM
 from . import catalog
 from .table import LUBRICANT_FIELDS, PARAMETER_NAMES, SKF_SERIES_FIELDS
 

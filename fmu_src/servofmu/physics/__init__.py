@@ -10,7 +10,7 @@ laid out in layers (``docs/development.md``, "Layout"):
   solves, the continuation and :class:`~.pair.model.BearingModel`) and :mod:`.drives`
   (actuator, motor, control);
 - :mod:`.bearing`: the face of the bearing model (its public names in one place);
-- :mod:`.units`, :mod:`.materials` and the argument checks beside everything.
+- :mod:`.materials` and the argument checks beside everything.
 
 The catalogues, presets and parameter tables are :mod:`servofmu.parameters`. The modules'
 former names (:data:`MOVED`) stay importable: ``servofmu.physics.catalog`` is
@@ -27,6 +27,8 @@ import sys
 #: The former modules of the package, by their former name under ``servofmu.physics``, and
 #: where each lives now: importing the former name gives that module itself.
 MOVED = {
+    "units": "servofmu.physics.kernels.units",
+    "_cython_shadow": "servofmu.physics.kernels._cython_shadow",
     "geometry": "servofmu.physics.contact.geometry",
     "hertz": "servofmu.physics.contact.hertz",
     "equilibrium": "servofmu.physics.contact.equilibrium",

@@ -28,7 +28,18 @@ from pathlib import Path
 PURE_PYTHON = "SERVOFMU_PURE_PYTHON"
 #: The modules compiled by the build (dotted names under :mod:`servofmu.physics`), each
 #: after the modules it calls in C. ``setup.py`` reads this tuple.
-MODULES = ("pair.continuation",)
+MODULES = (
+    "kernels.elementary",
+    "kernels.viscosity",
+    "kernels.lame",
+    "kernels.contact",
+    "kernels.friction",
+    "pair.rows",
+    "pair.point",
+    "pair.constants",
+    "pair.balls",
+    "pair.continuation",
+)
 
 _HERE = Path(__file__).resolve().parent
 

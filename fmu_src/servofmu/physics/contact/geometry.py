@@ -23,8 +23,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._checks import check_finite, check_positive, check_range
+from ..kernels.units import MM, UM
 from ..materials import Material, reduced_compliance
-from ..units import MM, UM
 
 
 def ball_diameter_from_grooves(

@@ -93,8 +93,8 @@ from .._checks import (
     check_positive,
     check_range,
 )
+from ..kernels.units import DEG
 from ..thermal.temperatures import PartTemperatures
-from ..units import DEG
 
 
 @dataclass(frozen=True)

@@ -62,7 +62,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .._checks import check_finite, check_positive, check_range
-from ..units import RPM
+from ..kernels.units import RPM
 from .terms import palmgren_viscous_torque
 
 

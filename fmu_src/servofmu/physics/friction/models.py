@@ -51,7 +51,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._checks import check_choice, check_nonnegative, check_range
-from ..units import CST, MM, NMM, RPM
+from ..kernels.friction import palmgren_torque
+from ..kernels.units import CST, MM, NMM, RPM
 from .ehl_per_contact import contact_rolling_torque
 from .grease import GreaseTorqueTerm
 from .skf2004 import (
@@ -62,7 +63,6 @@ from .skf2004 import (
     _pair_moments,
     _pair_starting,
 )
-from .terms import _palmgren
 
 FRICTION_MODELS = ("yu2017", "skf2004", "ehl_per_contact")
 #: Density assumed for a lubricant without a recorded one [kg/m³] (a hydrocarbon oil).
@@ -309,7 +309,7 @@ def grease_running(pair, kinematic_viscosity, speed):
     g = pair.friction.grease
     if g is None:
         return 0.0
-    return 2.0 * _palmgren(kinematic_viscosity, speed, mean_diameter(pair.bearing), g.f0)
+    return 2.0 * palmgren_torque(kinematic_viscosity, speed, mean_diameter(pair.bearing), g.f0)
 
 
 def grease_rest_and_start(pair, kinematic_viscosity):
@@ -340,8 +340,8 @@ def grease_rest_and_start(pair, kinematic_viscosity):
     if g is None:
         return 0.0, 0.0
     dm = mean_diameter(pair.bearing)
-    rest = _palmgren(kinematic_viscosity, 0.0, dm, g.f0)
-    start = g.starting_ratio * _palmgren(kinematic_viscosity, g.reference_speed, dm, g.f0)
+    rest = palmgren_torque(kinematic_viscosity, 0.0, dm, g.f0)
+    start = g.starting_ratio * palmgren_torque(kinematic_viscosity, g.reference_speed, dm, g.f0)
     maximum = max if type(start) is float and type(rest) is float else np.maximum
     return 2.0 * rest, 2.0 * maximum(start, rest)
 

@@ -38,7 +38,7 @@ and the starting torque (:math:`n \to 0`: :math:`\phi_\mathrm{bl} = 1`,
 
 The catalogue writes every equation in its own units: dm, d, D [mm], F [N], n [r/min],
 ν [mm²/s], M [N·mm]. The functions here take and return SI (m, N, rad/s, m²/s, N·m) and
-convert at the edge (:mod:`servofmu.physics.units`).
+convert at the edge (:mod:`servofmu.physics.kernels.units`).
 
 Sources (see also ``data/skf_friction.toml``):
 
@@ -69,7 +69,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._checks import check_choice, check_finite, check_nonnegative, check_positive, check_range
-from ..units import CST, MM, NMM, RPM
+from ..kernels.units import CST, MM, NMM, RPM
 
 BEARING_TYPES = ("deep_groove", "angular_contact")
 

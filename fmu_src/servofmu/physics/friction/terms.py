@@ -52,18 +52,18 @@ from .._checks import (
     check_positive,
     check_range,
 )
-from ..pair.continuation import (  # the kernels (floats or arrays) shared with the per-step path
+from ..kernels.friction import (  # the equations, shared with the per-step path
     HEATHCOTE as HEATHCOTE,
 )
-from ..pair.continuation import (
+from ..kernels.friction import (
     PALMGREN_THRESHOLD as PALMGREN_THRESHOLD,
 )
-from ..pair.continuation import (
-    _heathcote,
-    _hysteresis,
-    _palmgren,
-    _regularised,
-    _spin,
+from ..kernels.friction import (
+    contact_spin_moment,
+    heathcote_force,
+    hysteresis_force,
+    palmgren_torque,
+    regularised_torque,
 )
 
 
@@ -128,7 +128,7 @@ def hysteresis_rolling_force(load, semi_minor_axis, ball_diameter, loss_factor):
     check_nonnegative("semi_minor_axis", semi_minor_axis, "m")
     check_positive("ball_diameter", ball_diameter, "m")
     check_range("loss_factor", loss_factor, 0.0, 1.0)
-    return _hysteresis(load, semi_minor_axis, ball_diameter, loss_factor)
+    return hysteresis_force(load, semi_minor_axis, ball_diameter, loss_factor)
 
 
 def spin_moment(load, semi_major_axis, e_integral, friction_coefficient):
@@ -150,7 +150,7 @@ def spin_moment(load, semi_major_axis, e_integral, friction_coefficient):
     check_nonnegative("semi_major_axis", semi_major_axis, "m")
     check_range("e_integral", e_integral, 1.0, np.pi / 2)
     check_nonnegative("friction_coefficient", friction_coefficient)
-    return _spin(load, semi_major_axis, e_integral, friction_coefficient)
+    return contact_spin_moment(load, semi_major_axis, e_integral, friction_coefficient)
 
 
 def heathcote_sliding_force(load, semi_major_axis, ball_diameter, groove_radius, friction):
@@ -193,7 +193,7 @@ def heathcote_sliding_force(load, semi_major_axis, ball_diameter, groove_radius,
     check_positive("ball_diameter", ball_diameter, "m")
     check_positive("groove_radius", groove_radius, "m")
     check_nonnegative("friction", friction)
-    return _heathcote(load, semi_major_axis, ball_diameter, groove_radius, friction)
+    return heathcote_force(load, semi_major_axis, ball_diameter, groove_radius, friction)
 
 
 def palmgren_viscous_torque(kinematic_viscosity, speed, pitch_diameter, s0):
@@ -225,7 +225,7 @@ def palmgren_viscous_torque(kinematic_viscosity, speed, pitch_diameter, s0):
     check_finite("speed", speed, "rad/s")
     check_positive("pitch_diameter", pitch_diameter, "m")
     check_nonnegative("s0", s0)
-    return _palmgren(kinematic_viscosity, speed, pitch_diameter, s0)
+    return palmgren_torque(kinematic_viscosity, speed, pitch_diameter, s0)
 
 
 def regularised_friction_torque(
@@ -258,7 +258,7 @@ def regularised_friction_torque(
     check_nonnegative("breakaway_excess", breakaway_excess, "N·m")
     check_positive("regularisation_speed", regularisation_speed, "rad/s")
     check_positive("stribeck_speed", stribeck_speed, "rad/s")
-    return _regularised(
+    return regularised_torque(
         speed, running_torque, breakaway_excess, regularisation_speed, stribeck_speed
     )
 
@@ -368,15 +368,15 @@ def ball_torque_terms(
     (a_i, b_i, e_i), (a_o, b_o, e_o) = inner, outer
     dw = ball_diameter
     alpha_r, mu = coefficients.hysteresis_loss, coefficients.sliding_friction
-    hyst_i = _hysteresis(load, b_i, dw, alpha_r) * r_in
-    hyst_o = _hysteresis(load, b_o, dw, alpha_r) * r_out
+    hyst_i = hysteresis_force(load, b_i, dw, alpha_r) * r_in
+    hyst_o = hysteresis_force(load, b_o, dw, alpha_r) * r_out
     if differential_sliding:
-        slide_i = _heathcote(load, a_i, dw, groove_radii[0], mu) * r_in
-        slide_o = _heathcote(load, a_o, dw, groove_radii[1], mu) * r_out
+        slide_i = heathcote_force(load, a_i, dw, groove_radii[0], mu) * r_in
+        slide_o = heathcote_force(load, a_o, dw, groove_radii[1], mu) * r_out
     else:
         slide_i = slide_o = 0.0 * load
-    spin_i = _spin(load, a_i, e_i, mu) * sin_abs
-    spin_o = _spin(load, a_o, e_o, mu) * sin_abs
+    spin_i = contact_spin_moment(load, a_i, e_i, mu) * sin_abs
+    spin_o = contact_spin_moment(load, a_o, e_o, mu) * sin_abs
     if solid:
         spin_o = 0.0 * spin_o
     else:  # Yu eq 7: the race with the larger spin moment spins

@@ -80,12 +80,12 @@ from .._checks import (
     check_range,
     check_temperature,
 )
-from ..pair.continuation import (  # the laws' kernels, shared with the per-step path
-    _operating_temperature,
-    _vogel_exponent,
-    _walther_cst,
+from ..kernels.units import CST
+from ..kernels.viscosity import (  # the laws, shared with the per-step path
+    operating_temperature,
+    vogel_log_viscosity,
+    walther_viscosity,
 )
-from ..units import CST
 
 #: The reference temperatures of ν40 and ν100 (ISO 3448, ASTM D341) [K].
 T40, T100 = 313.15, 373.15
@@ -215,7 +215,7 @@ class ViscosityRange:
 
     def operating_viscosity_at(self, t: float) -> float:
         """:meth:`operating_viscosity` on one float [K] → [m²/s] (the per-step path)."""
-        return self.viscosity_at(_operating_temperature(t, self.hold_temperature))
+        return self.viscosity_at(operating_temperature(t, self.hold_temperature))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -251,7 +251,7 @@ class WaltherViscosity(ViscosityRange):
 
     def viscosity_at(self, t: float) -> float:
         """The law at one float temperature [K] → ν [m²/s] (math instead of numpy)."""
-        return _walther_cst(math.log10(t), self.a, self.b, self.c) * CST
+        return walther_viscosity(math.log10(t), self.a, self.b, self.c) * CST
 
     def source(self, field: str) -> str:
         return dict(self.provenance).get(field, "")
@@ -280,7 +280,7 @@ def walther_kinematic_viscosity(temperature, a: float, b: float, c: float = 0.7)
     67.38
     """
     t = check_temperature("temperature", temperature)
-    return _walther_cst(np.log10(t), a, b, c) * CST
+    return walther_viscosity(np.log10(t), a, b, c) * CST
 
 
 def walther_from_two_points(
@@ -440,11 +440,11 @@ class VogelViscosity(ViscosityRange):
                 f"temperature = {float(np.min(t))!r} K is at or below Vogel's T∞ = "
                 f"{self.t_inf:.6g} K, where the fit diverges"
             )
-        return np.exp(_vogel_exponent(t, self.a, self.b, self.t_inf))
+        return np.exp(vogel_log_viscosity(t, self.a, self.b, self.t_inf))
 
     def viscosity_at(self, t: float) -> float:
         """The law at one float temperature [K] (above T∞) → ν [m²/s]."""
-        return math.exp(_vogel_exponent(t, self.a, self.b, self.t_inf))
+        return math.exp(vogel_log_viscosity(t, self.a, self.b, self.t_inf))
 
     def source(self, field: str) -> str:
         return dict(self.provenance).get(field, "")
@@ -513,7 +513,7 @@ def vogel_from_points(
         u = np.array(temps)
         y = np.array([ln for _, ln in logs])
         fit = least_squares(
-            lambda x: _vogel_exponent(u, x[0], x[1], x[2]) - y,
+            lambda x: vogel_log_viscosity(u, x[0], x[1], x[2]) - y,
             (a, b, t_inf),
             bounds=((-np.inf, 0.0, -np.inf), (np.inf, np.inf, temps[0])),
             xtol=1e-15,

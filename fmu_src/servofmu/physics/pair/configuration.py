@@ -19,9 +19,9 @@ from ..friction.terms import FrictionCoefficients
 from ..lubrication.viscosity import ViscosityRange
 from ..thermal.fits import mounted_geometry
 from ..thermal.temperatures import part_temperatures
-from .continuation import PairRows, loop_closure_at
 from .mounting import Mounting
 from .preload import ROLES, TANDEM, shim_for_preload, tandem_offsets
+from .rows import PairRows, loop_closure_at
 
 LUBRICATIONS = ("grease", "solid")
 DEFAULT_COEFFICIENTS = FrictionCoefficients()

@@ -14,6 +14,7 @@ from .configuration import BearingPair
 from .state import (
     BearingOutputs,
     LoadState,
+    PointState,
     ThermalState,
     exact_point,
     load_state,
@@ -131,7 +132,7 @@ class BearingModel:
             self.solver.seed(th, inputs, (p, z))
         else:
             self.solver.seed(th, inputs, (p, z, ls.radial_a, ls.radial_b), ls.ball_cosines)
-        point = exact_point(self.kernels.PointState, self.pair, th_exact, ls)
+        point = exact_point(PointState, self.pair, th_exact, ls)
         self.solver.accept(th, point, axial_load, radial_load)
         return point
 

@@ -70,7 +70,7 @@ from ..contact.equilibrium import (
 from ..contact.geometry import RaceGeometry
 from ..materials import Material
 from ..thermal.temperatures import MEMBER_PARTS, part_temperatures
-from .continuation import PairRows
+from .rows import PairRows
 
 ROLES = {"opening": 1.0, "closing": -1.0}
 #: The part whose temperature a loop member takes, by member name, when the data do not say.

@@ -24,6 +24,7 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
+from .. import compiled
 from .._checks import check_finite
 from ..contact.equilibrium import _axial_state, _ring_stiffness
 from ..contact.geometry import RaceGeometry
@@ -37,19 +38,16 @@ from ..friction.models import (
     skf_torques,
 )
 from ..friction.terms import BallSetTorques, ball_set_torques
+from ..kernels.friction import coulomb_and_excess, palmgren_torque, regularised_torque
 from ..thermal.fits import mounted_geometry
 from ..thermal.temperatures import PARTS, PartTemperatures, part_temperatures
 from .configuration import BearingPair, is_tandem, loop_closure, pair_rows
-from .continuation import (  # the kernels (floats or arrays) shared with the per-step path
-    PointState,  # noqa: F401  (re-exported: the output record)
-    _flags,
-    _palmgren,
-    _regularised,
-    axial_play,
-    preload_force,
-)
-from .continuation import _coulomb_excess as _kernel_coulomb_excess
 from .preload import axial_offsets, pair_equilibrium
+from .rows import axial_play, pair_flags, preload_force
+
+#: The output record of one operating point (:mod:`.point`): the one class of the process,
+#: compiled when the compiled modules run, whichever path fills it.
+PointState = compiled.module("pair.point").PointState
 
 
 @dataclass(frozen=True)
@@ -241,7 +239,7 @@ def state_flags(
     >>> state_flags(pair, 2e-6, 1.5e9, 40.0, 0.0)  # m, Pa, N, N: B lost its load
     {'overloaded': False, 'locked': False, 'unloaded': True, 'reverse_loaded': False}
     """
-    overloaded, locked, unloaded, reverse = _flags(
+    overloaded, locked, unloaded, reverse = pair_flags(
         pair.pressure_limit, clearance, max_contact_pressure, force_a, force_b
     )
     return {
@@ -575,7 +573,7 @@ def _speed_terms(pair: BearingPair, viscosity, pitch_diameter, coulomb, excess, 
     else:
         grease = grease_running(pair, viscosity, w)
         running = running + grease
-    signed = _regularised(w, running, excess, pair.regularisation_speed, pair.stribeck_speed)
+    signed = regularised_torque(w, running, excess, pair.regularisation_speed, pair.stribeck_speed)
     return signed, running, sliding, viscous, grease
 
 
@@ -586,7 +584,7 @@ def _model_terms(pair: BearingPair, viscosity, pitch_diameter, rolling, w):
     model = pair.friction.model
     if model == "yu2017":
         s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
-        return 2.0 * _palmgren(viscosity, w, pitch_diameter, s0), None
+        return 2.0 * palmgren_torque(viscosity, w, pitch_diameter, s0), None
     if model == "skf2004":
         return skf_torques(pair, rolling, viscosity, w)
     return ehl_torque(rolling, w), None
@@ -595,9 +593,7 @@ def _model_terms(pair: BearingPair, viscosity, pitch_diameter, rolling, w):
 def _coulomb_excess(pair: BearingPair, hysteresis, spin, sliding):
     """(Coulomb torque hysteresis + spin + sliding, breakaway excess (μ_s/μ − 1)·(spin +
     sliding)) [N·m] (Yu 2017 eq 9; the static friction of spin and sliding)."""
-    return _kernel_coulomb_excess(
-        pair.coefficients.static_friction_ratio, hysteresis, spin, sliding
-    )
+    return coulomb_and_excess(pair.coefficients.static_friction_ratio, hysteresis, spin, sliding)
 
 
 def contact_terms(pair: BearingPair, hysteresis, spin, sliding, inner, outer):
@@ -716,7 +712,7 @@ def rest_torque(pair: BearingPair, viscosity, pitch_diameter):
     """
     yu = pair.lubricant is not None and pair.friction.model == "yu2017"
     s0 = pair.coefficients.palmgren_s0 if yu else 0.0
-    return 2.0 * _palmgren(viscosity, 0.0, pitch_diameter, s0)
+    return 2.0 * palmgren_torque(viscosity, 0.0, pitch_diameter, s0)
 
 
 def bearing_outputs(
@@ -817,7 +813,7 @@ def point_state(cls, pair: BearingPair, thermal, torques, load, flags, rest=None
 
     Examples
     --------
-    >>> from servofmu.physics.pair.continuation import PointState
+    >>> from servofmu.physics.pair.state import PointState
     >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
     >>> th = to_floats(thermal_state(pair, 293.15))
     >>> pt = point_state(PointState, pair, th, (1e-4, 2e-4, 0.0, 1e-4, 2e-4),
@@ -846,7 +842,7 @@ def exact_point(cls, pair: BearingPair, thermal: ThermalState, load: LoadState):
 
     Examples
     --------
-    >>> from servofmu.physics.pair.continuation import PointState
+    >>> from servofmu.physics.pair.state import PointState
     >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
     >>> th = to_floats(thermal_state(pair, 293.15))
     >>> ls = to_floats(load_state(pair, th))
@@ -887,7 +883,7 @@ def point_outputs(point, speed_outputs, breakaway_lower_bound: bool = False) -> 
 
     Examples
     --------
-    >>> from servofmu.physics.pair.continuation import PointState
+    >>> from servofmu.physics.pair.state import PointState
     >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
     >>> th = to_floats(thermal_state(pair, 293.15))
     >>> pt = exact_point(PointState, pair, th, to_floats(load_state(pair, th)))

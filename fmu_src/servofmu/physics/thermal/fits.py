@@ -29,8 +29,8 @@ import numpy as np
 
 from .._checks import check_finite, check_nonnegative, check_positive, check_temperature
 from ..contact.geometry import BallBearing, RaceGeometry
+from ..kernels.lame import lame_ratio
 from ..materials import Material, reduced_compliance
-from ..pair.continuation import lame_ratio
 
 
 @dataclass(frozen=True)

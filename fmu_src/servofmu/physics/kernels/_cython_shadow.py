@@ -1,12 +1,13 @@
-"""The names of Cython's pure-Python mode that :mod:`.pair.continuation` uses, for an interpreter
-without Cython (an FMU's host needs numpy and scipy only): decorators that return what they
+"""The names of Cython's pure-Python mode that the compiled modules use
+(:mod:`servofmu.physics.compiled`), for an interpreter without Cython (an FMU's host needs numpy
+and scipy only): decorators that return what they
 decorate, type names that are only read in annotations, and ``compiled = False``. With
 Cython installed its own ``cython`` module (Cython.Shadow) takes this place; compiled, the
 names are Cython's.
 
 Examples
 --------
->>> from servofmu.physics import _cython_shadow as cython
+>>> from servofmu.physics.kernels import _cython_shadow as cython
 >>> cython.compiled, cython.cfunc(len) is len, cython.typedef(float) is float
 (False, True, True)
 """
