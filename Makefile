@@ -62,6 +62,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_fmus.py --models --save $(RESULTS)/bench_fmus.json
 	$(BIN)/python benchmarks/bench_worst_step.py --save $(RESULTS)/bench_worst_step.json
 	$(BIN)/python benchmarks/bench_harness.py --save $(RESULTS)/bench_harness.json
+	$(BIN)/python benchmarks/bench_peers.py --save $(RESULTS)/bench_peers.json
 	$(BIN)/python benchmarks/bench_sweep.py --save $(RESULTS)/bench_sweep.json
 	$(BIN)/python benchmarks/bench_thermal_network.py --save $(RESULTS)/bench_thermal_network.json
 	$(BIN)/python benchmarks/bench_calibration.py --save $(RESULTS)/bench_calibration.json

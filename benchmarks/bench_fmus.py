@@ -11,7 +11,9 @@ aims of the speed table (:data:`AIMS`).
 The FMUs are built once; each implementation runs in its own process (a process imports
 servofmu once): the compiled modules (``servofmu.physics.compiled``, when built) and the
 Python ones (``SERVOFMU_PURE_PYTHON=1``), each with its own empty FMU, so that every ratio is
-measured within one process.
+measured within one process. ``--python-crossings`` adds a third: the compiled kernels with
+every FMI call entering Python (``SERVOFMU_SHARED_VALUES=0``), as without the values the FMUs
+share with servofmu's export library.
 
 ``--clock cpu`` (the default) times the CPU time of the process (time.process_time): the
 FMUs run in-process, so that is their cost, and other work on a shared machine does not
@@ -38,6 +40,7 @@ from results import save  # benchmarks/ is the script's folder
 from trajectories import BEARING_LOOPS  # benchmarks/ is the script's folder
 
 from servofmu.build.fmu import FMUS, build_all
+from servofmu.fmus.shared_values import ENVIRONMENT as SHARED_VALUES
 from servofmu.parameters.bearing import PARAMETERS
 from servofmu.physics.compiled import PURE_PYTHON
 
@@ -213,12 +216,16 @@ def _worker(args) -> None:
     figures = measure(paths, args.steps, args.repeat, clock, args.models)
     empty = figures["Empty"]
     table = {k: {"us": v * 1e6, "ratio": v / empty} for k, v in figures.items()}
-    print(json.dumps({"implementation": continuation.describe(), "loops": table}))
+    how = continuation.describe()
+    if os.environ.get(SHARED_VALUES) == "0":
+        how += "; every FMI call entering Python"
+    print(json.dumps({"implementation": how, "loops": table}))
 
 
 def _run_worker(fmus: Path, implementation: str, args) -> dict:
     env = dict(os.environ)
     env[PURE_PYTHON] = "1" if implementation == "python" else ""
+    env[SHARED_VALUES] = "0" if implementation == CROSSINGS else "1"
     cmd = [sys.executable, __file__, "--worker", str(fmus), "--steps", str(args.steps),
            "--repeat", str(args.repeat), "--clock", args.clock]  # fmt: skip
     if args.models:
@@ -231,6 +238,8 @@ def _run_worker(fmus: Path, implementation: str, args) -> dict:
 
 #: The implementations of the per-step kernels measured, each in its own process.
 IMPLEMENTATIONS = ("compiled", "python")
+#: With --python-crossings: the compiled kernels, every FMI call entering Python.
+CROSSINGS = "compiled, every call in Python"
 
 
 def figures_of(results: dict) -> dict:
@@ -239,13 +248,13 @@ def figures_of(results: dict) -> dict:
     rows = []
     for label in results["python"]["loops"]:
         row = {"loop": label}
-        for impl in IMPLEMENTATIONS:
+        for impl in results:
             fig = results[impl]["loops"][label]
             row[f"{impl} µs"] = fig["us"]
             row[f"{impl} ×"] = fig["ratio"]
         row["aim ×"] = AIMS.get(label, "")
         rows.append(row)
-    kernels = {impl: results[impl]["implementation"] for impl in IMPLEMENTATIONS}
+    kernels = {impl: results[impl]["implementation"] for impl in results}
     return {"kernels": kernels, "loops": rows}
 
 
@@ -265,6 +274,11 @@ def main() -> None:
         action="store_true",
         help="also BearingFriction's loops under friction_model skf2004 and ehl_per_contact",
     )
+    parser.add_argument(
+        "--python-crossings",
+        action="store_true",
+        help="also the compiled kernels with every FMI call entering Python (no shared values)",
+    )
     parser.add_argument("--worker", metavar="FMUS", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.worker:
@@ -279,7 +293,8 @@ def main() -> None:
         build_all(fmus, FMUS, systems=False)
         (tmp / "Empty.py").write_text(EMPTY)
         FmuBuilder.build_FMU(tmp / "Empty.py", dest=fmus)
-        results = {impl: _run_worker(fmus, impl, args) for impl in IMPLEMENTATIONS}
+        measured = (*IMPLEMENTATIONS, *([CROSSINGS] if args.python_crossings else []))
+        results = {impl: _run_worker(fmus, impl, args) for impl in measured}
     table = figures_of(results)
     if args.save:
         save(args.save, table)
@@ -288,11 +303,12 @@ def main() -> None:
         return
     for impl, what in table["kernels"].items():
         print(f"{impl}: kernels {what}")
-    print(f"{'loop':62s} {'compiled':>18s} {'python':>18s} {'aim':>6s}")
+    names = list(table["kernels"])
+    print(f"{'loop':62s} " + " ".join(f"{n[:18]:>18s}" for n in names) + f" {'aim':>6s}")
     for row in table["loops"]:
-        cells = [f"{row[f'{i} µs']:7.2f} µs {row[f'{i} ×']:5.2f}×" for i in IMPLEMENTATIONS]
+        cells = [f"{row[f'{i} µs']:7.2f} µs {row[f'{i} ×']:5.2f}×" for i in names]
         aim = "" if row["aim ×"] == "" else f"≤ {row['aim ×']}"
-        print(f"{row['loop']:62s} {cells[0]:>18s} {cells[1]:>18s} {aim:>6s}")
+        print(f"{row['loop']:62s} " + " ".join(f"{c:>18s}" for c in cells) + f" {aim:>6s}")
 
 
 if __name__ == "__main__":

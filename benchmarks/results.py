@@ -41,3 +41,24 @@ def save(path, figures, argv=None) -> Path:
     text = json.dumps(record(figures, argv), indent=2, ensure_ascii=False)
     path.write_text(text + "\n", encoding="utf-8")
     return path
+
+
+def add_output_options(parser) -> None:
+    """The options every benchmark takes: ``--json`` (print the figures as JSON) and
+    ``--save FILE.json`` (:func:`save` them too)."""
+    parser.add_argument("--json", action="store_true")
+    parser.add_argument(
+        "--save",
+        metavar="FILE.json",
+        help="also write the figures and the run's context to this JSON file (docs: Performance)",
+    )
+
+
+def emit(args, figures, argv=None) -> bool:
+    """Save ``figures`` when ``--save`` was given and print them as JSON when ``--json`` was;
+    True when printed (the caller prints its table otherwise)."""
+    if args.save:
+        save(args.save, figures, argv)
+    if args.json:
+        print(json.dumps(figures, indent=2))
+    return bool(args.json)

@@ -4,7 +4,8 @@ Refused: entries with absolute paths, drive letters, backslashes or ``..`` compo
 (symbolic links stored in the zip), two entries of one name (a reader would take either),
 more than ``max_entries`` entries, or more than ``max_bytes`` unpacked in total — the sizes
 the headers declare are checked before anything is written (a zip bomb is refused at once),
-and the bytes are counted again while unpacking (a header may lie)."""
+and the bytes are counted again while unpacking (a header may lie). An archive and the
+archives in it (an .ssp and its FMUs) share one :class:`Budget`."""
 
 from __future__ import annotations
 
@@ -20,6 +21,83 @@ _CHUNK = 1 << 20
 
 class ArchiveError(ValueError):
     """An archive was refused (the message says which entry and why)."""
+
+
+class Budget:
+    """One budget of unpacked bytes and entries shared by an archive and every archive
+    unpacked from it (an .ssp and its FMUs): a per-archive cap would let N bomb FMUs through
+    as N times the cap. :meth:`reserve` charges an archive's declared sizes and entry count
+    before anything of it is written; :func:`safe_extract` then unpacks it within what was
+    reserved for it, counting the bytes again as they come.
+
+    Parameters
+    ----------
+    max_bytes : int, optional
+        Unpacked bytes for everything together (default :data:`MAX_BYTES`, read at creation).
+    max_entries : int, optional
+        Entries for everything together (default :data:`MAX_ENTRIES`).
+
+    Examples
+    --------
+    >>> import tempfile, zipfile
+    >>> from pathlib import Path
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     fmu = Path(tmp) / "a.fmu"
+    ...     with zipfile.ZipFile(fmu, "w") as zf:
+    ...         zf.writestr("modelDescription.xml", b"x" * 600)
+    ...     budget = Budget(max_bytes=1000)
+    ...     print(budget.reserve(fmu), budget.reserve(fmu))  # charged once: (bytes, entries)
+    ...     try:
+    ...         budget.reserve(fmu.rename(Path(tmp) / "b.fmu"))  # a second 600 bytes
+    ...     except ArchiveError as exc:
+    ...         print(exc)  # doctest: +ELLIPSIS
+    (600, 1) (600, 1)
+    b.fmu: its entries declare 600 bytes unpacked, more than the 400 left of one budget ...
+    """
+
+    def __init__(self, max_bytes: int | None = None, max_entries: int | None = None):
+        self.max_bytes = MAX_BYTES if max_bytes is None else max_bytes
+        self.max_entries = MAX_ENTRIES if max_entries is None else max_entries
+        self.bytes = 0
+        self.entries = 0
+        self.reserved: dict[Path, tuple[int, int]] = {}  # archive → (bytes, entries)
+
+    def reserve(self, archive) -> tuple[int, int]:
+        """Charge ``archive``'s declared unpacked bytes and its entries (once per archive);
+        ArchiveError, nothing charged, when they exceed what is left. Returns (bytes,
+        entries) reserved for it."""
+        archive = Path(archive)
+        key = archive.resolve()
+        if key in self.reserved:
+            return self.reserved[key]
+        try:
+            with zipfile.ZipFile(archive) as zf:
+                infos = zf.infolist()
+        except (zipfile.BadZipFile, OSError) as exc:
+            raise ArchiveError(f"{archive}: not a readable zip archive ({exc})") from None
+        left_entries = self.max_entries - self.entries
+        if len(infos) > left_entries:
+            raise ArchiveError(
+                f"{archive.name}: {len(infos)} entries, more than the {left_entries} left of "
+                f"one budget of {self.max_entries} for the archive and the archives in it"
+            )
+        left = self.max_bytes - self.bytes
+        try:
+            check_members(infos, archive, left)
+        except ArchiveError as exc:
+            if "declare" not in str(exc):
+                raise
+            declared = sum(i.file_size for i in infos)
+            raise ArchiveError(
+                f"{archive.name}: its entries declare {declared} bytes unpacked, more than "
+                f"the {left} left of one budget of {self.max_bytes} bytes for the archive and "
+                "the archives in it; refusing a possible zip bomb (nothing unpacked)"
+            ) from None
+        charged = (sum(i.file_size for i in infos), len(infos))
+        self.bytes += charged[0]
+        self.entries += charged[1]
+        self.reserved[key] = charged
+        return charged
 
 
 def check_member(info: zipfile.ZipInfo, archive: Path) -> PurePosixPath:
@@ -133,10 +211,13 @@ def check_members(infos, archive: Path, max_bytes: int) -> list[PurePosixPath]:
     return paths
 
 
-def safe_extract(archive, dest, max_entries: int | None = None, max_bytes: int | None = None):
+def safe_extract(
+    archive, dest, max_entries: int | None = None, max_bytes: int | None = None, budget=None
+):
     """Unpack ``archive`` into ``dest`` (created) after checking every entry; returns dest.
-    Limits default to :data:`MAX_ENTRIES` and :data:`MAX_BYTES` (read at call time). On a
-    refusal midway, what this call wrote is removed again.
+    Limits default to :data:`MAX_ENTRIES` and :data:`MAX_BYTES` (read at call time); with a
+    :class:`Budget`, the archive is charged to it (once) and unpacked within what it declared.
+    On a refusal midway, what this call wrote is removed again.
 
     Parameters
     ----------
@@ -149,6 +230,8 @@ def safe_extract(archive, dest, max_entries: int | None = None, max_bytes: int |
     max_bytes : int, optional
         Largest total unpacked size [bytes], declared and counted; default
         :data:`MAX_BYTES`.
+    budget : Budget, optional
+        A budget shared with other archives (an .ssp and its FMUs); it replaces the limits.
 
     Returns
     -------
@@ -184,9 +267,11 @@ def safe_extract(archive, dest, max_entries: int | None = None, max_bytes: int |
     demo.fmu: its entries declare 27 bytes unpacked, more than 10; refusing a possible zip ...
     False
     """
+    archive, dest = Path(archive), Path(dest)
+    if budget is not None:
+        max_bytes, max_entries = budget.reserve(archive)
     max_entries = MAX_ENTRIES if max_entries is None else max_entries
     max_bytes = MAX_BYTES if max_bytes is None else max_bytes
-    archive, dest = Path(archive), Path(dest)
     try:
         zf = zipfile.ZipFile(archive)
     except (zipfile.BadZipFile, OSError) as exc:

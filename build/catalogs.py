@@ -16,17 +16,31 @@ built: an error names the file, the entry and the field.
 
 from __future__ import annotations
 
+import contextlib
+import gc
 import math
 import re
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from servofmu.files import read_input
 from servofmu.parameters import catalog
 from servofmu.physics._checks import suggest
 
 DEFAULT_KEYS = ("mounting", "lubricant", "support_mounting")
 KEY = re.compile(r"[A-Za-z0-9_]+")  # a catalogue key: letters, digits, underscores (ASCII)
+
+
+class CatalogueError(ValueError):
+    """A user catalogue that does not fit its schema: ``problems`` lists them (the first
+    twenty), each naming the file, the table, the entry and the key; the message is the
+    first, with how many more there are."""
+
+    def __init__(self, problems: list[str]):
+        more = f" (and {len(problems) - 1} more problems)" if len(problems) > 1 else ""
+        super().__init__(problems[0] + more)
+        self.problems = list(problems)
 
 
 @dataclass(frozen=True)
@@ -63,19 +77,23 @@ def read(path) -> tuple[dict, dict]:
     Raises
     ------
     ValueError
-        For an unreadable file, invalid TOML, or a ``[defaults]`` key other than
-        ``mounting``, ``lubricant`` and ``support_mounting``; the message names the file.
+        For an unreadable file (too large, not UTF-8), invalid TOML, a ``[defaults]`` key
+        other than ``mounting``, ``lubricant`` and ``support_mounting``, or an entry that does
+        not fit its table's schema (:class:`CatalogueError`, :mod:`.schema`: an unknown key, a
+        wrong type, a unit of another dimension); the message names the file.
 
     Examples
     --------
     >>> import tempfile
     >>> from pathlib import Path
+    >>> q = '{{ value = {}, unit = "{}", kind = "handbook", ref = "ASM" }}'.format
     >>> with tempfile.TemporaryDirectory() as tmp:
     ...     path = Path(tmp) / "mine.toml"
     ...     _ = path.write_text(
     ...         '[defaults]\\nlubricant = "krytox_143aa"\\n'
     ...         '[materials.my_7075]\\nname = "Aluminium 7075-T6"\\n'
-    ...         'youngs_modulus = { value = 71.7, unit = "GPa", kind = "handbook", ref = "x" }\\n'
+    ...         f'youngs_modulus = {q(71.7, "GPa")}\\npoisson_ratio = {q(0.33, "-")}\\n'
+    ...         f'expansion = {q(23.6e-6, "1/K")}\\n'
     ...     )
     ...     tables, defaults = read(path)
     ...     _ = path.write_text('[defaults]\\ncolour = "red"\\n')
@@ -89,27 +107,46 @@ def read(path) -> tuple[dict, dict]:
     >>> tables["materials"]["my_7075"]["youngs_modulus"]["value"]  # as written, in GPa
     71.7
     """
+    from .schema import catalogue_problems
+
     path = Path(path)
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise ValueError(f"{path}: cannot be read ({exc.strerror})") from None
+        with _collector_paused():
+            data = tomllib.loads(read_input(path, "catalogue"))
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path}: not valid TOML ({exc})") from None
     except RecursionError:
         raise ValueError(f"{path}: not a catalogue (tables or arrays nested too deeply)") from None
-    defaults = data.pop("defaults", {})
+    defaults = data.get("defaults", {})
     extra = sorted(set(defaults) - set(DEFAULT_KEYS)) if isinstance(defaults, dict) else defaults
     if extra:
         raise ValueError(f"{path}: [defaults] may name {list(DEFAULT_KEYS)}, not {extra}")
     for table, entries in data.items():
-        for key in entries if isinstance(entries, dict) else ():
+        for key in entries if isinstance(entries, dict) and table != "defaults" else ():
             if not KEY.fullmatch(key):
                 raise ValueError(
                     f"{path}: [{table}] entry {key!r}: a catalogue key is letters, digits and "
                     "underscores (it names files and appears in XML)"
                 )
+    with _collector_paused():
+        problems = catalogue_problems(data, str(path))
+    if problems:
+        raise CatalogueError(problems)
+    data.pop("defaults", None)
     return data, defaults
+
+
+@contextlib.contextmanager
+def _collector_paused():
+    """Python's cyclic garbage collector paused: reading and checking a large catalogue makes
+    millions of acyclic objects, and the collector's passes over them took half the time."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
 
 
 def load(paths, mounting=None, lubricant=None, support_mounting=None) -> Defaults:
@@ -172,6 +209,11 @@ def load(paths, mounting=None, lubricant=None, support_mounting=None) -> Default
     ...     print(exc)  # doctest: +ELLIPSIS
     command line: support_mounting = 'my_gimbal' is not in the catalogue's mountings: [...]...
     """
+    with _collector_paused():
+        return _merge(paths, mounting, lubricant, support_mounting)
+
+
+def _merge(paths, mounting, lubricant, support_mounting) -> Defaults:
     from servofmu.parameters.bearing import default_parameters
 
     chosen = {"mounting": mounting, "lubricant": lubricant, "support_mounting": support_mounting}

@@ -1,12 +1,12 @@
 """The choices of an FMU read back from its modelDescription: every variable that names one of
 a few items, written as an FMI ``Enumeration`` or (servofmu's default, see
-``servofmu.fmus.slave.CHOICES_AS``) as an ``Integer`` tied to its item type by a
+``servofmu.fmus.model_description.CHOICES_AS``) as an ``Integer`` tied to its item type by a
 ``VendorAnnotations/Tool[@name="servofmu"]/Choices/Choice`` entry. Either way the items are an
 ``Enumeration`` ``SimpleType`` in ``TypeDefinitions``."""
 
 from __future__ import annotations
 
-from servofmu.fmus.slave import VENDOR_TOOL
+from servofmu.fmus.model_description import VENDOR_TOOL
 
 
 def enumeration_types(root) -> dict[str, dict[str, int]]:

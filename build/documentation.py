@@ -93,7 +93,7 @@ class Curve:
 
 def _build_start(name: str) -> bool:
     """True when this build gives FMU ``name`` start values of its own (a preset)."""
-    from servofmu.fmus.slave import BUILD_START
+    from servofmu.fmus.declarations import BUILD_START
 
     return bool(BUILD_START.get(name))
 
@@ -473,7 +473,7 @@ def _start(v) -> str:
 
 def variables_rst(cls) -> str:
     """The inputs, outputs and parameters of slave class ``cls`` as reStructuredText tables:
-    the modelDescription's own variable list (:func:`servofmu.fmus.slave.variables_of`, a
+    the modelDescription's own variable list (:func:`servofmu.fmus.declarations.variables_of`, a
     build's start values and provenance included).
 
     Parameters
@@ -492,7 +492,7 @@ def variables_rst(cls) -> str:
     >>> [line for line in text.splitlines() if line.startswith(".. list-table")]
     ['.. list-table:: Inputs', '.. list-table:: Outputs', '.. list-table:: Parameters']
     """
-    from servofmu.fmus.slave import variables_of
+    from servofmu.fmus.declarations import variables_of
 
     variables = variables_of(cls)
     by = {c: [v for v in variables if v.causality == c] for c in ("input", "output", "parameter")}

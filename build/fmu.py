@@ -2,15 +2,16 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import shutil
 import sys
-import tempfile
 from pathlib import Path
 
 import servofmu
-from servofmu.fmus import slave
-from servofmu.fmus.slave import BUILD_INFO, SHIPPED, package_hash
+from servofmu.files import OutputError, file_mode, output_folder, scratch_folder, written
+from servofmu.fmus import declarations
+from servofmu.fmus.package_hash import BUILD_INFO, SHIPPED, package_hash
 
 from .catalogs import Defaults
 from .documentation import write_documentation
@@ -29,8 +30,9 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
     """Build FMU ``name`` (one of :data:`FMUS`) into ``out_dir``; returns the .fmu path.
 
     The FMU carries what it runs of the servofmu package in ``resources/servofmu`` (the parts
-    :data:`~servofmu.fmus.slave.SHIPPED`: the package ``__init__``, ``physics/`` with its data
-    and ``fmus/``; every FMU the same copy, so that several FMUs can share one interpreter),
+    :data:`~servofmu.fmus.package_hash.SHIPPED`: the package ``__init__``, ``physics/`` with
+    its data and ``fmus/``; every FMU the same copy, so that several FMUs can share one
+    interpreter),
     ``resources/servofmu_build.json`` (the hash of those parts, checked at instantiation, and
     the build's start values when ``defaults`` name presets), ``resources/presets/`` (the
     catalogue's presets as SSP parameter sets, BearingFriction and ActuatorStiffness) and
@@ -49,15 +51,17 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
 
     if name not in FMUS:
         raise ValueError(f"FMU name = {name!r} is not one of {FMUS}")
-    out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
+    out_dir = output_folder(out_dir)
     script = PACKAGE_DIR / "fmus" / f"{name}.py"
     start = start_values(name, defaults or Defaults())
-    slave.BUILD_START.clear()
+    problems = start_value_problems(name, start)
+    if problems:  # the FMU would refuse its own start values: it is not packed
+        raise ValueError(f"{name}: " + "; ".join(problems))
+    declarations.BUILD_START.clear()
     if start:
-        slave.BUILD_START[name] = start
+        declarations.BUILD_START[name] = start
     try:
-        with tempfile.TemporaryDirectory(prefix="servofmu_build_") as tmp:
+        with scratch_folder("servofmu_build_") as tmp:
             tmp = Path(tmp)
             package = stage_package(tmp / "package")
             info = tmp / BUILD_INFO
@@ -78,19 +82,73 @@ def build_fmu(name: str, out_dir: Path = DEFAULT_OUT, defaults: Defaults | None 
                 files.append(write_presets(tmp / "presets", name))
             doc = tmp / "documentation"
             write_documentation(name, doc, resolve(defaults or Defaults()))
-            path = FmuBuilder.build_FMU(
+            built = FmuBuilder.build_FMU(
                 script,
-                dest=out_dir,
+                dest=tmp / "fmu",
                 project_files=files,
                 documentation_folder=doc,
                 canGetAndSetFMUstate=True,
                 canSerializeFMUstate=True,
             )
             if library is not None:
-                put_export(Path(path), name, library)
+                put_export(Path(built), name, library)
+            path = out_dir / Path(built).name
+            with written(path) as part:  # whole under its name, never half-written
+                shutil.copyfile(built, part)
     finally:
-        slave.BUILD_START.clear()
-    return Path(path)
+        declarations.BUILD_START.clear()
+    return path
+
+
+def start_value_problems(name: str, start: dict) -> list[str]:
+    """Every start value of FMU ``name`` (its class's, with ``start`` {variable: (value,
+    provenance)} over them) that its own checks would refuse: a number not finite or outside
+    the variable's [min, max], an item number that names no item.
+
+    Parameters
+    ----------
+    name : str
+        One of :data:`FMUS`.
+    start : dict
+        The build's start values (:func:`.presets.start_values`).
+
+    Returns
+    -------
+    list of str
+        One line per refused value ("start value NAME = V (provenance) is outside [lo, hi]
+        UNIT"); empty when every value is valid.
+
+    Examples
+    --------
+    >>> start_value_problems("DCMotor", {})
+    []
+    >>> start_value_problems("DCMotor", {"resistance": (-1.0, "a typo")})
+    ['start value resistance = -1.0 (a typo) is outside its range [1e-06, 1000000.0] Ohm']
+    """
+    import importlib
+    import math
+
+    cls = getattr(importlib.import_module(f"servofmu.fmus.{name}"), name)
+    problems = []
+    for v in declarations.variables_of(cls, start):
+        if v.start is None or v.causality == "output" or isinstance(v.start, str):
+            continue
+        where = f"start value {v.name} = {v.start!r}"
+        if v.name in start:
+            where += f" ({start[v.name][1]})"
+        if v.type == "Enumeration":
+            if not 1 <= v.start <= len(v.items):
+                problems.append(f"{where} names no item of {[i.name for i in v.items]}")
+            continue
+        if v.type not in ("Real", "Integer") or isinstance(v.start, bool):
+            continue
+        lo = -math.inf if v.min is None else v.min
+        hi = math.inf if v.max is None else v.max
+        if not (math.isfinite(v.start) and lo <= v.start <= hi):
+            problems.append(
+                f"{where} is outside its range [{lo!r}, {hi!r}] {v.unit or ''}".rstrip()
+            )
+    return problems
 
 
 def stage_package(dest: Path) -> Path:
@@ -119,10 +177,76 @@ def build_all(
     from .mechanism import resolve
     from .ssp import pack_all
 
-    paths = [build_fmu(n, out_dir, defaults) for n in names]
-    if systems and set(names) == set(FMUS):
-        paths += pack_all(out_dir, out_dir, resolve(defaults or Defaults()))
+    with build_lock(out_dir):
+        paths = [build_fmu(n, out_dir, defaults) for n in names]
+        if systems and set(names) == set(FMUS):
+            paths += pack_all(out_dir, out_dir, resolve(defaults or Defaults()))
     return paths
+
+
+#: The lock file of a build folder (``flock``: released when its process ends, however).
+LOCK_NAME = ".servofmu-build.lock"
+_HELD: dict[Path, int] = {}  # build folders this process holds the lock of → depth
+
+
+@contextlib.contextmanager
+def build_lock(out_dir):
+    """Hold the build lock of ``out_dir`` (its :data:`LOCK_NAME`): one build at a time per
+    folder. When another process holds it, say so on stderr and wait for it. Re-entrant
+    within a process.
+
+    Parameters
+    ----------
+    out_dir : str or pathlib.Path
+        The build folder (created).
+
+    Returns
+    -------
+    contextmanager
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     with build_lock(tmp), build_lock(tmp):  # re-entrant
+    ...         print(sorted(p.name for p in Path(tmp).iterdir()))
+    ['.servofmu-build.lock']
+    """
+    import fcntl
+    import os
+
+    folder = output_folder(out_dir).resolve()
+    if folder in _HELD:
+        _HELD[folder] += 1
+        try:
+            yield
+        finally:
+            _HELD[folder] -= 1
+        return
+    try:
+        fd = os.open(folder / LOCK_NAME, os.O_CREAT | os.O_RDWR, file_mode())
+    except OSError as exc:
+        raise OutputError(folder / LOCK_NAME, exc) from None
+    try:
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            other = os.pread(fd, 32, 0).decode("ascii", "replace").strip() or "?"
+            print(
+                f"servofmu: waiting for another build in {folder} (process {other}) to finish",
+                file=sys.stderr,
+                flush=True,
+            )
+            fcntl.flock(fd, fcntl.LOCK_EX)
+        os.ftruncate(fd, 0)
+        os.pwrite(fd, str(os.getpid()).encode("ascii"), 0)
+        _HELD[folder] = 1
+        try:
+            yield
+        finally:
+            del _HELD[folder]
+    finally:
+        os.close(fd)  # releases the lock
 
 
 def build_info(fmu: Path) -> dict | None:
@@ -258,14 +382,17 @@ def ensure_built(out_dir: Path | None = None, mechanism=None) -> Path:
 
     mechanism = mechanism or resolve(Defaults())
     out_dir = Path(out_dir) if out_dir is not None else mechanism.build_dir
-    if not is_current(out_dir, mechanism):
-        refuse_other_mechanism(out_dir, mechanism)
-        print(
-            f"building the FMUs and systems of {mechanism.key} into {out_dir}",
-            file=sys.stderr,
-            flush=True,
-        )
-        build_all(out_dir, defaults=mechanism.defaults)
+    if is_current(out_dir, mechanism):
+        return out_dir
+    with build_lock(out_dir):  # another build there is waited for, then looked at again
+        if not is_current(out_dir, mechanism):
+            refuse_other_mechanism(out_dir, mechanism)
+            print(
+                f"building the FMUs and systems of {mechanism.key} into {out_dir}",
+                file=sys.stderr,
+                flush=True,
+            )
+            build_all(out_dir, defaults=mechanism.defaults)
     return out_dir
 
 

@@ -6,6 +6,8 @@ import importlib.resources
 import zipfile
 from pathlib import Path
 
+from servofmu.files import written
+
 from .xmlsafe import parse
 
 #: The SSP system sources: the package ``servofmu.ssp`` (the checkout's ``ssp/``, shipped in
@@ -36,14 +38,14 @@ def fmu_sources(system_dir: Path) -> list[str]:
 
 def pack_ssp(system_dir: Path, fmu_dir: Path, out_dir: Path, replace=None) -> Path:
     """Zip ``system_dir`` (SSD, .ssv, variants/) and the FMUs it names, taken from
-    ``fmu_dir``, into ``out_dir/<name>.ssp``; raises FileNotFoundError for a missing FMU.
+    ``fmu_dir``, into ``out_dir/<name>.ssp`` (whole under its name, or not at all); raises
+    FileNotFoundError for a missing FMU.
     ``replace`` ({path in the system: bytes, or None to leave the file out}) changes files on
     the way (a mechanism's bindings)."""
     system_dir, fmu_dir, out_dir = Path(system_dir), Path(fmu_dir), Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
     target = out_dir / f"{system_dir.name}.ssp"
     replace = replace or {}
-    with zipfile.ZipFile(target, "w", zipfile.ZIP_DEFLATED) as zf:
+    with written(target) as part, zipfile.ZipFile(part, "w", zipfile.ZIP_DEFLATED) as zf:
         for f in sorted(system_dir.rglob("*")):
             if f.is_file() and f.suffix in (".ssd", ".ssv"):
                 rel = f.relative_to(system_dir).as_posix()

@@ -5,7 +5,7 @@ from __future__ import annotations
 import zipfile
 from pathlib import Path
 
-from servofmu.fmus.slave import BUILD_INFO
+from servofmu.fmus.package_hash import BUILD_INFO
 
 from . import choices
 from .archive import ArchiveError, check_archive, read_member

@@ -126,3 +126,55 @@ def interruptible():
             signal.signal(s, handler)
     if request.requested:  # it came after the last check (a run's end): the handler outside acts
         signal.raise_signal(request.signum)
+
+
+_PROTECTED: list[int] | None = None  # the signals held by the active protected() block
+
+
+@contextmanager
+def protected(reraise: bool = True):
+    """Within this block SIGINT and SIGTERM wait: a result being written, or the cleanup after
+    a first signal (a cluster shutting down, the rows so far being written), is not cut short
+    by a further one. Yields the list of the signals held. When the block ends, the first of
+    them is raised again for the handler outside it (one raise, however many came), unless
+    ``reraise`` is False: then the caller acts on the list (a run already stopping). Nested
+    blocks share the outer one's list; in other threads than the main one nothing changes
+    (an empty list).
+
+    Returns
+    -------
+    contextmanager yielding list of int
+        The numbers of the signals held so far.
+
+    Examples
+    --------
+    >>> with protected(reraise=False) as held:
+    ...     signal.raise_signal(signal.SIGINT)  # waits: no KeyboardInterrupt here
+    >>> held == [signal.SIGINT]
+    True
+    """
+    global _PROTECTED, _RECEIVED
+    if _PROTECTED is not None:
+        yield _PROTECTED
+        return
+    if threading.current_thread() is not threading.main_thread():
+        yield []
+        return
+    held: list[int] = []
+
+    def hold(signum, frame):
+        global _RECEIVED
+        if not held:
+            _RECEIVED = signum
+        held.append(signum)
+
+    previous = {s: signal.signal(s, hold) for s in SIGNALS}
+    _PROTECTED = held
+    try:
+        yield held
+    finally:
+        _PROTECTED = None
+        for s, handler in previous.items():
+            signal.signal(s, handler)
+        if held and reraise:
+            signal.raise_signal(held[0])

@@ -34,6 +34,7 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import write_text, written
 from servofmu.physics._checks import suggest
 
 from .errors import ArgumentError, HarnessError, Interrupted, ParameterError
@@ -74,19 +75,30 @@ class RunResult:
 
     def to_csv(self, path) -> Path:
         """Write the results as CSV in the FMUs' SI units, headers ``name [unit]``
-        (:func:`~.units.read_results` reads it back by name)."""
+        (:func:`~.units.read_results` reads it back by name), whole or not at all
+        (:func:`servofmu.files.written`). A run that ended early (failed or interrupted) ends
+        with the line ``# incomplete: …`` saying where and why: the rows after it were not
+        computed."""
         path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        np.savetxt(
-            path,
-            self.data.view((float, len(self.names)))
-            if len(self.data)
-            else np.empty((0, len(self.names))),
-            delimiter=",",
-            header=",".join(header(n, self.scale(n)) for n in self.names),
-            comments="",
-            fmt="%.12g",
-        )
+        footer = ""
+        if self.failed:
+            end = f"t = {self.data['time'][-1]:.12g} s" if len(self.data) else "no row"
+            why = " ".join(self.message.split())
+            footer = f"incomplete: the run ended at {end}, before its stop time: {why}"
+        with written(path) as part:
+            np.savetxt(
+                part,
+                self.data.view((float, len(self.names)))
+                if len(self.data)
+                else np.empty((0, len(self.names))),
+                delimiter=",",
+                header=",".join(header(n, self.scale(n)) for n in self.names),
+                comments="",
+                fmt="%.12g",
+            )
+            if footer:
+                with part.open("a") as fh:
+                    fh.write(f"# {footer}\n")
         return path
 
     def plot(self, path, names, title: str = "") -> Path:
@@ -98,7 +110,6 @@ class RunResult:
         import matplotlib.pyplot as plt
 
         path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
         fig, axes = plt.subplots(
             len(names), 1, sharex=True, figsize=(7, 1.8 + 1.6 * len(names)), squeeze=False
         )
@@ -113,7 +124,8 @@ class RunResult:
         axes[-1, 0].set_xlabel("time [s]")
         fig.suptitle(title or self.system, fontsize=10)
         fig.tight_layout()
-        fig.savefig(path, dpi=100)
+        with written(path) as part:
+            fig.savefig(part, dpi=100)
         plt.close(fig)
         return path
 
@@ -210,14 +222,74 @@ class _Unit:
         self.set_real, self.get_real = f["fmi2SetReal"], f["fmi2GetReal"]
         self.get_boolean, self.do_step = f["fmi2GetBoolean"], f["fmi2DoStep"]
 
-    def buffers(self, inputs: list[int], reals: list[int], booleans: list[int]):
-        vr = ctypes.c_uint
-        self.n_in, self.in_vr = len(inputs), (vr * len(inputs))(*inputs)
-        self.in_val = (ctypes.c_double * len(inputs))()
-        self.n_out, self.out_vr = len(reals), (vr * len(reals))(*reals)
-        self.out_val = (ctypes.c_double * len(reals))()
-        self.n_bool, self.bool_vr = len(booleans), (vr * len(booleans))(*booleans)
-        self.bool_val = (ctypes.c_int * len(booleans))()
+    def bind(self, values, flags, wiring: _UnitWiring) -> None:
+        """Point the unit's FMI calls at its slices of the run's buffers (``values``: c_double,
+        ``flags``: c_int; :class:`_UnitWiring`): its inputs are set from, its outputs read
+        into, those slices, so a step moves no value through a Python list."""
+        linked, first = wiring.n_linked, wiring.first_output
+        self.n_in, self.in_vr = _block(ctypes.c_uint, wiring.input_vrs)
+        self.n_out, self.out_vr = _block(ctypes.c_uint, wiring.output_vrs[:linked])
+        self.n_kept, self.kept_vr = _block(ctypes.c_uint, wiring.output_vrs[linked:])
+        self.n_bool, self.bool_vr = _block(ctypes.c_uint, wiring.bool_vrs)
+        self.in_val = _view(values, ctypes.c_double, wiring.first_input, self.n_in)
+        self.out_val = _view(values, ctypes.c_double, first, self.n_out)
+        self.kept_val = _view(values, ctypes.c_double, first + linked, self.n_kept)
+        self.bool_val = _view(flags, ctypes.c_int, wiring.first_bool, self.n_bool)
+        self.recorded_only = bool(self.n_kept or self.n_bool)
+        self.values = values
+        self.copies = tuple((d, s) for d, s, f, o in wiring.links if f == 1.0 and o == 0.0)
+        self.scaled = tuple(link for link in wiring.links if link[2:] != (1.0, 0.0))
+        self.signals = tuple(wiring.signals)
+
+    def set_inputs(self, t: float, signals: bool = True) -> int:
+        """Inputs from the connections (y = factor·x + offset) and, unless ``signals`` is
+        false (they keep the values last set), the signals at ``t``, set with one
+        fmi2SetReal; the FMI status."""
+        values = self.values
+        for dst, src in self.copies:
+            values[dst] = values[src]
+        for dst, src, factor, offset in self.scaled:
+            values[dst] = factor * values[src] + offset
+        if signals:
+            for dst, signal in self.signals:
+                values[dst] = signal(t)
+        if self.n_in:
+            return self.set_real(self.c, self.in_vr, self.n_in, self.in_val)
+        return 0
+
+    def refresh(self) -> int:
+        """An algebraic unit's outputs from its connected inputs now, without a step; the
+        FMI status."""
+        if (status := self.set_inputs(0.0, signals=False)) > 1:
+            return status
+        return self.get_all()
+
+    def get_outputs(self) -> int:
+        """The outputs other units read, into the run's buffer (one fmi2GetReal); the FMI
+        status."""
+        if self.n_out:
+            return self.get_real(self.c, self.out_vr, self.n_out, self.out_val)
+        return 0
+
+    def get_recorded(self) -> int:
+        """The outputs only recorded, into the run's buffers (one fmi2GetReal, one
+        fmi2GetBoolean): they hold what the unit's last step computed until its next step or
+        inputs, so they are read when a row is kept; the first status worse than a warning,
+        else the last."""
+        status = 0
+        if self.n_kept:
+            status = self.get_real(self.c, self.kept_vr, self.n_kept, self.kept_val)
+            if status > 1:
+                return status
+        if self.n_bool:
+            status = self.get_boolean(self.c, self.bool_vr, self.n_bool, self.bool_val)
+        return status
+
+    def get_all(self) -> int:
+        """Every output read (:meth:`get_outputs`, :meth:`get_recorded`); the FMI status."""
+        if (status := self.get_outputs()) > 1:
+            return status
+        return self.get_recorded()
 
     def close(self):
         if self.instantiated:
@@ -264,7 +336,7 @@ def run(
     algorithm: str = "gauss-seidel",
     record=None,
     out_dir=None,
-    progress: bool = True,
+    progress=True,
     fmu_dir=None,
     output_interval: float | None = None,
     rates: dict[str, int] | None = None,
@@ -283,7 +355,9 @@ def run(
         holds: the signal at the start of the step that ended at the row's time, the value
         its outputs at that time were computed from.
     out_dir : folder for ``results.csv`` (also written on failure, with the partial results)
-    progress : show a progress bar when the run takes longer than two seconds
+    progress : show a progress bar when the run takes longer than two seconds; or an open bar
+        (anything with ``update(n)``, e.g. a scenario's bar over its runs) to advance by the
+        steps done
     output_interval : keep a row every this many seconds (a multiple of the step; default
         every step), and always the last one
     rates : ``{"component": N}``: that component steps once every N communication steps,
@@ -564,7 +638,7 @@ class _Settings:
     algorithm: str
     record: list | None
     out_dir: object
-    progress: bool
+    progress: object  # a bool, or an open bar (see run)
     output_interval: float | None
     rates: dict
 
@@ -597,50 +671,83 @@ def _stop_if_requested(stop_request, where: str) -> None:
 
 
 @dataclass
+class _UnitWiring:
+    """One unit's part of the run's buffers: the value references it sets and reads (its Real
+    outputs that other units read first, ``n_linked`` of them, then those only recorded),
+    where its blocks start (its inputs and Real outputs in the values buffer, its Boolean
+    outputs in the flags buffer), its links ``(input position, output position, factor,
+    offset)`` and its signals ``(input position, callable)``."""
+
+    input_vrs: list = field(default_factory=list)
+    output_vrs: list = field(default_factory=list)
+    bool_vrs: list = field(default_factory=list)
+    n_linked: int = 0
+    first_input: int = 0
+    first_output: int = 0
+    first_bool: int = 0
+    links: list = field(default_factory=list)
+    signals: list = field(default_factory=list)
+
+
+@dataclass
 class _Wiring:
-    """Where every value of a run lives: the outputs read after each step (connected or
-    recorded) as one flat list of Reals and one of Booleans, each unit's input slots (from a
-    connection, with its factor and offset, or from a signal), and what each recorded column
-    reads.
+    """Where every value of a run lives: one buffer of Reals holding every unit's outputs read
+    after a step (connected or recorded) and then every unit's inputs (from a connection, with
+    its factor and offset, or from a signal), each unit's in one block; one buffer of Booleans
+    (as FMI's int) for the Boolean outputs read; and where each recorded column comes from.
 
     Attributes
     ----------
-    out_index, bool_index : (component, output) → position in the flat lists
-    bools : component → its Boolean outputs read, in order
-    inputs : component → (links [(slot, source position, factor, offset)], signals [(slot,
-        callable)], position of its first Real output)
-    getters : per recorded column: ("r", position), ("b", position) or ("s", (buffer, slot))
+    values, flags : the ctypes buffers (at least one element each)
+    units : component → its :class:`_UnitWiring`
+    columns : per recorded column, ("r", position in values) or ("b", position in flags)
     """
 
-    out_index: dict
-    bool_index: dict
-    bools: dict
-    inputs: dict
-    getters: list
+    values: object
+    flags: object
+    units: dict
+    columns: list
+
+
+def _block(ctype, items):
+    """(count, ctypes array of ``items``)."""
+    return len(items), (ctype * len(items))(*items)
+
+
+def _view(buffer, ctype, first: int, n: int):
+    """The ``n`` elements of ``buffer`` from ``first`` on, as a ctypes array sharing its
+    memory."""
+    return (ctype * n).from_buffer(buffer, first * ctypes.sizeof(ctype))
 
 
 def _wire(system, units, order, record, signals) -> _Wiring:
-    """The :class:`_Wiring` of a run, and each unit's ctypes buffers sized to it."""
-    needed = {c.start for c in system.connections} | {tuple(r.split(".", 1)) for r in record}
+    """The :class:`_Wiring` of a run; each unit bound to its blocks of the buffers."""
+    linked = {c.start for c in system.connections}
+    recorded = {tuple(r.split(".", 1)) for r in record}
+    wiring = {name: _UnitWiring() for name in order}
     out_index: dict[tuple[str, str], int] = {}
     bool_index: dict[tuple[str, str], int] = {}
-    reals, bools = {}, {}
     for name in order:
-        outputs = [
-            v
-            for v in system.components[name].variables.values()
-            if v.causality == "output" and (name, v.name) in needed
-        ]
-        reals[name] = [v for v in outputs if v.type == "Real"]
-        bools[name] = [v for v in outputs if v.type == "Boolean"]
-        for v in reals[name]:
-            out_index[(name, v.name)] = len(out_index)
-        for v in bools[name]:
-            bool_index[(name, v.name)] = len(bool_index)
-    inputs, signal_slot = {}, {}
+        w = wiring[name]
+        w.first_output, w.first_bool = len(out_index), len(bool_index)
+        outputs = [v for v in system.components[name].variables.values() if v.causality == "output"]
+        for v in outputs:  # what other units read first: the block read after every step
+            if v.type == "Real" and (name, v.name) in linked:
+                out_index[(name, v.name)] = len(out_index)
+                w.output_vrs.append(v.value_reference)
+        w.n_linked = len(w.output_vrs)
+        for v in outputs:  # then what is only recorded: read when a row is kept
+            if (name, v.name) in recorded and (name, v.name) not in linked:
+                if v.type == "Real":
+                    out_index[(name, v.name)] = len(out_index)
+                    w.output_vrs.append(v.value_reference)
+                elif v.type == "Boolean":
+                    bool_index[(name, v.name)] = len(bool_index)
+                    w.bool_vrs.append(v.value_reference)
+    n_values, signal_index = len(out_index), {}
     for name in order:
-        comp = system.components[name]
-        links, sigs, vrs = [], [], []
+        comp, w = system.components[name], wiring[name]
+        w.first_input = n_values
         for c in system.connections:
             if c.end[0] == name:
                 var = comp.variables[c.end[1]]
@@ -648,34 +755,97 @@ def _wire(system, units, order, record, signals) -> _Wiring:
                     raise HarnessError(
                         f"connection to {name}.{var.name}: only Real connections are supported"
                     )
-                links.append((len(vrs), out_index[c.start], c.factor, c.offset))
-                vrs.append(var.value_reference)
+                w.links.append((n_values, out_index[c.start], c.factor, c.offset))
+                w.input_vrs.append(var.value_reference)
+                n_values += 1
         for target, sig in signals.items():
             cname, _, vname = target.partition(".")
             if cname == name:
-                signal_slot[target] = len(vrs)
-                sigs.append((len(vrs), sig))
-                vrs.append(comp.variables[vname].value_reference)
-        units[name].buffers(
-            vrs, [v.value_reference for v in reals[name]], [v.value_reference for v in bools[name]]
-        )
-        first = out_index[(name, reals[name][0].name)] if reals[name] else 0
-        inputs[name] = (links, sigs, first)
-    getters = []
+                signal_index[target] = n_values
+                w.signals.append((n_values, sig))
+                w.input_vrs.append(comp.variables[vname].value_reference)
+                n_values += 1
+    values = (ctypes.c_double * max(1, n_values))()
+    flags = (ctypes.c_int * max(1, len(bool_index)))()
+    for name in order:
+        units[name].bind(values, flags, wiring[name])
+    columns = []
     for target in record:
         comp, var = system.variable(target)
         key = (comp.name, var.name)
         if key in out_index:
-            getters.append(("r", out_index[key]))
+            columns.append(("r", out_index[key]))
         elif key in bool_index:
-            getters.append(("b", bool_index[key]))
+            columns.append(("b", bool_index[key]))
         elif target in signals:  # the value the input holds (set at the step's start)
-            getters.append(("s", (units[comp.name].in_val, signal_slot[target])))
+            columns.append(("r", signal_index[target]))
         else:  # pragma: no cover - check_run refused it
             raise ArgumentError(
                 f"record {target!r}: only outputs and signal-driven inputs can be recorded"
             )
-    return _Wiring(out_index, bool_index, bools, inputs, getters)
+    return _Wiring(values, flags, wiring, columns)
+
+
+class _Schedule:
+    """Which units step at communication step ``k`` and over what, and which slow units
+    publish when it ends (``rates``): built once per step of the rates' common period, not
+    per step.
+
+    :meth:`at` gives ``(due, ended, readers)``: ``due`` the units stepping, in order, each as
+    ``(unit, step size, read after the step)`` (a slow unit steps over N·h, the last one over
+    what is left, and is read when its step ends); ``ended`` the slow units whose step ends
+    at t + h; ``readers`` the algebraic units that read them (updated then)."""
+
+    #: Longest common period of the rates kept as a table; a longer one keeps its patterns.
+    TABLE = 10_000
+
+    def __init__(self, system, units, order, rates: dict, n_steps: int, h: float):
+        self.system, self.units, self.order = system, units, order
+        self.rates = [(name, rates.get(name, 1)) for name in order]
+        self.slow = [(name, r) for name, r in self.rates if r > 1]
+        self.n_steps, self.h = n_steps, h
+        self.fast = (tuple((units[n], h, True) for n, _ in self.rates), (), ())
+        # from this step on a slow unit's step may be cut short by the end of the run
+        self.tail = n_steps - max((r for _, r in self.slow), default=1)
+        self.period = math.lcm(*(r for _, r in self.slow)) if self.slow else 1
+        self._table = [None] * self.period if self.period <= self.TABLE else None
+        self._patterns: dict[tuple, tuple] = {}
+
+    def at(self, k: int):
+        if not self.slow:
+            return self.fast
+        if k < self.tail and self._table is not None:
+            entry = self._table[k % self.period]
+            if entry is None:
+                entry = self._table[k % self.period] = self._pattern(k)
+            return entry
+        return self._pattern(k)
+
+    def _pattern(self, k: int):
+        key = tuple(k % r == 0 for _, r in self.slow) + tuple(
+            (k + 1) % r == 0 or k + 1 == self.n_steps for _, r in self.slow
+        )
+        if k >= self.tail:
+            return self._build(k, key)
+        pattern = self._patterns.get(key)
+        if pattern is None:
+            pattern = self._patterns[key] = self._build(k, key)
+        return pattern
+
+    def _build(self, k: int, key: tuple):
+        starts = {n for (n, _), due in zip(self.slow, key, strict=False) if due}
+        ends = [n for (n, _), end in zip(self.slow, key[len(self.slow) :], strict=True) if end]
+        due = tuple(
+            (self.units[n], min(r, self.n_steps - k) * self.h, r == 1)
+            for n, r in self.rates
+            if r == 1 or n in starts
+        )
+        readers = _readers(self.system, self.order, ends) if ends else []
+        return (
+            due,
+            tuple(self.units[n] for n in ends),
+            tuple(self.units[n] for n in readers),
+        )
 
 
 class _Cosimulation:
@@ -686,12 +856,17 @@ class _Cosimulation:
     def __init__(self, system, units, order, wiring: _Wiring, plan: RunPlan, settings, t0_wall):
         self.system, self.units, self.order, self.w = system, units, order, wiring
         self.plan, self.settings, self.t0_wall = plan, settings, t0_wall
-        self.latest = [0.0] * len(wiring.out_index)
-        self.latest_bool = [0.0] * len(wiring.bool_index)
         n, every = plan.n_steps, plan.every
-        self.rows = np.empty((n // every + 1 + (1 if n % every else 0), 1 + len(wiring.getters)))
+        self.rows = np.empty((n // every + 1 + (1 if n % every else 0), 1 + len(wiring.columns)))
         self.stored = -1  # index of the last row written
-        self.rates = [(name, settings.rates.get(name, 1)) for name in order]
+        self.values = np.frombuffer(wiring.values, dtype=float)
+        self.flags = np.frombuffer(wiring.flags, dtype=np.intc)
+        reals = [(j, p) for j, (kind, p) in enumerate(wiring.columns, start=1) if kind == "r"]
+        bools = [(j, p) for j, (kind, p) in enumerate(wiring.columns, start=1) if kind == "b"]
+        self.real_columns = np.array([j for j, _ in reals], dtype=np.intp)
+        self.real_sources = np.array([p for _, p in reals], dtype=np.intp)
+        self.bool_columns = np.array([j for j, _ in bools], dtype=np.intp)
+        self.bool_sources = np.array([p for _, p in bools], dtype=np.intp)
 
     # ------------------------------------------------------------------ results and ends
     def result(self, failed=False, message="") -> RunResult:
@@ -734,8 +909,7 @@ class _Cosimulation:
         )
         where = ""
         if self.settings.out_dir is not None:
-            log_file = Path(self.settings.out_dir) / "failure.log"
-            log_file.write_text(details + "\n")
+            log_file = write_text(Path(self.settings.out_dir) / "failure.log", details + "\n")
             where = f"; the FMUs' log in {log_file}"
         if res.csv and len(res.data):
             where += f"; results up to t = {res.data['time'][-1]:.6g} s in {res.csv}"
@@ -765,64 +939,21 @@ class _Cosimulation:
         )
 
     # ------------------------------------------------------------------ values
-    def read(self, name) -> int:
-        """The unit's outputs into the flat lists; the FMI status."""
-        u = self.units[name]
-        if u.n_out:
-            status = u.get_real(u.c, u.out_vr, u.n_out, u.out_val)
-            if status > 1:
-                return status
-            o = self.w.inputs[name][2]
-            self.latest[o : o + u.n_out] = u.out_val
-        if u.n_bool:
-            status = u.get_boolean(u.c, u.bool_vr, u.n_bool, u.bool_val)
-            if status > 1:
-                return status
-            index = self.w.bool_index
-            for i, v in enumerate(self.w.bools[name]):
-                self.latest_bool[index[(name, v.name)]] = float(u.bool_val[i])
-        return 0
-
-    def write_inputs(self, name, t) -> int:
-        """The unit's inputs from the connections and the signals at ``t``; the FMI status."""
-        u = self.units[name]
-        links, sigs, _ = self.w.inputs[name]
-        val, latest = u.in_val, self.latest
-        for slot, src, factor, offset in links:
-            val[slot] = factor * latest[src] + offset
-        for slot, sig in sigs:
-            val[slot] = sig(t)
-        if u.n_in:
-            return u.set_real(u.c, u.in_vr, u.n_in, val)
-        return 0
-
-    def refresh(self, name) -> int:
-        """An algebraic unit's outputs from its connected inputs now, without a step."""
-        u = self.units[name]
-        for slot, src, factor, offset in self.w.inputs[name][0]:
-            u.in_val[slot] = factor * self.latest[src] + offset
-        if u.n_in and (status := u.set_real(u.c, u.in_vr, u.n_in, u.in_val)) > 1:
-            return status
-        return self.read(name)
-
     def store(self, t):
         self.stored += 1
         row = self.rows[self.stored]
         row[0] = t
-        for j, (kind, ref) in enumerate(self.w.getters, start=1):
-            if kind == "r":
-                row[j] = self.latest[ref]
-            elif kind == "b":
-                row[j] = self.latest_bool[ref]
-            else:
-                row[j] = ref[0][ref[1]]
+        row[self.real_columns] = self.values[self.real_sources]
+        if len(self.bool_columns):
+            row[self.bool_columns] = self.flags[self.bool_sources]
 
     def exchange(self, t):
         """Inputs set and outputs read for every unit at ``t``, in order; fail on an error."""
         for name in self.order:
-            if (status := self.write_inputs(name, t)) > 1:
+            u = self.units[name]
+            if (status := u.set_inputs(t)) > 1:
                 self.fail(name, "fmi2SetReal", status, t)
-            if (status := self.read(name)) > 1:
+            if (status := u.get_all()) > 1:
                 self.fail(name, "fmi2GetReal", status, t)
 
     # ------------------------------------------------------------------ initialization
@@ -862,42 +993,37 @@ class _Cosimulation:
     def step_jacobi(self, t, due):
         """Jacobi: every due unit's inputs from the outputs at ``t``, then all step, then all
         are read."""
-        for name, _, _ in due:
-            if (status := self.write_inputs(name, t)) > 1:
-                self.fail(name, "fmi2SetReal", status, t)
-        for name, span, _ in due:
-            u = self.units[name]
+        for u, _, _ in due:
+            if (status := u.set_inputs(t)) > 1:
+                self.fail(u.name, "fmi2SetReal", status, t)
+        for u, span, _ in due:
             if (status := u.do_step(u.c, t, span, 1)) > 1:
-                self.fail(name, "fmi2DoStep", status, t)
-        for name, _, now in due:
-            if now and (status := self.read(name)) > 1:
-                self.fail(name, "fmi2GetReal", status, t)
+                self.fail(u.name, "fmi2DoStep", status, t)
+        for u, _, now in due:
+            if now and (status := u.get_outputs()) > 1:
+                self.fail(u.name, "fmi2GetReal", status, t)
 
     def step_gauss_seidel(self, t, due):
         """Gauss-Seidel: each due unit in order sets its inputs from the newest outputs,
         steps and is read."""
-        for name, span, now in due:
-            u = self.units[name]
-            if (status := self.write_inputs(name, t)) > 1:
-                self.fail(name, "fmi2SetReal", status, t)
+        for u, span, now in due:
+            if (status := u.set_inputs(t)) > 1:
+                self.fail(u.name, "fmi2SetReal", status, t)
             if (status := u.do_step(u.c, t, span, 1)) > 1:
-                self.fail(name, "fmi2DoStep", status, t)
-            if now and (status := self.read(name)) > 1:
-                self.fail(name, "fmi2GetReal", status, t)
+                self.fail(u.name, "fmi2DoStep", status, t)
+            if now and (status := u.get_outputs()) > 1:
+                self.fail(u.name, "fmi2GetReal", status, t)
 
-    def publish_slow(self, k, t):
-        """After step ``k``: the slow units (``rates``) whose step ends at t + h publish their
-        outputs, and the algebraic units that read them are updated."""
-        n_steps, h = self.plan.n_steps, self.plan.step
-        ended = [n for n, r in self.rates if r > 1 and ((k + 1) % r == 0 or k + 1 == n_steps)]
-        if not ended:
-            return
-        for name in ended:
-            if (status := self.read(name)) > 1:
-                self.fail(name, "fmi2GetReal", status, t)
-        for name in _readers(self.system, self.order, ended):
-            if (status := self.refresh(name)) > 1:
-                self.fail(name, "fmi2SetReal/fmi2GetReal", status, t + h)
+    def publish_slow(self, ended, readers, t):
+        """After a step from ``t``: the slow units ``ended`` (``rates``), whose step ends at
+        t + h, publish their outputs, and the algebraic units that read them are updated
+        (connected inputs set, outputs read, no step)."""
+        for u in ended:
+            if (status := u.get_all()) > 1:
+                self.fail(u.name, "fmi2GetReal", status, t)
+        for u in readers:
+            if (status := u.refresh()) > 1:
+                self.fail(u.name, "fmi2SetReal/fmi2GetReal", status, t + self.plan.step)
 
     def step_all(self, stop_request) -> RunResult:
         """Every communication step of the run; the :class:`RunResult`."""
@@ -908,9 +1034,13 @@ class _Cosimulation:
             self.plan.every,
         )
         step = self.step_jacobi if self.settings.algorithm == "jacobi" else self.step_gauss_seidel
-        rates = self.rates
-        bar = progress_bar(
-            n_steps, desc=self.system.name, unit="step", enabled=self.settings.progress
+        schedule = _Schedule(self.system, self.units, self.order, self.settings.rates, n_steps, h)
+        bar, own_bar = _bar(self.settings.progress, n_steps, self.system.name)
+        done = 0  # steps not yet shown on the bar
+        varying, (due, ended, readers) = bool(schedule.slow), schedule.fast
+        # outputs only recorded are read when a row is kept (a slow unit's when it publishes)
+        kept = tuple(
+            self.units[n] for n, r in schedule.rates if r == 1 and self.units[n].recorded_only
         )
         try:
             for k in range(n_steps):
@@ -923,13 +1053,35 @@ class _Cosimulation:
                         time=t,
                         signum=stop_request.signum,
                     )
-                # the units due at this step: (name, step size, read now): a slow one steps
-                # over N·h and its outputs reach the others when that step ends
-                step(t, [(n, min(r, n_steps - k) * h, r == 1) for n, r in rates if k % r == 0])
-                self.publish_slow(k, t)
+                if varying:
+                    due, ended, readers = schedule.at(k)
+                step(t, due)
+                if ended:
+                    self.publish_slow(ended, readers, t)
                 if (k + 1) % every == 0 or k + 1 == n_steps:
+                    for u in kept:
+                        if (status := u.get_recorded()) > 1:
+                            self.fail(u.name, "fmi2GetReal", status, t)
                     self.store(start + (k + 1) * h)
-                bar.update()
+                done += 1
+                if done == BAR_STEPS:
+                    bar.update(done)
+                    done = 0
         finally:
-            bar.close()
+            bar.update(done)
+            if own_bar:
+                bar.close()
         return self.result()
+
+
+#: Steps between two updates of a run's progress bar (an update costs about a step).
+BAR_STEPS = 64
+
+
+def _bar(progress, n_steps: int, name: str):
+    """(bar, whether the run owns it): the caller's open bar (``progress`` with an
+    ``update`` method, advanced by the steps), else a bar of its own that shows after two
+    seconds, disabled when ``progress`` is false."""
+    if hasattr(progress, "update"):
+        return progress, False
+    return progress_bar(n_steps, desc=name, unit="step", enabled=bool(progress)), True

@@ -5,9 +5,12 @@ from __future__ import annotations
 
 import bisect
 import csv
+import io
 import math
 from dataclasses import dataclass
 from pathlib import Path
+
+from servofmu.files import read_input
 
 
 @dataclass(frozen=True)
@@ -95,8 +98,7 @@ class Cycle:
 def from_csv(path, column: str, time_column: str = "time") -> PiecewiseLinear:
     """A piecewise-linear signal from two columns of a CSV file (header row)."""
     path = Path(path)
-    with path.open(newline="") as fh:
-        rows = list(csv.DictReader(fh))
+    rows = list(csv.DictReader(io.StringIO(read_input(path, "signal table"), newline="")))
     if not rows:
         raise ValueError(f"{path}: no data rows")
     for name in (time_column, column):

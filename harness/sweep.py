@@ -25,10 +25,10 @@ marks the others ``interrupted``.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import itertools
 import math
-import tempfile
 import time
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -399,18 +399,24 @@ _SYSTEMS: dict[str, tuple] = {}  # per process: digest → (loaded System, its t
 def _system(digest: str, data: bytes):
     """The system of archive ``data``, loaded once per process (the archive in a temporary
     folder that is removed when the process ends)."""
+    from servofmu.files import scratch_folder
     from servofmu.harness import load_system
 
     if digest not in _SYSTEMS:
-        folder = tempfile.TemporaryDirectory(prefix="servofmu_sweep_")
+        folder = scratch_folder("servofmu_sweep_")
         archive = Path(folder.name) / f"{digest}.ssp"
         archive.write_bytes(data)
         _SYSTEMS[digest] = (load_system(archive), folder)
     return _SYSTEMS[digest][0]
 
 
-def _failed(point: dict, exc: BaseException) -> dict:
-    return {**point, "error": f"{type(exc).__name__}: {exc}".splitlines()[0]}
+def _failed(point: dict, exc: BaseException, lost: bool = False) -> dict:
+    """The row of a failed point: its parameters and the error (``lost``: its chunk never
+    came back from the cluster, which is said so)."""
+    text = f"{type(exc).__name__}: {exc}".splitlines()[0]
+    if lost:
+        text = f"lost: its worker failed or the cluster has no worker left ({text})"
+    return {**point, "error": text}
 
 
 # ----------------------------------------------------------------------------- running
@@ -449,10 +455,12 @@ class SweepResult:
 
     def write(self, path) -> Path:
         """The table as CSV (headers ``name [unit]``), or Parquet when ``path`` ends in
-        ``.parquet`` (bare names, the unit in each field's metadata)."""
+        ``.parquet`` (bare names, the unit in each field's metadata), whole or not at all
+        (:func:`servofmu.files.written`: a signal waits until it is in place)."""
+        from servofmu.files import written
+
         path = Path(path)
         check_table_path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
         cols = self.columns
         table = {c: [r.get(c, i if c == "run" else None) for i, r in enumerate(self.rows)]
                  for c in cols}  # fmt: skip
@@ -470,11 +478,12 @@ class SweepResult:
                     for c, a in arrays.items()
                 ]
             )
-            pq.write_table(pa.table(arrays, schema=schema), path)
+            with written(path) as part:
+                pq.write_table(pa.table(arrays, schema=schema), part)
             return path
         import csv
 
-        with path.open("w", newline="") as fh:
+        with written(path) as part, part.open("w", newline="") as fh:
             w = csv.writer(fh)
             w.writerow([self.header(c) for c in cols])
             for i in range(len(self.rows)):
@@ -587,6 +596,7 @@ def run_sweep(
     per worker)."""
     from dask.distributed import Client, as_completed
 
+    from .interrupt import protected
     from .progress import progress_bar
 
     points = [dict(p) for p in points]
@@ -600,47 +610,95 @@ def run_sweep(
     units = task.units() if hasattr(task, "units") else {}
     t0 = time.perf_counter()
     cluster, own = None, client is None
-    if client is not None:
-        pass
-    elif scheduler:
-        client = Client(scheduler)
-    else:
-        cluster = local_cluster(workers)
-        client = Client(cluster)
+    try:
+        if client is not None:
+            pass
+        elif scheduler:
+            client = Client(scheduler)
+        else:
+            cluster = local_cluster(workers)
+            client = Client(cluster)
+    except KeyboardInterrupt:  # a signal while the cluster starts: nothing ran, all marked
+        with protected(reraise=False):
+            for part in (client if own else None, cluster):
+                if part is not None:
+                    with contextlib.suppress(Exception):  # a cluster half started may not close
+                        part.close()
+        rows = [{**p, "error": "interrupted"} for p in points]
+        return SweepResult(rows, 0, time.perf_counter() - t0, True, units)
+    interrupted = False
     try:
         n_workers = max(1, len(client.scheduler_info(n_workers=-1)["workers"]))
         size = chunk_size or max(1, math.ceil(len(points) / (4 * n_workers)))
         chunks = [list(range(i, min(i + size, len(points)))) for i in range(0, len(points), size)]
         shared = client.scatter(task, broadcast=True, hash=False)  # a fresh key per sweep
-        futures = {
-            client.submit(_run_chunk, shared, [points[i] for i in c], pure=False): c for c in chunks
-        }
+
+        def submit(c):
+            return client.submit(_run_chunk, shared, [points[i] for i in c], pure=False)
+
+        futures = {submit(c): c for c in chunks}
+        tries = dict.fromkeys(map(tuple, chunks), 0)
         rows: list[dict | None] = [None] * len(points)
         bar = progress_bar(len(points), desc="sweep", unit="run", enabled=progress, delay=1.0)
-        interrupted = False
         try:
-            for fut in as_completed(futures):
+            pending = as_completed(futures)
+            for fut in pending:
                 idx = futures[fut]
                 try:
                     out = fut.result()
-                except Exception as exc:  # the worker died or the chunk raised
-                    out = [_failed(points[i], exc) for i in idx]
+                except Exception as exc:  # the worker died, or the chunk raised
+                    lost = _lost_with_a_worker(exc)
+                    if lost and tries[tuple(idx)] < RERUNS and _workers(client):
+                        tries[tuple(idx)] += 1
+                        again = submit(idx)
+                        futures[again] = idx
+                        pending.add(again)
+                        continue
+                    out = [_failed(points[i], exc, lost=lost) for i in idx]
                 for i, row in zip(idx, out, strict=True):
                     rows[i] = row
                 bar.update(len(idx))
-        except KeyboardInterrupt:  # Ctrl-C: keep what is done, mark the rest
+        except KeyboardInterrupt:  # Ctrl-C or SIGTERM: keep what is done, mark the rest
             interrupted = True
-            client.cancel(list(futures))
-            rows = [r if r is not None else {**p, "error": "interrupted"}
-                    for r, p in zip(rows, points, strict=True)]  # fmt: skip
+            with protected(reraise=False):
+                client.cancel(list(futures))
+                rows = [r if r is not None else {**p, "error": "interrupted"}
+                        for r, p in zip(rows, points, strict=True)]  # fmt: skip
         finally:
             bar.close()
     finally:
-        if own:
-            client.close()
-        if cluster is not None:
-            cluster.close()
+        # closing a cluster takes seconds: a signal meanwhile waits for it, and then stops
+        # the sweep as if it had come before (the caller writes the rows and exits so)
+        with protected(reraise=False) as held:
+            if own:
+                client.close()
+            if cluster is not None:
+                cluster.close()
+        interrupted = interrupted or bool(held)
     return SweepResult(rows, n_workers, time.perf_counter() - t0, interrupted, units)
+
+
+#: How often a chunk lost with its worker is run again while the cluster has workers (Dask
+#: itself retries a task whose worker died a few times before it gives up on it).
+RERUNS = 2
+
+
+def _lost_with_a_worker(exc: BaseException) -> bool:
+    """True for the errors of a chunk whose worker died (Dask gave up on it, or forgot it
+    when the workers went), not for an error the chunk itself raised."""
+    from concurrent.futures import CancelledError
+
+    from distributed.scheduler import KilledWorker
+
+    return isinstance(exc, KilledWorker | CancelledError)
+
+
+def _workers(client) -> int:
+    """The number of workers the cluster has now (0 when it cannot be asked)."""
+    try:
+        return len(client.scheduler_info(n_workers=-1)["workers"])
+    except Exception:
+        return 0
 
 
 #: Dask settings of servofmu's LocalCluster: the worker's statistical profiler (a 10 ms stack

@@ -15,13 +15,13 @@ causality or type, a unit mismatch across a connection, a parameter the FMU does
 from __future__ import annotations
 
 import math
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
-from servofmu.build.archive import read_member, safe_extract
+from servofmu.build.archive import ArchiveError, Budget, read_member, safe_extract
 from servofmu.build.choices import choice_items
 from servofmu.build.xmlsafe import parse, validate
+from servofmu.files import read_input_bytes, scratch_folder
 from servofmu.physics._checks import suggest
 
 from .errors import HarnessError, SystemError_, refusals
@@ -95,16 +95,18 @@ class System:
     _tmp: object = None
     _unpacked: dict = field(default_factory=dict)  # FMU path → its unpacked folder
     _fmu_tmp: object = None
+    #: one budget of unpacked bytes and entries for the archive and every FMU of the system
+    _budget: Budget = field(default_factory=Budget)
 
     def unpacked(self, fmu: Path) -> Path:
         """The folder ``fmu`` is unpacked to, once per system (runs share it; removed by
         :meth:`close`)."""
         if fmu not in self._unpacked:
             if self._fmu_tmp is None:
-                self._fmu_tmp = tempfile.TemporaryDirectory(prefix="servofmu_fmus_")
+                self._fmu_tmp = scratch_folder("servofmu_fmus_")
             target = Path(self._fmu_tmp.name) / f"{len(self._unpacked)}_{fmu.stem}"
             with refusals():
-                self._unpacked[fmu] = safe_extract(fmu, target)
+                self._unpacked[fmu] = safe_extract(fmu, target, budget=self._budget)
         return self._unpacked[fmu]
 
     def close(self):
@@ -258,10 +260,15 @@ def load_system(path, fmu_dir=None) -> System:
     a missing one is looked up by file name in ``fmu_dir`` (e.g. ``build/out``)."""
     path = Path(path)
     tmp = None
+    budget = Budget()  # the archive and its FMUs together
     if path.is_file() and path.suffix == ".ssp":
-        tmp = tempfile.TemporaryDirectory(prefix="servofmu_ssp_")
-        with refusals():
-            root = safe_extract(path, tmp.name)
+        tmp = scratch_folder("servofmu_ssp_")
+        try:
+            with refusals():
+                root = safe_extract(path, tmp.name, budget=budget)
+        except BaseException:
+            tmp.cleanup()
+            raise
     elif path.is_dir():
         root = path
     elif path.is_file() and path.suffix == ".ssd":
@@ -270,24 +277,30 @@ def load_system(path, fmu_dir=None) -> System:
         raise HarnessError(f"{path}: no .ssp archive or system folder there")
     try:
         with refusals():
-            return _load(root, path, tmp, fmu_dir)
+            return _load(root, path, tmp, fmu_dir, budget)
     except Exception:
         if tmp is not None:
             tmp.cleanup()
         raise
 
 
-def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
+def _load(root: Path, path: Path, tmp, fmu_dir, budget: Budget) -> System:
     ssd_file = root / "SystemStructure.ssd"
     if not ssd_file.is_file():
         raise SystemError_([f"{path}: no SystemStructure.ssd"])
-    ssd = parse(ssd_file.read_bytes(), str(ssd_file))
+    ssd = parse(read_input_bytes(ssd_file, "system description"), str(ssd_file))
     validate(ssd, "ssd", str(ssd_file))
     problems: list[str] = []
     system = ssd.find("ssd:System", NS)
     components: dict[str, Component] = {}
     for elem in system.findall("ssd:Elements/ssd:Component", NS):
         name, source = elem.get("name"), elem.get("source")
+        if name in components:  # one name, one component: a second would replace the first
+            problems.append(
+                f"{ssd_file}: ssd:Component name={name!r} (line {elem.sourceline}) is declared "
+                "more than once: component names must be unique"
+            )
+            continue
         if elem.get("type", "application/x-fmu-sharedlibrary") != "application/x-fmu-sharedlibrary":
             problems.append(f"component {name!r}: only FMU components are supported")
             continue
@@ -321,7 +334,8 @@ def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
             if not ssv_file.is_file():
                 problems.append(f"component {name!r}: parameter set {src!r} not found")
                 continue
-            comp.parameters.update(_read_parameter_set(ssv_file.read_bytes(), str(ssv_file)))
+            data = read_input_bytes(ssv_file, "parameter set")
+            comp.parameters.update(_read_parameter_set(data, str(ssv_file)))
         components[name] = comp
     connections = []
     for c in system.findall("ssd:Connections/ssd:Connection", NS):
@@ -340,18 +354,48 @@ def _load(root: Path, path: Path, tmp, fmu_dir) -> System:
     de = ssd.find("ssd:DefaultExperiment", NS)
     start_time = 0.0 if de is None else _float(de, "startTime", 0.0)
     stop_time = 1.0 if de is None else _float(de, "stopTime", 1.0)
-    fixed = ssd.find(".//osp:FixedStepAlgorithm", NS)
-    step = None if fixed is None else float(fixed.get("baseStepSize"))
+    step = _base_step(ssd.find(".//osp:FixedStepAlgorithm", NS), ssd_file, problems)
     variants = {}
     for f in sorted((root / "variants").glob("*.ssv")) if (root / "variants").is_dir() else []:
-        variants[f.stem] = _read_parameter_set(f.read_bytes(), str(f))
+        variants[f.stem] = _read_parameter_set(read_input_bytes(f, "parameter set"), str(f))
+    over = []  # every FMU charged before any is unpacked or read
+    for comp in components.values():
+        if comp.fmu is not None:
+            try:
+                budget.reserve(comp.fmu)
+            except ArchiveError as exc:
+                over.append(f"component {comp.name!r}: {exc}")
+    if over:
+        raise SystemError_(over)
     sys_ = System(
         ssd.get("name"), root, components, connections, start_time, stop_time, step, variants, tmp
     )
+    sys_._budget = budget
     problems += _check(sys_)
     if problems:
         raise SystemError_(problems)
     return sys_
+
+
+def _base_step(fixed, ssd_file: Path, problems: list[str]) -> float | None:
+    """The communication step [s] of the OSP ``FixedStepAlgorithm`` annotation (None without
+    one); a missing, non-numeric, non-finite or non-positive ``baseStepSize`` is a problem
+    naming the file and the element."""
+    if fixed is None:
+        return None
+    raw = fixed.get("baseStepSize")
+    try:
+        step = float(raw)
+    except (TypeError, ValueError):
+        step = math.nan
+    if not (math.isfinite(step) and step > 0.0):
+        given = "is missing" if raw is None else f"= {raw!r} is not a finite number > 0"
+        problems.append(
+            f"{ssd_file}: osp:FixedStepAlgorithm (line {fixed.sourceline}) baseStepSize {given} "
+            '(the communication step [s], e.g. baseStepSize="0.001")'
+        )
+        return None
+    return step
 
 
 def _check(system: System) -> list[str]:
@@ -532,7 +576,7 @@ def parameter_file(system: System, path) -> dict[str, object]:
         raise ParameterError(f"--parameters {path}: no such parameter-set file")
     with refusals():
         values = {name: value for name, (_, value) in _read_parameter_set(
-            path.read_bytes(), str(path)).items()}  # fmt: skip
+            read_input_bytes(path, "parameter set"), str(path)).items()}  # fmt: skip
     if not values:
         raise ParameterError(f"--parameters {path}: the parameter set is empty")
     qualified = [n for n in values if n.partition(".")[0] in system.components]

@@ -23,6 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import save_figure
 from servofmu.parameters import catalog
 from servofmu.parameters.bearing import PARAMETER_NAMES, default_parameters
 from servofmu.parameters.presets import coefficient_set
@@ -284,6 +285,6 @@ def _plot(rows, path: Path, title: str) -> Path:
     axp.set_xlabel("temperature [°C]")
     axp.grid(True, alpha=0.3)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save_figure(fig, path, dpi=110)
     plt.close(fig)
     return path

@@ -39,6 +39,21 @@ def fmus(tmp_path_factory):
     return {p.stem: p for p in build_all(out, FMUS)}
 
 
+@pytest.fixture(scope="session")
+def stock_fmus(tmp_path_factory):
+    """The five FMUs with pythonfmu's binary, as an install without a C++ compiler builds
+    them."""
+    from servofmu.build import exportlib, fmu
+
+    out = tmp_path_factory.mktemp("stock_fmus")
+    found = exportlib.compiled_export
+    exportlib.compiled_export = fmu.compiled_export = lambda: None
+    try:
+        return {p.stem: p for p in fmu.build_all(out, fmu.FMUS, systems=False)}
+    finally:
+        exportlib.compiled_export = fmu.compiled_export = found
+
+
 def pytest_addoption(parser):
     parser.addoption(
         "--long",

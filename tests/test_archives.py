@@ -296,3 +296,25 @@ def test_component_source_outside_an_archive_is_refused_on_the_command_line(tmp_
     err = capsys.readouterr().err
     assert "'../../x.fmu' leaves the system folder" in err and len(err.splitlines()) == 1
     assert not (tmp_path / "o").exists()
+
+
+def test_one_budget_covers_an_ssp_and_the_fmus_in_it(tmp_path, monkeypatch):
+    """Three FMUs, each within the per-archive limit, together over it: refused from their
+    headers before any FMU is unpacked (a per-archive cap let N bombs through as N × it)."""
+    monkeypatch.setattr(archive_module, "MAX_BYTES", 4 << 20)
+    bomb = _zip(tmp_path / "bomb.fmu", {"modelDescription.xml": b"<x/>", "zeros": bytes(3 << 20)})
+    entries = _system_entries()
+    for name in ("ServoController", "DCMotor", "BearingFriction"):
+        entries[f"resources/{name}.fmu"] = bomb.read_bytes()
+    ssp = _zip(tmp_path / "bombs.ssp", entries)
+    assert ssp.stat().st_size < 100_000
+    unpacked = []
+    real = archive_module.safe_extract
+    monkeypatch.setattr(
+        "servofmu.harness.system.safe_extract",
+        lambda a, *args, **kw: unpacked.append(a.name) or real(a, *args, **kw),
+    )
+    with pytest.raises(SystemError_, match=r"left of one budget of 4194304 bytes") as info:
+        load_system(ssp)
+    assert unpacked == ["bombs.ssp"]  # no FMU was unpacked
+    assert len(info.value.problems) == 2  # the first FMU fits, the next two do not

@@ -5,12 +5,15 @@ from __future__ import annotations
 
 import ast
 import shutil
+import subprocess
 import zipfile
 from pathlib import Path
 
+import pytest
+
 from servofmu.build import fmu as fmu_module
 from servofmu.build.fmu import PACKAGE_DIR, is_current
-from servofmu.fmus.slave import SHIPPED, package_hash
+from servofmu.fmus.package_hash import SHIPPED, package_hash
 
 BUILD_DIR = Path(fmu_module.__file__).parent
 
@@ -30,7 +33,7 @@ def test_fmu_ships_only_what_it_runs(fmus):
         }
     tops = {name.split("/")[0] for name in shipped}
     assert tops == set(SHIPPED)  # __init__.py, physics/, parameters/, fmus/: no papers, cli
-    assert "parameters/data/bearings.toml" in shipped and "fmus/slave.py" in shipped
+    assert "parameters/data/bearings.toml" in shipped and "fmus/runtime.py" in shipped
     assert not [n for n in shipped if "__pycache__" in n or n.endswith(".pyc")]
     expected = {
         f.relative_to(PACKAGE_DIR).as_posix()
@@ -68,7 +71,7 @@ def test_is_current_ignores_edits_outside_the_shipped_parts(fmus, tmp_path, monk
     (copy / "papers" / "yu2017.py").write_text("# edited\n")
     monkeypatch.setattr(fmu_module, "PACKAGE_DIR", copy)
     assert is_current(out)
-    (copy / "fmus" / "slave.py").write_text((copy / "fmus" / "slave.py").read_text() + "\n")
+    (copy / "fmus" / "runtime.py").write_text((copy / "fmus" / "runtime.py").read_text() + "\n")
     assert not is_current(out)
 
 
@@ -82,3 +85,23 @@ def test_build_never_imports_the_harness():
             elif isinstance(node, ast.ImportFrom) and node.module:
                 names = [node.module]
             assert not [n for n in names if "harness" in n], f"{source.name} imports {names}"
+
+
+def test_a_new_source_file_of_the_export_library_is_not_ignored_by_git():
+    """build/export/ is tracked whole: a source added there shows in ``git status`` (only
+    its compiled library is ignored), while a mechanism's build folder stays ignored."""
+    checkout = BUILD_DIR.parent
+    if not (checkout / ".git").exists():
+        pytest.skip("not a git checkout")
+
+    def ignored(path: str) -> bool:
+        proc = subprocess.run(
+            ["git", "check-ignore", "-q", path], cwd=checkout, capture_output=True, check=False
+        )
+        assert proc.returncode in (0, 1), proc.stderr
+        return proc.returncode == 0
+
+    assert not ignored("build/export/src/pythonfmu/SharedValues.hpp")
+    assert not ignored("build/export/NOTES.md")
+    assert ignored("build/export/servofmu_export.abi3.so")
+    assert ignored("build/my_gimbal/BearingFriction.fmu")

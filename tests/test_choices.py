@@ -18,8 +18,9 @@ from servofmu.build.archive import read_member
 from servofmu.build.choices import choice_items, problems
 from servofmu.build.ssp import SSP_DIR, systems
 from servofmu.build.xmlsafe import parse, validate
-from servofmu.fmus import slave
+from servofmu.fmus import declarations, model_description
 from servofmu.fmus.BearingFriction import BearingFriction
+from servofmu.fmus.runtime import ServoSlave
 from servofmu.harness import HarnessError, SystemError_, load_system, run
 from servofmu.parameters import bearing as bearing_parameters
 from servofmu.parameters.bearing import PARAMETERS, parameter
@@ -154,12 +155,13 @@ def test_ssv_bindings_of_a_choice(fmus, tmp_path, binding, message):
 
 
 def test_choices_written_as_fmi_enumerations_validate_and_run(tmp_path, monkeypatch):
-    """The other encoding (slave.CHOICES_AS = "Enumeration"): 0 problems in fmpy and servofmu
-    validate, and the harness binds the same .ssv files (ssv:Integer sets an Enumeration)."""
+    """The other encoding (model_description.CHOICES_AS = "Enumeration"): 0 problems in fmpy
+    and servofmu validate, and the harness binds the same .ssv files (ssv:Integer sets an
+    Enumeration)."""
     from servofmu.build.fmu import build_all
     from servofmu.build.validate import validate as validate_fmu_servofmu
 
-    monkeypatch.setattr(slave, "CHOICES_AS", "Enumeration")
+    monkeypatch.setattr(model_description, "CHOICES_AS", "Enumeration")
     out = build_all(tmp_path)
     for path in out:
         if path.suffix == ".fmu":
@@ -176,17 +178,19 @@ def test_choices_written_as_fmi_enumerations_validate_and_run(tmp_path, monkeypa
 
 
 def test_variable_table_checks_name_what_is_wrong():
-    out = slave.output("y", "an output", initial_depends=("u", "nowhere"), depends=("k",))
-    u = slave.real_input("u", "an input", 0.0, None, None, -1.0, 1.0)
-    choice = slave.Var(name="c", type="Enumeration", causality="parameter", description="c")
-    found = slave.check_variables((u, out, u, choice, slave.output("z", "no initial")))
+    out = declarations.output("y", "an output", initial_depends=("u", "nowhere"), depends=("k",))
+    u = declarations.real_input("u", "an input", start=0.0, min=-1.0, max=1.0)
+    choice = declarations.Var(name="c", type="Enumeration", causality="parameter", description="c")
+    found = declarations.check_variables(
+        (u, out, u, choice, declarations.output("z", "no initial"))
+    )
     assert any("duplicate variable names" in p for p in found)
     assert any("output y: dependencies ['k', 'nowhere', 'k']" in p for p in found)
     assert any("c: an Enumeration needs items" in p for p in found)
     assert any("output z: initial_depends not declared" in p for p in found)
-    assert slave.check_variables(BearingFriction.VARIABLES) == []
+    assert declarations.check_variables(BearingFriction.VARIABLES) == []
     with pytest.raises(TypeError, match="initial_depends not declared"):
-        type("Broken", (slave.ServoSlave,), {"VARIABLES": (slave.output("z", "z"),)})
+        type("Broken", (ServoSlave,), {"VARIABLES": (declarations.output("z", "z"),)})
 
 
 def test_speed_path_refreshes_exactly_the_outputs_that_depend_on_speed():

@@ -31,8 +31,11 @@ def ssp(fmus):
 
 def _catalogue(tmp_path, key: str) -> Path:
     path = tmp_path / "mine.toml"
-    q = '{ value = 71.7, unit = "GPa", kind = "handbook", ref = "ASM" }'
-    path.write_text(f'[materials."{key}"]\nname = "x"\nyoungs_modulus = {q}\n')
+    q = '{{ value = {}, unit = "{}", kind = "handbook", ref = "ASM" }}'.format
+    path.write_text(
+        f'[materials."{key}"]\nname = "x"\nyoungs_modulus = {q(71.7, "GPa")}\n'
+        f"poisson_ratio = {q(0.33, '-')}\nexpansion = {q(23.6e-6, '1/K')}\n"
+    )
     return path
 
 
@@ -153,7 +156,10 @@ def test_a_signal_after_the_last_check_is_raised_when_the_run_ends(signum):
     # the work: a scenario must not start its next run as if nothing came
     from servofmu.harness.interrupt import Terminated, interruptible, terminate_as_interrupt
 
-    previous = signal.getsignal(signal.SIGTERM)
+    previous = signal.getsignal(signal.SIGTERM), signal.getsignal(signal.SIGINT)
+    # Python's own Ctrl-C handler, whatever this process inherited: a shell's background job
+    # starts with SIGINT ignored, and Python then installs none
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     terminate_as_interrupt()
     try:
         with pytest.raises(KeyboardInterrupt) as caught:
@@ -162,7 +168,8 @@ def test_a_signal_after_the_last_check_is_raised_when_the_run_ends(signum):
                 assert request.requested
         assert isinstance(caught.value, Terminated) == (signum == signal.SIGTERM)
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        signal.signal(signal.SIGTERM, previous[0])
+        signal.signal(signal.SIGINT, previous[1])
 
 
 def test_sigterm_keeps_a_scenarios_results_as_ctrl_c_does(fmus, tmp_path):

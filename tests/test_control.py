@@ -1,4 +1,4 @@
-"""The discrete PID (physics.control and the ServoController FMU) against values stepped by
+"""The discrete PID (physics.drives.control and the ServoController FMU) against values stepped by
 hand from the law in the module docstring (Åström & Hägglund 2006, ch. 3):
 
     e_k = r_k − y_k,  D_k = (T_f·D_{k−1} − K_d·(y_k − y_{k−1}))/(T_f + T_s),

@@ -81,7 +81,6 @@ STILL_LACKING = {
     "servofmu.calibration.synthetic": 2,
     "servofmu.cli": 2,
     "servofmu.fmus.part_temperatures": 3,
-    "servofmu.fmus.slave": 8,
     "servofmu.harness.ecos": 2,
     "servofmu.harness.errors": 1,
     "servofmu.harness.interrupt": 1,

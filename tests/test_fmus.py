@@ -555,7 +555,7 @@ def test_the_package_hash_covers_the_compiled_kernels(tmp_path):
     # an FMU's version check (servofmu_build.json's package_hash against the imported package)
     # changes with a compiled module of the package, as it does with a source file
     from servofmu.build.fmu import stage_package
-    from servofmu.fmus.slave import package_hash
+    from servofmu.fmus.package_hash import package_hash
 
     package = stage_package(tmp_path / "staged")
     for f in (package / "physics").rglob("_*.so"):

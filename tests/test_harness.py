@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import math
+import re
 import shutil
 import zipfile
 
@@ -167,6 +168,30 @@ def test_gauss_seidel_order_follows_the_connections(out):
             'name="bearing.temperature"',
             'name="bearing.temprature"',
             "'bearing.temprature' names no variable",
+        ),
+        (  # two components of one name: the second would silently replace the first
+            "SystemStructure.ssd",
+            '<ssd:Component name="motor"',
+            '<ssd:Component name="controller"',
+            "SystemStructure.ssd: ssd:Component name='controller' (line 22) is declared more",
+        ),
+        (
+            "SystemStructure.ssd",
+            'baseStepSize="0.001"',
+            "",
+            "osp:FixedStepAlgorithm (line 76) baseStepSize is missing",
+        ),
+        (
+            "SystemStructure.ssd",
+            'baseStepSize="0.001"',
+            'baseStepSize="1ms"',
+            "baseStepSize = '1ms' is not a finite number > 0",
+        ),
+        (
+            "SystemStructure.ssd",
+            'baseStepSize="0.001"',
+            'baseStepSize="-0.001"',
+            "baseStepSize = '-0.001' is not a finite number > 0",
         ),
     ],
 )
@@ -508,7 +533,7 @@ def test_output_interval_keeps_every_kth_row_and_the_last(out):
 
 
 def test_cli_internal_error_is_one_line_with_the_traceback_in_a_log(monkeypatch, capsys):
-    import re
+    import tempfile
     from pathlib import Path
 
     from servofmu import cli
@@ -520,7 +545,8 @@ def test_cli_internal_error_is_one_line_with_the_traceback_in_a_log(monkeypatch,
     assert cli.main(["host-env"]) == cli.INTERNAL_ERROR
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "RuntimeError: something unforeseen" in err
-    log = Path(re.search(r"traceback in (\S+);", err).group(1))  # the file this run wrote
+    log = Path(re.search(r"traceback in (\S+);", err).group(1))  # this run's own log
+    assert log.parent == Path(tempfile.gettempdir()) and log.name.startswith("servofmu-error-")
     assert "Traceback" in log.read_text() and "broken" in log.read_text()
     log.unlink()
     with pytest.raises(RuntimeError):

@@ -34,21 +34,6 @@ CASES = (
 STOCK_CASES = ("unknown_references", "corrupt_states", "free_at_once")  # all with --long
 
 
-@pytest.fixture(scope="session")
-def stock_fmus(tmp_path_factory):
-    """The five FMUs with pythonfmu's binary, as an install without a C++ compiler builds
-    them."""
-    from servofmu.build import exportlib, fmu
-
-    out = tmp_path_factory.mktemp("stock_fmus")
-    found = exportlib.compiled_export
-    exportlib.compiled_export = fmu.compiled_export = lambda: None
-    try:
-        return {p.stem: p for p in fmu.build_all(out, fmu.FMUS, systems=False)}
-    finally:
-        exportlib.compiled_export = fmu.compiled_export = found
-
-
 def _run_case(path: Path, case: str, stock: bool):
     args = [sys.executable, str(HOSTILE), str(path), case, *(["--stock"] if stock else [])]
     proc = subprocess.run(args, capture_output=True, text=True, timeout=300)

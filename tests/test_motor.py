@@ -1,4 +1,4 @@
-"""The DC motor (physics.motor and the DCMotor FMU) against the ODE as written, integrated by
+"""The DC motor (physics.drives.motor and the DCMotor FMU) against the ODE as written, integrated by
 scipy.integrate.solve_ivp, never against the module's own matrices:
 
     L·di/dt = V − R·i − k_e·ω,   J·dω/dt = k_t·i − b·ω − T,   dφ/dt = ω.

@@ -359,13 +359,37 @@ def _write(tmp_path, text, name="mine.toml"):
 _Q = '{ value = %s, unit = "%s", kind = "assumed", ref = "test" }'
 
 
+_FULL_71803 = (
+    "[bearings.71803]\nname = 'again'\n"
+    + "".join(
+        f"{f} = {_Q % (v, u)}\n"
+        for f, v, u in (
+            ("bore", 17, "mm"),
+            ("outer_diameter", 26, "mm"),
+            ("width", 5, "mm"),
+            ("n_balls", 15, "-"),
+            ("ball_diameter", 2.381, "mm"),
+            ("pitch_diameter", 21.5, "mm"),
+            ("contact_angle", 15, "deg"),
+            ("inner_curvature", 0.56, "-"),
+            ("outer_curvature", 0.54, "-"),
+        )
+    )
+    + "ring_material = 'bearing_steel_yu'\nball_material = 'bearing_steel_yu'\n"
+)  # a whole entry under a key the package has
+
+
 @pytest.mark.parametrize(
     "text, message",
     [
-        ("[bearings.b]\nname = 'x'\nbore = 15\n", r"bearings\.b: .*inner_curvature is missing"),
+        (
+            "[bearings.b]\nname = 'x'\nbore = 15\n",
+            r"\[bearings\.b\] bore = 15 is an integer, not a",
+        ),
+        ("[bearings.b]\nname = 'x'\n", r"\[bearings\.b\] bore: missing \(required keys"),
         (
             "[materials.m]\nname = 'm'\nyoungs_modulus = 70\n",
-            r"materials\.m: youngs_modulus = 70 must be \{value, unit, kind, ref\}",
+            r"\[materials\.m\] youngs_modulus = 70 is an integer, not a table",
         ),
         (
             "[materials.m]\nname = 'm'\nyoungs_modulus = "
@@ -373,10 +397,13 @@ _Q = '{ value = %s, unit = "%s", kind = "assumed", ref = "test" }'
             + "\npoisson_ratio = "
             + _Q % (0.3, "-")
             + "\n",
-            r"materials\.m: field 'expansion' is missing",
+            r"\[materials\.m\] expansion: missing",
         ),
-        ("[bearings.71803]\nname = 'again'\n", r"bearings\.71803 exists already"),
-        ("[gears.g]\nname = 'g'\n", r"tables \['gears'\] are not among"),
+        (
+            _FULL_71803,
+            r"bearings\.71803 exists already",
+        ),
+        ("[gears.g]\nname = 'g'\n", r"table \[gears\] is not a catalogue table"),
         ("[defaults]\nmounting = 'nowhere'\n", r"\[defaults\]: mounting = 'nowhere' is not in"),
         ("[bearings.b\n", r"not valid TOML"),
         (

@@ -72,6 +72,21 @@ def test_every_ordered_pair_runs_in_sequence_and_side_by_side(plain_python, fmus
     assert all(r["rows"] >= 10 and r["finite"] for r in runs), runs
 
 
+@pytest.mark.parametrize("first, second", list(zip(NAMES, NAMES[1:] + NAMES[:1], strict=True)))
+def test_fmus_with_pythonfmus_binary_run_in_sequence_and_side_by_side(
+    plain_python, stock_fmus, first, second
+):
+    """The same with pythonfmu's binary, which serves every FMI call through Python: each FMU
+    once first and once second."""
+    proc = _plain(plain_python, "both", stock_fmus[first], stock_fmus[second])
+    assert proc.returncode == 0 and proc.stdout.rstrip().endswith("done"), (
+        f"exit status {proc.returncode}\n{proc.stdout[-2000:]}\n{proc.stderr[-2000:]}"
+    )
+    runs = [json.loads(line) for line in proc.stdout.splitlines() if line.startswith("{")]
+    assert [r["fmu"] for r in runs] == [first, second] * 2, runs
+    assert all(r["rows"] >= 10 and r["finite"] for r in runs), runs
+
+
 @pytest.mark.parametrize(
     "case, words",
     [
@@ -154,7 +169,7 @@ def test_an_fmu_built_without_compiled_kernels_runs_python_and_says_so(
 ):
     # as a build on a machine without a C compiler makes it: the FMU's copy of the package
     # has no compiled module, and servofmu_build.json records the hash of that copy
-    from servofmu.fmus.slave import package_hash
+    from servofmu.fmus.package_hash import package_hash
 
     built = fmus["BearingFriction"]
     copy = tmp_path / "copy"

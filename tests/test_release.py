@@ -111,7 +111,7 @@ def test_the_sdist_carries_the_kernels_source_and_the_wheel_their_build(dist, us
     sdist, wheel = dist
     with tarfile.open(sdist) as tf:
         names = tf.getnames()
-    for source in ("setup.py", "physics/pair/continuation.py", "physics/_cython_shadow.py"):
+    for source in ("setup.py", "physics/pair/continuation.py", "physics/kernels/_cython_shadow.py"):
         assert any(n.endswith(f"/{source}") for n in names), source
     assert not any("/.setuptools-build/" in n for n in names)  # generated copies stay out
     with zipfile.ZipFile(wheel) as zf:

@@ -35,6 +35,16 @@ def test_fuzzed_fmi_calls_and_state(fmus, long_mode, name):
     assert f"{name}: {examples} call sequences and state checks passed" in out
 
 
+@pytest.mark.parametrize("name", NAMES)
+def test_fuzzed_fmi_calls_and_state_under_pythonfmus_binary(stock_fmus, long_mode, name):
+    """The same properties with pythonfmu's binary (every call through Python), fewer cases."""
+    examples = 2_000 if long_mode else 40
+    args = [stock_fmus[name].parent, "--examples", examples, "--fmu", name, "--stock"]
+    rc, out, err = _child([HERE / "fmi_fuzz.py", *args], timeout=None if long_mode else 600)
+    assert rc == 0, f"exit status {rc} (a negative one is a crash)\n{out}\n{err[-4000:]}"
+    assert f"{name}: {examples} call sequences and state checks passed" in out
+
+
 def test_soak_memory_and_outputs(fmus, long_mode):
     steps = 1_000_000 if long_mode else 20_000
     growth = 20.0 if long_mode else 5.0

@@ -155,7 +155,7 @@ def radiation_error(key, h, tolerance, horizon=3600.0):
             or max(abs(a - b) for a, b in zip(x, reference, strict=True)) > tolerance
         ):
             reference, renewals = tuple(x), renewals + 1
-        x = tn._step(net, x, 353.15, 353.15, 0.05, h, reference)
+        x = tn.step_unchecked(net, x, 353.15, 353.15, 0.05, h, reference)
         worst = max(worst, float(np.abs(np.array(x) - ref(h * (k + 1))).max()))
     return worst, renewals
 

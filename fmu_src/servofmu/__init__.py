@@ -80,8 +80,8 @@ def share_copy(resources) -> None:
     if not (_FROM_FMU and info_file.is_file() and (copy / "__init__.py").is_file()):
         return
     info = json.loads(info_file.read_text(encoding="utf-8"))
-    slave = sys.modules.get("servofmu.fmus.slave")
-    imported = getattr(slave, "_RUNTIME_HASH", None)
+    hashed = sys.modules.get("servofmu.fmus.package_hash")
+    imported = getattr(hashed, "_RUNTIME_HASH", None)
     if imported is not None and info.get("package_hash") != imported:
         raise ImportError(different_build(str(info.get("model")), info, imported))
     for name, module in list(sys.modules.items()):

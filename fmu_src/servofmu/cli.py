@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from . import __version__
+from .files import EXIT_OUTPUT, OutputError, output_folder, write_text
 from .harness.scenarios import SCENARIOS
 from .papers import PAPERS
 
@@ -322,7 +323,7 @@ def _scenario(args) -> int:
     with _mechanism(args) as mechanism:
         check_mechanism(args.name, mechanism)
         out = Path(args.out or f"out/{args.name}")
-        result = run(args.name, out, coarse=args.coarse, mechanism=mechanism)
+        result = run(args.name, out, coarse=args.coarse, mechanism=mechanism, workers=args.workers)
     print(result.to_text())
     return 0
 
@@ -366,7 +367,7 @@ def _calibrate_datasheet(args) -> int:
         )
     cal = calibrate_datasheet(args.datasheet, args.test)
     out = Path(args.out or f"out/calibration/datasheet_{args.datasheet}")
-    out.mkdir(parents=True, exist_ok=True)
+    output_folder(out)
     ssv = out / "calibrated.ssv"
     files = [out / "report.txt"]
     if cal.poor and not args.allow_poor_fit:
@@ -383,7 +384,7 @@ def _calibrate_datasheet(args) -> int:
             )
         )  # fmt: skip
     text = to_text(cal)
-    (out / "report.txt").write_text(text + "\n")
+    write_text(out / "report.txt", text + "\n")
     if args.json:
         import json
 
@@ -475,7 +476,7 @@ def _calibrate_data(args, mechanism) -> int:
         files.append(write_coefficients(cal, toml, mounting, args.data, sources))
     text = to_text(cal)
     text += f"\n\nmounting {mounting}; friction coefficients before this fit: {before}"
-    (out / "report.txt").write_text(text + "\n")
+    write_text(out / "report.txt", text + "\n")
     if args.json:
         import json
 
@@ -608,7 +609,7 @@ def _sweep_mechanism(args, mechanism) -> int:
     )
     for row in result.failed[:10]:
         print(f"  failed: {row}")
-    return 1 if result.failed and len(result.failed) == len(result.rows) else 0
+    return 1 if result.failed else 0  # a failed run is in the table, marked: not a success
 
 
 def _montecarlo(args) -> int:
@@ -634,6 +635,7 @@ def _margin(args) -> int:
     """``servofmu margin [FILE]``: the motorisation margin (servofmu.margin); exit 0 when every
     row is met, 1 when a margin is negative, 3 when none is but a row is not verified. Ctrl-C
     writes the rows computed so far."""
+    from .harness.interrupt import protected
     from .margin import MarginResult, example_input, load_inputs, run, to_text, write_all
 
     # the whole input is read and checked before any computation (exit 2 naming the field)
@@ -643,11 +645,13 @@ def _margin(args) -> int:
     try:
         run(inputs, result)
     except KeyboardInterrupt:
-        files = write_all(result, out) if result.steady else []
+        with protected(reraise=False):  # a second signal does not cut the rows so far short
+            files = write_all(result, out) if result.steady else []
         raise KeyboardInterrupt(
             f"the rows computed so far are in {', '.join(map(str, files))}" if files else ""
         ) from None
-    files = write_all(result, out)
+    with protected():  # every file written before a signal acts
+        files = write_all(result, out)
     print(to_text(result, files))
     return result.exit_code
 
@@ -846,6 +850,12 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("name", choices=SCENARIOS, help="which scenario")
     s.add_argument("--coarse", action="store_true", help="shorter runs (as the tests use)")
     s.add_argument("--out", help="directory for CSV and PNG files (default out/NAME)")
+    s.add_argument(
+        "--workers",
+        type=_count,
+        help="processes for the scenario's independent runs (chamber_transient; default: "
+        "one per core; 1: one after another)",
+    )
     add_mechanism_options(s)
     s.set_defaults(func=_scenario)
     w = sub.add_parser(
@@ -1036,8 +1046,9 @@ def main(argv: list[str] | None = None) -> int:
     """Exit codes: 0 done, 1 a run failed (partial results kept; ``margin``: a margin is
     negative), 2 bad input (data, arguments, system description), 3 ``margin`` only: no margin
     negative but a row not verified, 4 an internal error (traceback in a private log file),
-    130 interrupted by Ctrl-C and 143 by SIGTERM (a run stops at a step boundary and keeps its
-    results either way)."""
+    74 a result could not be written (a full disk, a folder that cannot be written: the path
+    is named, and no partial file stays under its name), 130 interrupted by Ctrl-C and 143 by
+    SIGTERM (a run stops at a step boundary and keeps its results either way)."""
     from .harness.errors import (
         ArgumentError,
         HarnessError,
@@ -1063,6 +1074,9 @@ def main(argv: list[str] | None = None) -> int:
     except HarnessError as exc:
         print(f"servofmu: run failed: {exc}", file=sys.stderr)
         return 1
+    except OutputError as exc:  # a full disk, a folder that cannot be written: not bad input
+        print(f"servofmu: error: {exc}", file=sys.stderr)
+        return EXIT_OUTPUT
     except (ValueError, OSError, MissingExtra) as exc:
         print(f"servofmu: error: {exc}", file=sys.stderr)
         return 2

@@ -14,6 +14,8 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from xml.etree.ElementTree import Comment, Element, SubElement, register_namespace, tostring
 
+from servofmu.files import write_text
+
 from .parameters.bearing import PARAMETERS
 
 SSV_NS = "http://ssp-standard.org/SSP1/SystemStructureParameterValues"
@@ -52,7 +54,6 @@ def write_ssv(
         ``path``.
     """
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     root = Element(f"{{{SSV_NS}}}ParameterSet", {"version": "1.0", "name": name})
     params = SubElement(root, f"{{{SSV_NS}}}Parameters")
     if comment:
@@ -76,7 +77,7 @@ def write_ssv(
         params[-1].tail = "\n  "
     register_namespace("ssv", SSV_NS)
     body = tostring(root, encoding="unicode")
-    path.write_text(f'<?xml version="1.0" encoding="UTF-8"?>\n{body}\n', encoding="utf-8")
+    write_text(path, f'<?xml version="1.0" encoding="UTF-8"?>\n{body}\n')
     return path
 
 

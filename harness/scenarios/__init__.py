@@ -25,6 +25,9 @@ SCENARIOS = (
 )
 
 
+#: The scenarios whose runs are independent and go to worker processes (``workers``).
+PARALLEL_SCENARIOS = ("chamber_transient",)
+
 #: The scenarios that run any mechanism's gimbal rigs (``--catalog``, ``--mounting``); the
 #: others reproduce a paper's own rig (Liu's actuator, Ning's space bearing).
 MECHANISM_SCENARIOS = ("friction_vs_temperature", "low_speed_tracking", "chamber_transient")
@@ -61,13 +64,15 @@ def check_mechanism(name: str, mechanism) -> None:
         )
 
 
-def run(name: str, out_dir, fmu_dir=None, coarse: bool = False, mechanism=None):
+def run(name: str, out_dir, fmu_dir=None, coarse: bool = False, mechanism=None, workers=None):
     """Run scenario ``name`` on ``mechanism`` (:class:`servofmu.build.mechanism.Mechanism`,
     its catalogues loaded; default: the standard one), its FMUs and systems from ``fmu_dir``
-    (default: the mechanism's build folder, built when missing or stale); returns its
-    :class:`~.common.ScenarioResult`."""
+    (default: the mechanism's build folder, built when missing or stale), the independent
+    runs of a scenario of :data:`PARALLEL_SCENARIOS` on ``workers`` processes (default: one
+    per core); returns its :class:`~.common.ScenarioResult`."""
     check_mechanism(name, mechanism)
     module = importlib.import_module(f"{__name__}.{name}")
+    kw = {"workers": workers} if name in PARALLEL_SCENARIOS else {}
     if name in MECHANISM_SCENARIOS:
-        return module.run(out_dir, fmu_dir, coarse, mechanism=mechanism)
-    return module.run(out_dir, fmu_dir, coarse)
+        return module.run(out_dir, fmu_dir, coarse, mechanism=mechanism, **kw)
+    return module.run(out_dir, fmu_dir, coarse, **kw)

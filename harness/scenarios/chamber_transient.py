@@ -37,10 +37,12 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import save_figure, written
 from servofmu.physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 
 from .. import load_system
 from .. import run as run_system
+from ..pool import run_parallel
 from ..signals import PiecewiseLinear
 from .common import ScenarioResult, mechanism_notes, system_path
 
@@ -166,9 +168,24 @@ def library_model(system):
     return BearingModel(pair_from_parameters(values))
 
 
-def simulate(system, profile: Profile, out: Path) -> Trace:
-    """Run ``profile`` on the loaded ``system`` (results under ``out/<key>/``) and set the
-    quasi-static curve beside it."""
+def _steps(system, profile: Profile) -> int:
+    """The communication steps of ``profile`` on ``system``."""
+    return round(profile.stop / system.step_size)
+
+
+def _simulate_profile(ssp: Path, profile: Profile, out: Path, progress=False) -> Trace:
+    """:func:`simulate` on the system in ``ssp`` (loaded here: a worker process's call)."""
+    system = load_system(ssp)
+    try:
+        return simulate(system, profile, out, progress)
+    finally:
+        system.close()
+
+
+def simulate(system, profile: Profile, out: Path, progress=False) -> Trace:
+    """Run ``profile`` on the loaded ``system`` (results under ``out/<key>/``; ``progress``:
+    a progress bar to advance by the steps, see :func:`~servofmu.harness.master.run`) and set
+    the quasi-static curve beside it."""
     # the network starts soaked at the chamber's start temperature (after the variant)
     soak = {"thermal.initial_temperature": profile.chamber(0.0)}
     res = run_system(
@@ -182,7 +199,7 @@ def simulate(system, profile: Profile, out: Path) -> Trace:
         record=list(RECORD),
         out_dir=out / profile.key,
         output_interval=ROW,
-        progress=False,
+        progress=progress,
         rates={"thermal": max(1, round(THERMAL_STEP / system.step_size))},
     )
     t = res["time"]
@@ -290,22 +307,31 @@ def cycle_changes(rows: list[dict]) -> tuple[float, float]:
 
 
 # ---------------------------------------------------------------------------- the scenario
-def run(out_dir, fmu_dir=None, coarse: bool = False, mechanism=None) -> ScenarioResult:
+def run(
+    out_dir, fmu_dir=None, coarse: bool = False, mechanism=None, workers=None
+) -> ScenarioResult:
     """The scenario on ``mechanism`` (default: the standard one): the chamber profiles on its
     ``seeker_gimbal_chamber`` system (the ThermalNetwork of its parts); Ning's cycles on his
-    space bearing for the standard mechanism only."""
+    space bearing for the standard mechanism only. The profiles are independent runs, on
+    ``workers`` processes (default one per core; 1: one after another, here) behind one
+    progress bar."""
     out = Path(out_dir)
     standard = mechanism is None or mechanism.standard
     label = "Yu gimbal in air" if standard else f"{mechanism.key} in air"
     runs = [(YU, yu_profiles(coarse))] + ([(NING, ning_profiles(coarse))] if standard else [])
-    traces: dict[str, tuple[Profile, Trace]] = {}
+    calls, counts = [], []
     for name, profiles in runs:
-        system = load_system(system_path(name, fmu_dir, mechanism))
+        ssp = system_path(name, fmu_dir, mechanism)
+        system = load_system(ssp)  # checked here once, before any run
         try:
-            for profile in profiles:
-                traces[profile.key] = (profile, simulate(system, profile, out))
+            counts += [_steps(system, p) for p in profiles]
         finally:
             system.close()
+        calls += [(ssp, p, out) for p in profiles]
+    done = run_parallel(
+        _simulate_profile, calls, steps=counts, workers=workers, desc="chamber_transient"
+    )
+    traces = {p.key: (p, tr) for (_, p, _), tr in zip(calls, done, strict=True)}
     rows, changes = [], {}
     for profile, tr in traces.values():
         if profile.system == YU:
@@ -392,15 +418,15 @@ def write_trace(path: Path, tr: Trace) -> Path:
         **{f"{f} [0/1]": v.astype(float) for f, v in tr.flags.items()},
         **{f"qs {f} [0/1]": v.astype(float) for f, v in tr.qs_flags.items()},
     }
-    path.parent.mkdir(parents=True, exist_ok=True)
-    np.savetxt(
-        path,
-        np.column_stack(list(columns.values())),
-        delimiter=",",
-        header=",".join(columns),
-        comments="",
-        fmt="%.9g",
-    )
+    with written(path) as part:
+        np.savetxt(
+            part,
+            np.column_stack(list(columns.values())),
+            delimiter=",",
+            header=",".join(columns),
+            comments="",
+            fmt="%.9g",
+        )
     return path
 
 
@@ -434,7 +460,7 @@ def plot(traces, path: Path, name: str = "") -> Path:
     )
     fig.suptitle(textwrap.fill(title, 60 * len(groups)), fontsize=10)
     fig.tight_layout()
-    fig.savefig(path)
+    save_figure(fig, path)
     plt.close(fig)
     return path
 

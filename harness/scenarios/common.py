@@ -7,6 +7,8 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import written
+
 
 @dataclass
 class Table:
@@ -38,8 +40,7 @@ def write_csv(path: Path, columns: list[str], rows: list[dict]) -> Path:
     import csv
 
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with path.open("w", newline="") as fh:
+    with written(path) as part, part.open("w", newline="") as fh:
         out = csv.writer(fh, lineterminator="\n")
         out.writerow(columns)
         for row in rows:

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from servofmu.files import save_figure
 from servofmu.physics.kernels.units import DEG, NMM, celsius_to_kelvin
 
 from .. import load_system
@@ -350,6 +351,6 @@ def _plot(rows, mountings: Table | None, models: Table, path: Path, what: str = 
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     fig.tight_layout()
-    fig.savefig(path)
+    save_figure(fig, path)
     plt.close(fig)
     return path

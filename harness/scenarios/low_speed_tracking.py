@@ -25,6 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import save_figure
+
 from .. import load_system
 from .. import run as run_system
 from ..signals import Cycle
@@ -168,6 +170,6 @@ def _plot(traces, path: Path) -> Path:
             ax.grid(True, alpha=0.3)
         ax_e.legend(fontsize=8, title="communication step", title_fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=100)
+    save_figure(fig, path, dpi=100)
     plt.close(fig)
     return path

@@ -7,7 +7,7 @@ The output angle of the system is the kinematic angle of the held motor (the act
 deflection of the actuator, so the measured stiffness also carries whatever the servo loop
 gives way under load (its integral action brings it back to the reference; the residual is
 reported). It is set next
-to the library's series stiffness (``physics.actuator.stiffness_breakdown``, support-bearing
+to the library's series stiffness (``physics.drives.actuator.stiffness_breakdown``, support-bearing
 extension included) and to Liu's measurement (100 N·m calibrated in the liu2014 report,
 200/300 N·m predictions there).
 """

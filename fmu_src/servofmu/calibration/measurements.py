@@ -53,6 +53,8 @@ class DataError(ValueError):
 #: Characters read and reduced at once (bounds the memory of a long file: about 10 times
 #: this while a block is parsed).
 BLOCK_CHARS = 1 << 22
+#: Longest line of a measurements file [characters] (a file without line breaks is refused).
+MAX_LINE_CHARS = 1 << 20
 
 
 @dataclass(frozen=True)
@@ -167,7 +169,7 @@ def read_measurements(path) -> FrictionMeasurements:
     path = Path(path)
     name = path.name
     try:
-        fh = path.open()
+        fh = path.open(encoding="utf-8")
     except OSError as exc:
         raise DataError(f"{path}: cannot read ({exc.strerror})") from None
     groups = _Groups()
@@ -182,6 +184,11 @@ def read_measurements(path) -> FrictionMeasurements:
                 cut = text.rfind("\n")
                 if chunk and cut < len(text) - 1:  # keep a partial last line for the next block
                     text, pending = text[: cut + 1], text[cut + 1 :]
+                    if len(pending) > MAX_LINE_CHARS:  # /dev/zero, a binary file
+                        raise DataError(
+                            f"{name}: line {line + text.count(chr(10)) + 1} is longer than "
+                            f"{MAX_LINE_CHARS} characters: not a table of measurements"
+                        )
                 if text:
                     block = _block(text, line + 1, header, cols, name)
                     groups.add(*block[:5])
@@ -198,8 +205,13 @@ def read_measurements(path) -> FrictionMeasurements:
 def _header(fh, name: str) -> tuple[int, list[str]]:
     """(line number, cells) of the first line that is neither blank nor a comment."""
     n = 0
-    while text := fh.readline():
+    while text := fh.readline(MAX_LINE_CHARS + 1):
         n += 1
+        if len(text) > MAX_LINE_CHARS:
+            raise DataError(
+                f"{name}: line {n} is longer than {MAX_LINE_CHARS} characters: not a table of "
+                "measurements"
+            )
         if text.strip() and not text.lstrip().startswith("#"):
             return n, next(csv.reader([text]))
     raise DataError(f"{name}: no header and no data")

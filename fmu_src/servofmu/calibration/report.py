@@ -8,6 +8,8 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import save_figure, write_text, written
+
 from ..parameter_sets import write_ssv
 from ..physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 from .fit import UNKNOWNS, Calibration, running_torque
@@ -190,7 +192,6 @@ def write_coefficients(cal: Calibration, path, mounting: str, data, sources) -> 
     from ..parameters.catalog import CALIBRATION_RECORD, COEFFICIENT_FIELDS, PROVENANCE_KINDS
 
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     d = cal.data
     speeds = sorted({float(x) for x in np.round(cal.speed / DEG, 9)})
     t_lo, t_hi = (float(x) - ZERO_CELSIUS for x in (d.temperature.min(), d.temperature.max()))
@@ -241,7 +242,7 @@ def write_coefficients(cal: Calibration, path, mounting: str, data, sources) -> 
             entry = {"value": float(cal.parameters[field]), "unit": unit, "kind": kind,
                      "ref": f"not fitted: {ref}"}  # fmt: skip
         lines.append(f"{field} = {_toml_table(entry)}")
-    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    write_text(path, "\n".join(lines) + "\n")
     return path
 
 
@@ -250,12 +251,11 @@ def write_residuals(cal: Calibration, path) -> Path:
     points, temperature [°C], speed [°/s], direction, mean and standard deviation of the
     measured torque [N·mm], model torque [N·mm], mean residual [% or N·mm]."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     d = cal.data
     relative = cal.residual_kind == "relative"
     scale, unit = (100.0, "%") if relative else (1.0 / NMM, "N.mm")
     sd = d.torque_sd
-    with path.open("w") as fh:
+    with written(path) as part, part.open("w") as fh:
         fh.write(
             "line,points,temperature [degC],speed [deg/s],direction,measured [N.mm],"
             f"measured sd [N.mm],model [N.mm],residual ({cal.residual_kind}) [{unit}]\n"
@@ -281,7 +281,6 @@ def plot(cal: Calibration, path) -> Path:
     from matplotlib.ticker import FormatStrFormatter
 
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     d = cal.data
     t_c = d.temperature - ZERO_CELSIUS
     sd = d.torque_sd
@@ -330,6 +329,6 @@ def plot(cal: Calibration, path) -> Path:
     axr.set_xlabel("temperature [°C]")
     axr.grid(True, alpha=0.3)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save_figure(fig, path, dpi=110)
     plt.close(fig)
     return path

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..files import write_text
 from ..physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 from .fit import running_torque
 from .measurements import FrictionMeasurements
@@ -50,7 +51,6 @@ def write_measurements(data: FrictionMeasurements, path, comment: str = "", spee
     °/s, direction), ``comment`` as leading ``#`` lines; ``speed=False`` leaves the speed
     column out (a test at one, separately stated speed)."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     lines = [f"# {c}" for c in comment.splitlines()]
     lines.append(
         "temperature [degC],torque [N.mm]," + ("speed [deg/s]," if speed else "") + "direction"
@@ -60,5 +60,5 @@ def write_measurements(data: FrictionMeasurements, path, comment: str = "", spee
         if speed:
             cells.append(f"{data.speed[i] / DEG:.6g}")
         lines.append(",".join([*cells, data.direction[i]]))
-    path.write_text("\n".join(lines) + "\n")
+    write_text(path, "\n".join(lines) + "\n")
     return path

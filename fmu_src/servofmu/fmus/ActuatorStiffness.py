@@ -29,13 +29,14 @@ servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
 import dataclasses  # noqa: E402
 import re  # noqa: E402
 
+from servofmu.fmus.declarations import Var, output, real_input, real_parameter, spec_parameter  # noqa: E402
 from servofmu.fmus.part_temperatures import (  # noqa: E402
     TEMPERATURE_INPUTS,
     part_inputs,
     temperature_mode_parameter,
     temperatures,
 )
-from servofmu.fmus.slave import ServoSlave, Var, output, real_input, real_parameter, spec_parameter  # noqa: E402
+from servofmu.fmus.runtime import ServoSlave  # noqa: E402
 from servofmu.parameters.bearing import (  # noqa: E402
     STATE_PARAMETERS,
     default_parameters,
@@ -89,11 +90,13 @@ _RATIO = ("gear_ratio", "screw_lead")
 _ELEMENTS = (*_GEAR, "screw_axial_stiffness", "housing_axial_stiffness", *_LINKAGE, *_SUPPORT)
 
 
-def _p(name, description, unit, display, lo, hi, field=None):
-    """A Real parameter whose default and provenance are the Liu 2014 record's ``field``."""
+def _p(name, description, *, field=None, **kw):
+    """A Real parameter whose default and provenance are the Liu 2014 record's ``field``
+    (default: ``name``); keywords as :func:`real_parameter`."""
     field = field or name
-    start = float(getattr(_A, field))
-    return real_parameter(name, description, start, unit, display, lo, hi, source=_A.source(field))
+    return real_parameter(
+        name, description, start=float(getattr(_A, field)), source=_A.source(field), **kw
+    )
 
 
 def _out(name, description, params, unit="N.m/rad", display="N.m/deg", depends=_LOAD, **kw):
@@ -102,8 +105,8 @@ def _out(name, description, params, unit="N.m/rad", display="N.m/deg", depends=_
     return output(
         name,
         description,
-        unit,
-        display,
+        unit=unit,
+        display_unit=display,
         depends=depends,
         initial_depends=(*depends, *_KINEMATICS, *_MOTOR_SIDE, *params),
         **kw,
@@ -124,26 +127,37 @@ class ActuatorStiffness(ServoSlave):
         real_input(
             "temperature",
             "Temperature of the actuator (support-bearing preload; temperature_mode uniform)",
-            293.15,
-            "K",
-            "degC",
-            173.15,
-            473.15,
+            start=293.15,
+            unit="K",
+            display_unit="degC",
+            min=173.15,
+            max=473.15,
         ),
         real_input(
             "speed",
             "Output-shaft speed (the quasi-static stiffness does not depend on it)",
-            0.0,
-            "rad/s",
-            "deg/s",
-            -1.0e4,
-            1.0e4,
+            start=0.0,
+            unit="rad/s",
+            display_unit="deg/s",
+            min=-1.0e4,
+            max=1.0e4,
         ),
         real_input(
-            "load_torque", "Hinge moment on the output shaft", 0.0, "N.m", None, -1.0e5, 1.0e5
+            "load_torque",
+            "Hinge moment on the output shaft",
+            start=0.0,
+            unit="N.m",
+            min=-1.0e5,
+            max=1.0e5,
         ),
         real_input(
-            "angle", "Output-shaft angle from the neutral position", 0.0, "rad", "deg", -1.5, 1.5
+            "angle",
+            "Output-shaft angle from the neutral position",
+            start=0.0,
+            unit="rad",
+            display_unit="deg",
+            min=-1.5,
+            max=1.5,
         ),
         _out(
             "stiffness",
@@ -220,67 +234,117 @@ class ActuatorStiffness(ServoSlave):
             "N.mm",
             ("load_torque", *_ANGLE),
         ),
-        _p("gear_ratio", "Gear-train ratio i_g", "1", None, 1e-3, 1e4),
-        _p("screw_lead", "Ball-screw lead p (per revolution)", "m", "mm", 1e-5, 1.0),
-        _p("crank_length", "Crank length L1", "m", "mm", 1e-4, 10.0),
-        _p("rod_length", "Connecting-rod length L2", "m", "mm", 1e-4, 10.0),
+        _p("gear_ratio", "Gear-train ratio i_g", unit="1", min=1e-3, max=1e4),
+        _p(
+            "screw_lead",
+            "Ball-screw lead p (per revolution)",
+            unit="m",
+            display_unit="mm",
+            min=1e-5,
+            max=1.0,
+        ),
+        _p("crank_length", "Crank length L1", unit="m", display_unit="mm", min=1e-4, max=10.0),
+        _p(
+            "rod_length",
+            "Connecting-rod length L2",
+            unit="m",
+            display_unit="mm",
+            min=1e-4,
+            max=10.0,
+        ),
         _p(
             "neutral_crank_angle",
             "Crank angle at the neutral position θ0",
-            "rad",
-            "deg",
-            1e-3,
-            3.14,
+            unit="rad",
+            display_unit="deg",
+            min=1e-3,
+            max=3.14,
         ),
-        _p("neutral_rod_angle", "Rod angle at the neutral position γ0", "rad", "deg", -1.5, 1.5),
-        _p("crank_area", "Crank cross-section A1", "m2", "mm2", 1e-9, 1.0),
-        _p("rod_area", "Rod cross-section A2", "m2", "mm2", 1e-9, 1.0),
-        _p("arm_length", "Output-arm length l (torsion and bending)", "m", "mm", 1e-6, 10.0),
-        _p("shaft_polar_moment", "Polar moment of the output shaft I1", "m4", "mm4", 1e-16, 1.0),
+        _p(
+            "neutral_rod_angle",
+            "Rod angle at the neutral position γ0",
+            unit="rad",
+            display_unit="deg",
+            min=-1.5,
+            max=1.5,
+        ),
+        _p(
+            "crank_area", "Crank cross-section A1", unit="m2", display_unit="mm2", min=1e-9, max=1.0
+        ),
+        _p("rod_area", "Rod cross-section A2", unit="m2", display_unit="mm2", min=1e-9, max=1.0),
+        _p(
+            "arm_length",
+            "Output-arm length l (torsion and bending)",
+            unit="m",
+            display_unit="mm",
+            min=1e-6,
+            max=10.0,
+        ),
+        _p(
+            "shaft_polar_moment",
+            "Polar moment of the output shaft I1",
+            unit="m4",
+            display_unit="mm4",
+            min=1e-16,
+            max=1.0,
+        ),
         _p(
             "arm_second_moment",
             "Second moment of area of the output arm I",
-            "m4",
-            "mm4",
-            1e-16,
-            1.0,
+            unit="m4",
+            display_unit="mm4",
+            min=1e-16,
+            max=1.0,
         ),
-        _p("youngs_modulus", "Young's modulus of the linkage", "Pa", "GPa", 1e6, 1e13),
-        _p("shear_modulus", "Shear modulus of the linkage", "Pa", "GPa", 1e6, 1e13),
+        _p(
+            "youngs_modulus",
+            "Young's modulus of the linkage",
+            unit="Pa",
+            display_unit="GPa",
+            min=1e6,
+            max=1e13,
+        ),
+        _p(
+            "shear_modulus",
+            "Shear modulus of the linkage",
+            unit="Pa",
+            display_unit="GPa",
+            min=1e6,
+            max=1e13,
+        ),
         _p(
             "gear_torsional_stiffness",
             "Gear-train stiffness, torsional at the screw shaft",
-            "N.m/rad",
-            None,
-            1e-3,
-            1e15,
-            "gear_stiffness",
+            unit="N.m/rad",
+            min=1e-3,
+            max=1e15,
+            field="gear_stiffness",
         ),
         _p(
             "screw_axial_stiffness",
             "Ball-screw axial stiffness",
-            "N/m",
-            "N/um",
-            1e-3,
-            1e15,
-            "screw_stiffness",
+            unit="N/m",
+            display_unit="N/um",
+            min=1e-3,
+            max=1e15,
+            field="screw_stiffness",
         ),
         _p(
             "housing_axial_stiffness",
             "Housing axial stiffness along the screw",
-            "N/m",
-            "N/um",
-            1e-3,
-            1e15,
-            "housing_stiffness",
+            unit="N/m",
+            display_unit="N/um",
+            min=1e-3,
+            max=1e15,
+            field="housing_stiffness",
         ),
         _p(
             "seat_stiffness",
             "Axial stiffness in series with the support bearings",
-            "N/m",
-            "N/um",
-            1e-3,
-            1e15,
+            unit="N/m",
+            display_unit="N/um",
+            min=1e-3,
+            max=1e15,
         ),
         Var(
             name="support_bearings",
@@ -309,20 +373,20 @@ class ActuatorStiffness(ServoSlave):
         real_input(
             "motor_angle",
             "Motor-shaft angle from the neutral position (with motor_side_inputs)",
-            0.0,
-            "rad",
-            "deg",
-            -1.0e4,
-            1.0e4,
+            start=0.0,
+            unit="rad",
+            display_unit="deg",
+            min=-1.0e4,
+            max=1.0e4,
         ),
         real_input(
             "motor_speed",
             "Motor-shaft speed (with motor_side_inputs)",
-            0.0,
-            "rad/s",
-            "rpm",
-            -1.0e5,
-            1.0e5,
+            start=0.0,
+            unit="rad/s",
+            display_unit="rpm",
+            min=-1.0e5,
+            max=1.0e5,
         ),
         _out(
             "output_angle",
@@ -390,7 +454,8 @@ class ActuatorStiffness(ServoSlave):
         return self.angle
 
     def hidden_state(self):
-        # the support pair's continuation (physics/compiled.py): restored bit for bit
+        # the support pair's continuation (physics/pair/continuation.py): restored bit
+        # for bit
         return {"continuation": self.model.state() if self._configured else None}
 
     def restore_hidden_state(self, state):

@@ -54,6 +54,13 @@ The breakaway after a soak at rest adds the lubricant's cold start: ``grease_sta
 unloaded pair, ``reverse_loaded`` says a bearing is loaded on the other flanks of its grooves
 (:func:`servofmu.physics.pair.state.preload_force`, :func:`~servofmu.physics.pair.state.axial_play`,
 :func:`~servofmu.physics.pair.state.state_flags`).
+
+The range its physics holds for: the balls on the designed flanks of their grooves
+(``contact_angle`` ≥ 0 for bearing A). A pair pulled far apart (a 473 K housing around a 173 K
+shaft: ``contact_angle`` = −0.64 rad) puts them on the other flanks, where an angular-contact
+bearing has its low shoulder and the model takes the grooves as symmetric. The angle is
+reported as computed, not clamped; ``reverse_loaded`` is set and one warning naming the angle
+is logged each time the balls go there: the torques there are not verified.
 """
 
 from __future__ import annotations
@@ -64,15 +71,18 @@ import servofmu
 
 servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
 
+import math  # noqa: E402
+
 from pythonfmu.enums import Fmi2Status  # noqa: E402
 
+from servofmu.fmus.declarations import output, real_input, spec_parameter  # noqa: E402
 from servofmu.fmus.part_temperatures import (  # noqa: E402
     TEMPERATURE_INPUTS,
     part_inputs,
     temperature_mode_parameter,
     temperatures,
 )
-from servofmu.fmus.slave import ServoSlave, output, real_input, spec_parameter  # noqa: E402
+from servofmu.fmus.runtime import ServoSlave  # noqa: E402
 from servofmu.parameters.bearing import PARAMETERS, pair_from_parameters, parameters_in  # noqa: E402
 from servofmu.parameters.table import LATER_PARAMETERS  # noqa: E402
 from servofmu.physics import compiled as continuation  # noqa: E402
@@ -103,8 +113,8 @@ def _out(name, description, unit, display=None, *, depends=_LOADS, groups=_STATE
     return output(
         name,
         description,
-        unit,
-        display,
+        unit=unit,
+        display_unit=display,
         type=kw.pop("kind", "Real"),
         depends=depends,
         initial_depends=(*depends, "temperature_mode", *parameters_in(*groups)),
@@ -149,39 +159,37 @@ class BearingFriction(ServoSlave):
         real_input(
             "temperature",
             "Temperature of bearings, frame and shaft (temperature_mode uniform)",
-            293.15,
-            "K",
-            "degC",
-            173.15,
-            473.15,
+            start=293.15,
+            unit="K",
+            display_unit="degC",
+            min=173.15,
+            max=473.15,
         ),
         *part_inputs(),
         real_input(
             "speed",
             "Speed of the shaft relative to the housing (signed)",
-            0.0,
-            "rad/s",
-            "rpm",
-            -1.0e4,
-            1.0e4,
+            start=0.0,
+            unit="rad/s",
+            display_unit="rpm",
+            min=-1.0e4,
+            max=1.0e4,
         ),
         real_input(
             "axial_load",
             "External axial load on the shaft, positive towards bearing A",
-            0.0,
-            "N",
-            None,
-            -1.0e5,
-            1.0e5,
+            start=0.0,
+            unit="N",
+            min=-1.0e5,
+            max=1.0e5,
         ),
         real_input(
             "radial_load",
             "External radial load, shared by the two bearings",
-            0.0,
-            "N",
-            None,
-            -1.0e5,
-            1.0e5,
+            start=0.0,
+            unit="N",
+            min=-1.0e5,
+            max=1.0e5,
         ),
         _out(
             "friction_torque",
@@ -254,7 +262,7 @@ class BearingFriction(ServoSlave):
         _out(
             "contact_angle",
             "Operating contact angle of bearing A (negative: its balls on the other flanks of "
-            "its grooves, reverse_loaded)",
+            "its grooves, reverse_loaded: outside the range the model holds for)",
             "rad",
             "deg",
         ),
@@ -334,7 +342,8 @@ class BearingFriction(ServoSlave):
             "reverse_loaded",
             "A bearing's balls pushed onto the other flanks of its grooves (axial force < 0: "
             "the loop pulled apart, or a tandem set loaded against its thrust beyond it); "
-            "the model takes the grooves as symmetric there",
+            "the model takes the grooves as symmetric there, outside the range its physics "
+            "holds for (an angular-contact bearing has its low shoulder there)",
         ),
         _flag(
             "breakaway_lower_bound",
@@ -369,8 +378,8 @@ class BearingFriction(ServoSlave):
         self._copy_state = self.output_copier(PointState.__dataclass_fields__)
 
     def hidden_state(self):
-        # the continuation of the thermal and load state (physics/compiled.py): a restored
-        # instance continues bit for bit
+        # the continuation of the thermal and load state (physics/pair/continuation.py): a
+        # restored instance continues bit for bit
         return {"continuation": self.model.state() if self._configured else None}
 
     def restore_hidden_state(self, state):
@@ -384,14 +393,28 @@ class BearingFriction(ServoSlave):
         temps = temperatures(self)
         point = (temps, self.axial_load, self.radial_load)
         if point != self._point:  # else only the speed changed: the speed terms alone
-            was_outside = self.outside_lubricant_range
+            was_outside, was_reversed = self.outside_lubricant_range, self.reverse_loaded
             self._copy_state(self, self.model.update(temps, self.axial_load, self.radial_load))
             self._point = point
             if self.outside_lubricant_range and not was_outside:
                 self._warn_lubricant_range(temps)
             elif self.outside_lubricant_range and not self._below_flow_told:
                 self._check_flow_limit(temps)
+            if self.reverse_loaded and not was_reversed:
+                self._warn_reverse_loaded()
         self._set_speed(self, self.model.speed_outputs(self.speed))
+
+    def _warn_reverse_loaded(self):
+        """One warning each time a bearing's balls go onto the other flanks of its grooves."""
+        a = self.contact_angle
+        self.log(
+            f"{self.instance_name}: a bearing's balls bear on the other flanks of its grooves "
+            f"(contact_angle of bearing A = {a:.6g} rad, {math.degrees(a):.4g}°), where an "
+            "angular-contact bearing has its low shoulder; the model takes the grooves as "
+            "symmetric there, outside the range its physics holds for, so its torques are not "
+            "verified; reverse_loaded is set until the balls return",
+            status=Fmi2Status.warning,
+        )
 
     def _check_flow_limit(self, temps):
         """Outside the data already: the warning below the flow limit when it is crossed."""

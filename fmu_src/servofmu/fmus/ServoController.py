@@ -10,7 +10,8 @@ import servofmu
 
 servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
 
-from servofmu.fmus.slave import Item, ServoSlave, Var, output, real_input, real_parameter  # noqa: E402
+from servofmu.fmus.declarations import Item, Var, output, real_input, real_parameter  # noqa: E402
+from servofmu.fmus.runtime import ServoSlave  # noqa: E402
 from servofmu.physics.drives.control import MODES, PIDParameters, PIDState, pid_sample  # noqa: E402
 
 #: The most samples one fmi2DoStep computes (the work per call is bounded: a longer step is
@@ -26,10 +27,9 @@ _MODES = {
 }
 
 
-def _param(name, description, start, unit, display, lo, hi, variability="tunable"):
-    return real_parameter(
-        name, description, start, unit, display, lo, hi, variability=variability, source=_SRC
-    )
+def _param(name, description, **kw):
+    """A Real parameter (keywords as :func:`real_parameter`), tunable unless said."""
+    return real_parameter(name, description, **{"variability": "tunable", "source": _SRC, **kw})
 
 
 class ServoController(ServoSlave):
@@ -42,21 +42,19 @@ class ServoController(ServoSlave):
         real_input(
             "reference",
             "Set point: angle [rad] in position mode, speed [rad/s] in speed mode",
-            0.0,
-            None,
-            None,
-            -1.0e9,
-            1.0e9,
+            start=0.0,
+            min=-1.0e9,
+            max=1.0e9,
         ),
         real_input(
-            "measurement", "Measured angle [rad] or speed [rad/s]", 0.0, None, None, -1.0e9, 1.0e9
+            "measurement", "Measured angle [rad] or speed [rad/s]", start=0.0, min=-1.0e9, max=1.0e9
         ),
         # sampled: no direct feedthrough while stepping; right after initialization the first
         # sample's command (no integral or derivative yet: clip(kp·(r − y)))
         output(
             "command",
             "Controller output: motor voltage",
-            "V",
+            unit="V",
             initial_depends=("reference", "measurement", "kp", "output_min", "output_max"),
         ),
         Var(
@@ -69,21 +67,34 @@ class ServoController(ServoSlave):
             declared_type="ControllerMode",
             source=_SRC,
         ),
-        _param("kp", "Proportional gain [V per rad or rad/s]", _P.kp, None, None, 0.0, 1e9),
-        _param("ki", "Integral gain [V/s per rad or rad/s]", _P.ki, None, None, 0.0, 1e12),
-        _param("kd", "Derivative gain [V·s per rad or rad/s]", _P.kd, None, None, 0.0, 1e9),
+        _param("kp", "Proportional gain [V per rad or rad/s]", start=_P.kp, min=0.0, max=1e9),
+        _param("ki", "Integral gain [V/s per rad or rad/s]", start=_P.ki, min=0.0, max=1e12),
+        _param("kd", "Derivative gain [V·s per rad or rad/s]", start=_P.kd, min=0.0, max=1e9),
         _param(
             "derivative_filter",
             "Time constant of the derivative filter",
-            _P.derivative_filter,
-            "s",
-            "ms",
-            1e-9,
-            1e3,
+            start=_P.derivative_filter,
+            unit="s",
+            display_unit="ms",
+            min=1e-9,
+            max=1e3,
         ),
-        _param("output_min", "Lower output limit", _P.output_min, "V", None, -1e4, 1e4),
-        _param("output_max", "Upper output limit", _P.output_max, "V", None, -1e4, 1e4),
-        _param("sample_period", "Sample period", _P.sample_period, "s", "ms", 1e-7, 1e3, "fixed"),
+        _param(
+            "output_min", "Lower output limit", start=_P.output_min, unit="V", min=-1e4, max=1e4
+        ),
+        _param(
+            "output_max", "Upper output limit", start=_P.output_max, unit="V", min=-1e4, max=1e4
+        ),
+        _param(
+            "sample_period",
+            "Sample period",
+            start=_P.sample_period,
+            unit="s",
+            display_unit="ms",
+            min=1e-7,
+            max=1e3,
+            variability="fixed",
+        ),
     )
 
     def __init__(self, **kwargs):
@@ -127,6 +138,19 @@ class ServoController(ServoSlave):
         self.next_sample = max(self.next_sample, last)
         return True
 
+    def state_problem(self):
+        # every step leaves next_sample at the first sample instant not yet due
+        if self._time is None or not self._configured:
+            return ""
+        ts = self.params.sample_period
+        due = max(0, math.ceil((self._time - 1e-9 * ts - self._start_time) / ts))
+        if self.next_sample != due:
+            return (
+                f"next_sample = {self.next_sample!r} is not the next sample at time = "
+                f"{self._time!r} s ({due}, sample_period = {ts!r} s)"
+            )
+        return ""
+
     def hidden_state(self):
         return {
             "integral": self.pid.integral,
@@ -140,6 +164,9 @@ class ServoController(ServoSlave):
         numbers = (integral, derivative, 0.0 if last is None else last)
         if not all(type(x) in (int, float) for x in numbers):
             raise TypeError(f"{_PID_FIELDS}: numbers, not {(integral, derivative, last)!r}")
+        for name, x in zip(_PID_FIELDS, numbers, strict=True):
+            if not math.isfinite(x):  # a sample of finite inputs gives finite values
+                raise ValueError(f"{name} = {x!r} is not finite")
         if type(state["next_sample"]) is not int:
             raise TypeError(f"next_sample = {state['next_sample']!r} is not an integer")
         self.pid = PIDState(float(integral), float(derivative), last)

@@ -9,6 +9,17 @@ through :func:`thermal_network.preset` / :func:`thermal_network.mechanism_parame
 ``ThermalParameters.as_dict()``.
 
 The choice ``environment`` (air / vacuum) removes convection and the gas gap in vacuum.
+
+The range its physics holds for: every part between ``minimum_part_temperature`` and
+``maximum_part_temperature`` (default 173.15…473.15 K, the temperatures BearingFriction, which
+these outputs feed, accepts; set them to your materials' and lubricant's limits). The network's
+capacities and conductances are constants of the parts' materials near room temperature, and
+beyond those limits the parts' materials or lubricant fail (a bearing steel tempers, a grease
+decomposes) long before the computed temperature is reached: at its largest ``power_loss`` the
+default network reports an inner ring at thousands of kelvin. Outside the range the output
+``outside_valid_range`` is set and one warning naming the part, its temperature and the limit
+is logged each time a part leaves it. A step that would take a part to 0 K or below (or to a
+value that is not finite) is discarded with a logged error: every temperature output is > 0 K.
 """
 
 from __future__ import annotations
@@ -21,7 +32,10 @@ servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
 
 import math  # noqa: E402
 
-from servofmu.fmus.slave import Item, ServoSlave, Var  # noqa: E402
+from pythonfmu.enums import Fmi2Status  # noqa: E402
+
+from servofmu.fmus.declarations import Item, Var  # noqa: E402
+from servofmu.fmus.runtime import ServoSlave  # noqa: E402
 from servofmu.physics.thermal import network as tn  # noqa: E402
 
 _P = tn.preset("yu2017_gimbal_chamber")
@@ -88,6 +102,39 @@ _STEADY = (
 )
 
 
+#: The range the network's physics holds for (parameters): (name, description, default [K])
+_LIMITS = (
+    (
+        "minimum_part_temperature",
+        "Lowest part temperature the network's physics holds for (its materials and lubricant)",
+        173.15,
+    ),
+    (
+        "maximum_part_temperature",
+        "Highest part temperature the network's physics holds for (its materials and lubricant)",
+        473.15,
+    ),
+)
+_LIMITS_SOURCE = (
+    "assumed: the range of the temperatures BearingFriction accepts (173.15…473.15 K), which "
+    "these outputs feed; set your materials' and lubricant's limits"
+)
+
+
+def _limit(name, description, start):
+    return _real(
+        name,
+        "parameter",
+        description,
+        start=start,
+        unit="K",
+        display_unit="degC",
+        min=0.0,
+        max=1.0e4,
+        source=_LIMITS_SOURCE,
+    )
+
+
 def _real(name, causality, description, **kwargs):
     return Var(name=name, type="Real", causality=causality, description=description, **kwargs)
 
@@ -138,7 +185,7 @@ class ThermalNetwork(ServoSlave):
             max=1.0e4,
         ),
         *(
-            _real(n, "output", d, unit="K", display_unit="degC", initial_depends=_INITIAL)
+            _real(n, "output", d, unit="K", display_unit="degC", min=0.0, initial_depends=_INITIAL)
             for n, d in _OUTPUTS
         ),
         *(_parameter(field) for field in _PARAMETERS),
@@ -184,6 +231,18 @@ class ThermalNetwork(ServoSlave):
                 "matrix exponentials instead of 10800, largest error 1.4e-6 K instead of 5.4e-7 K"
             ),
         ),
+        # appended last: pythonfmu numbers value references in declaration order
+        *(_limit(name, description, start) for name, description, start in _LIMITS),
+        Var(
+            name="outside_valid_range",
+            type="Boolean",
+            causality="output",
+            description=(
+                "A part temperature lies outside minimum_part_temperature … "
+                "maximum_part_temperature, the range this network's physics holds for"
+            ),
+            initial_depends=(*_INITIAL, *(name for name, _, _ in _LIMITS)),
+        ),
     )
 
     def __init__(self, **kwargs):
@@ -192,6 +251,11 @@ class ThermalNetwork(ServoSlave):
         self.started = False  # the initial state has been set
 
     def configure(self):
+        if not self.minimum_part_temperature < self.maximum_part_temperature:
+            raise ValueError(
+                f"minimum_part_temperature = {self.minimum_part_temperature!r} K must be below "
+                f"maximum_part_temperature = {self.maximum_part_temperature!r} K"
+            )
         values = {f: getattr(self, f) for f in _PARAMETERS}
         self.params = tn.ThermalParameters(**values, environment=self.item("environment"))
         self.network = tn.network(self.params)
@@ -226,7 +290,7 @@ class ThermalNetwork(ServoSlave):
                 ref = tuple(t)
         else:
             ref = None
-        new = tn._step(  # inputs checked by the slave
+        new = tn.step_unchecked(  # inputs checked by the slave
             self.network,
             t,
             self.ambient_temperature,
@@ -249,9 +313,36 @@ class ThermalNetwork(ServoSlave):
     def _state(self):
         return [getattr(self, n) for n, _ in _OUTPUTS]
 
+    def state_problem(self):
+        # a restored state holds temperatures a step could give (advance's rule)
+        for name, _ in _OUTPUTS:
+            t = getattr(self, name)
+            if not (math.isfinite(t) and t > 0.0):
+                return f"{name} = {t!r} K is not a temperature (finite, > 0 K)"
+        return ""
+
     def _set_state(self, values):
         for (name, _), v in zip(_OUTPUTS, values, strict=True):
             setattr(self, name, float(v))
+        self._check_range()
+
+    def _check_range(self):
+        """Set ``outside_valid_range``; one warning each time a part leaves the range."""
+        lo, hi = self.minimum_part_temperature, self.maximum_part_temperature
+        outside = [(n, getattr(self, n)) for n, _ in _OUTPUTS if not lo <= getattr(self, n) <= hi]
+        if outside and not self.outside_valid_range:
+            name, t = max(outside, key=lambda item: abs(item[1] - 0.5 * (lo + hi)))
+            below = t < lo
+            limit = lo if below else hi
+            self.log(
+                f"{self.instance_name}: {name} = {t:.6g} K ({t - 273.15:.6g} °C) is "
+                f"{'below' if below else 'above'} "
+                f"{'minimum' if below else 'maximum'}_part_temperature = {limit:.6g} K, the "
+                "range the network's physics holds for (its parts' materials and lubricant); "
+                "outside_valid_range is set until every part returns",
+                status=Fmi2Status.warning,
+            )
+        self.outside_valid_range = bool(outside)
 
     def hidden_state(self):
         ref = None if self.reference is None else list(self.reference)

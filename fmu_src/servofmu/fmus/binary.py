@@ -104,6 +104,31 @@ def export_of(resources, model_identifier: str) -> str | None:
     return marker().decode()
 
 
+def shares_values(export: str | None) -> bool:
+    """Whether an export library serves fmi2SetReal and fmi2GetReal from the values a slave
+    shares with it (:mod:`.shared_values`): servofmu's export from version 2.
+
+    Parameters
+    ----------
+    export : what :func:`export_of` answered (None: no FMU binary)
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> shares_values("servofmu-export 2 (pythonfmu 0.7.0, patched)")
+    True
+    >>> shares_values("servofmu-export 1 (pythonfmu 0.7.0, patched)"), shares_values(PYTHONFMU)
+    (False, False)
+    """
+    if export is None or not export.startswith("servofmu-export "):
+        return False
+    version = export.removeprefix("servofmu-export ").split(" ", 1)[0]
+    return version.isdigit() and int(version) >= 2
+
+
 def reports_statuses(export: str) -> bool:
     """Whether an export library turns :class:`.calls.FMIError` into a status.
 
@@ -118,7 +143,7 @@ def reports_statuses(export: str) -> bool:
 
     Examples
     --------
-    >>> reports_statuses("servofmu-export 1 (pythonfmu 0.7.0, patched)")
+    >>> reports_statuses("servofmu-export 2 (pythonfmu 0.7.0, patched)")
     True
     >>> reports_statuses(PYTHONFMU)
     False

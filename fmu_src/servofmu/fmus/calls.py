@@ -24,11 +24,21 @@ fmi2Reset, fmi2FreeInstance    every state (pythonfmu's C++ layer)
 A call answered with fmi2Error leaves the instance in the *error* state, a step answered with
 fmi2Discard in *step failed*: from there only reading, fmi2SetFMUstate (the state recorded in
 it, the FMI way to retry), fmi2Terminate (step failed), fmi2Reset and fmi2FreeInstance lead on.
+
+A serialized state is its JSON text with the SHA-256 of those bytes appended as a last field,
+``{…, "sha256": "<64 hex digits>"}`` (:func:`sealed`): still one JSON object, and a state whose
+bytes were altered, truncated or written by anything else is refused (:func:`unsealed`)
+before a value of it is read. The checksum guards against accidents and careless tools, not
+against someone who means harm (anyone can compute a SHA-256): the restored values are
+checked as well, as values set through the FMI calls are (:mod:`.runtime`).
 """
 
 from __future__ import annotations
 
+import hashlib
+import json
 import math
+import re
 
 INSTANTIATED = "instantiated"
 INITIALIZATION = "initialization mode"
@@ -179,3 +189,64 @@ def state_problem(state, fmu: str, package: str, variables) -> str:
     if not isinstance(state["hidden"], dict):
         return "its hidden state is not a table"
     return ""
+
+
+#: The checksum field that ends a serialized state (see the module docstring).
+_SEAL = re.compile(rb', "sha256": "([0-9a-f]{64})"\}\Z')
+
+
+def sealed(state: dict) -> bytes:
+    """The bytes of a serialized FMU state: its JSON text, and the SHA-256 of that text as a
+    last field.
+
+    Parameters
+    ----------
+    state : a non-empty JSON-serialisable table (NaN and infinities allowed)
+
+    Returns
+    -------
+    bytes
+        UTF-8 JSON: ``{<the state's fields>, "sha256": "<64 hex digits>"}``.
+
+    Examples
+    --------
+    >>> data = sealed({"time": 1.5})
+    >>> data[:14], len(data)
+    (b'{"time": 1.5, ', 91)
+    >>> unsealed(data)
+    ({'time': 1.5}, '')
+    """
+    if not (isinstance(state, dict) and state):
+        raise TypeError(f"a state is a non-empty table, not {state!r}")
+    body = json.dumps(state, allow_nan=True).encode("utf-8")
+    digest = hashlib.sha256(body).hexdigest()
+    return body[:-1] + f', "sha256": "{digest}"}}'.encode()
+
+
+def unsealed(data: bytes) -> tuple[object, str]:
+    """The state in bytes written by :func:`sealed`, once their checksum matches.
+
+    Parameters
+    ----------
+    data : the bytes a host hands back (anything)
+
+    Returns
+    -------
+    tuple
+        (the state, "") or (None, why the bytes are refused).
+
+    Examples
+    --------
+    >>> data = sealed({"time": 1.5})
+    >>> unsealed(data.replace(b"1.5", b"2.5"))
+    (None, 'its bytes do not match their checksum (altered or damaged)')
+    >>> unsealed(b'{"time": 1.5}')
+    (None, 'its bytes do not end with the checksum of a state (truncated, or not one)')
+    """
+    found = _SEAL.search(data)
+    if found is None:
+        return None, "its bytes do not end with the checksum of a state (truncated, or not one)"
+    body = data[: found.start()] + b"}"
+    if hashlib.sha256(body).hexdigest() != found.group(1).decode():
+        return None, "its bytes do not match their checksum (altered or damaged)"
+    return json.loads(body.decode("utf-8")), ""

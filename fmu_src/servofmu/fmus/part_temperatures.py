@@ -11,7 +11,7 @@ record with every part at it, so equal part temperatures give exactly the unifor
 
 from __future__ import annotations
 
-from servofmu.fmus.slave import Item, Var, real_input
+from servofmu.fmus.declarations import Item, Var, real_input
 from servofmu.physics.thermal.temperatures import PARTS
 
 #: How the temperature inputs are read (parameter ``temperature_mode``): every part at
@@ -38,11 +38,11 @@ def part_inputs(of: str = "") -> tuple[Var, ...]:
             f"Temperature of the {part.replace('_', ' ')}{of} (temperature_mode parts; "
             + ("housing_shaft too" if part in ("housing", "shaft") else "else unused")
             + ")",
-            293.15,
-            "K",
-            "degC",
-            173.15,
-            473.15,
+            start=293.15,
+            unit="K",
+            display_unit="degC",
+            min=173.15,
+            max=473.15,
         )
         for part, name in zip(PARTS, PART_INPUTS, strict=True)
     )

@@ -24,8 +24,11 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import read_input
+from servofmu.physics._checks import suggest
 from servofmu.physics.kernels.units import DEG, GRAM_FORCE_CM, RPM, ZERO_CELSIUS, to_si
 
+from .schema import schema_problems
 from .standard import (
     BASES,
     CATEGORIES,
@@ -233,7 +236,8 @@ class _Reader:
         unknown = sorted(set(data) - set(allowed))
         if unknown:
             self.fail(
-                f"{where.rstrip('.') or 'input'}: unknown keys {unknown} (known: {sorted(allowed)})"
+                f"{where.rstrip('.') or 'input'}: unknown keys {unknown}"
+                f"{suggest(unknown[0], allowed)} (known: {sorted(allowed)})"
             )
 
     def quantity(
@@ -380,9 +384,7 @@ def read_toml(path) -> dict:
     """
     path = Path(path)
     try:
-        return tomllib.loads(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise ValueError(f"{path}: cannot be read ({exc.strerror})") from None
+        return tomllib.loads(read_input(path, "margin input"))
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path}: not valid TOML ({exc})") from None
 
@@ -865,6 +867,8 @@ def _parse(data, base_dir: Path, source: str, catalogs, mounting) -> MarginInput
 
     r = _Reader()
     r.known(data, SECTIONS, "")
+    for problem in schema_problems(data):  # the types of what the reader hands on
+        r.fail(problem)
     mech = r.table(data, "mechanism", "")
     r.known(
         mech,

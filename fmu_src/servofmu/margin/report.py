@@ -10,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import save_figure, written
 from servofmu.physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 
 from .inputs import CASES
@@ -94,12 +95,11 @@ def write_csv(rows: list[dict], path) -> Path:
     ['life,case,temperature [degC],margin T/T_min-1 [-]', 'as given,run,-40,0.25']
     """
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     keys = set().union(*(r.keys() for r in rows)) if rows else set()
     columns = [c for c in COLUMNS if c[0] in keys]
     known = {c[0] for c in COLUMNS}
     extra = sorted(keys - known)  # drawn parameters (SI)
-    with path.open("w", newline="", encoding="utf-8") as fh:
+    with written(path) as part, part.open("w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh)
         w.writerow([c[1] for c in columns] + [f"{k} [SI]" for k in extra])
         for r in rows:
@@ -389,7 +389,6 @@ def plot(result: MarginResult, path) -> Path:
     import matplotlib.pyplot as plt
 
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     transient = bool(result.transient)
     fig, axes = plt.subplots(2 if transient else 1, 1, figsize=(7.4, 8.4 if transient else 5.2))
     ax = axes[0] if transient else axes
@@ -503,7 +502,7 @@ def plot(result: MarginResult, path) -> Path:
         twin.set_ylabel("temperature [°C]", color="0.35")
         twin.legend(fontsize=7, loc="center right")
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save_figure(fig, path, dpi=110)
     plt.close(fig)
     return path
 

@@ -35,6 +35,8 @@ from pathlib import Path
 
 import numpy as np
 
+from servofmu.files import save_figure, written
+
 KINDS = ("prediction", "check", "calibration", "consequence", "trend")
 STATUSES = ("reproduced", "calibrated", "consequence", "qualitative", "not-reproduced")
 #: the status of a row of each kind that is within its tolerance (trends: that holds)
@@ -484,10 +486,9 @@ def trend(
 
 def write_csv(path: Path, columns: dict[str, Sequence[float]]) -> Path:
     """Write equal-length columns (header "name [unit]") to ``path``."""
-    path.parent.mkdir(parents=True, exist_ok=True)
     names = list(columns)
     data = np.column_stack([np.asarray(columns[n], dtype=float) for n in names])
-    with path.open("w", newline="") as fh:
+    with written(path) as part, part.open("w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(names)
         for row in data:
@@ -510,7 +511,6 @@ def plot(
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    path.parent.mkdir(parents=True, exist_ok=True)
     fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=110)
     for label, y in series.items():
         ax.plot(x, y, label=label)
@@ -523,6 +523,6 @@ def plot(
     if len(series) > 1:
         ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path)
+    save_figure(fig, path)
     plt.close(fig)
     return path

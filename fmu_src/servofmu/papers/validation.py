@@ -7,20 +7,21 @@ Sources (data with provenance in ``papers/data/friction_measurements.toml`` and
 
 1. Bălan, Houpert, Tufescu, Olaru (2015), Lubricants 3:222, Tables 1–2: three balls of a
    modified thrust bearing 51205 in mineral oil, spin-down torques at 60–210 r/min. Checked:
-   the per-contact hydrodynamic rolling model (:mod:`physics.ehl_rolling`, Biboulet &
+   the per-contact hydrodynamic rolling model (:mod:`physics.friction.ehl_per_contact`, Biboulet &
    Houpert 2010 with literature constants only) and, for reference, the Yu-calibrated
    Palmgren term that servofmu uses by default. The SKF model has no constants for a
    three-ball bearing and is not applied.
 2. DuPont, technical data sheet of Molykote G-1074 (form 80-8136B-01, 09/19): starting and
    running torque at −40 °C in the JIS K 2220 low-temperature torque test. Checked: the SKF
-   model (:mod:`physics.rolling_friction`, catalogue constants of series 62) as a
-   prediction; the grease term (:mod:`physics.grease_torque`) is calibrated on this point, so
+   model (:mod:`physics.friction.skf2004`, catalogue constants of series 62) as a
+   prediction; the grease term (:mod:`physics.friction.grease`) is calibrated on this point, so
    its rows are "calibrated", and its prediction is untested for want of a second point.
 
-3. Every viscosity the catalogue records for a lubricant (``parameters/data/lubricants.toml``: ν40,
-   ν100 and further published points) against the lubricant's law (:mod:`physics.viscosity`:
-   the ASTM D341 line through two points, Vogel's law through three or more), with the
-   range of each lubricant's data; Yu's Krytox 143AA against his eq 18.
+3. Every viscosity the catalogue records for a lubricant (``parameters/data/lubricants.toml``:
+   ν40, ν100 and further published points) against the lubricant's law
+   (:mod:`physics.lubrication.viscosity`: the ASTM D341 line through two points, Vogel's law
+   through three or more), with the range of each lubricant's data; Yu's Krytox 143AA
+   against his eq 18.
 
 The validation wants at least two independent oil-lubricated sources. The candidates searched for a
 second one, and why none could be used, are data (``[[searched]]`` in
@@ -36,6 +37,8 @@ import tomllib
 from pathlib import Path
 
 import numpy as np
+
+from servofmu.files import save_figure, written
 
 from ..parameters import catalog
 from ..parameters.catalog import quantity
@@ -362,7 +365,7 @@ def _viscosity_files(out_dir: Path, table) -> list[str]:
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     path = out_dir / "viscosity_points.csv"
-    with path.open("w", newline="") as fh:
+    with written(path) as part, part.open("w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["lubricant", "temperature [degC]", "published [cSt]", "law [cSt]",
                     "error [%]"])  # fmt: skip
@@ -400,7 +403,7 @@ def _viscosity_files(out_dir: Path, table) -> list[str]:
     ax.legend(fontsize=8)
     fig.tight_layout()
     png = out_dir / "viscosity_fits.png"
-    fig.savefig(png)
+    save_figure(fig, png)
     plt.close(fig)
     return [str(path), str(png)]
 

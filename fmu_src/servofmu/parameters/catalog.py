@@ -53,6 +53,9 @@ MOUNTING_TABLES = ("coefficients", "tolerances")
 #: Entries added by user catalogues: {table: {key: (entry, file)}}, in the order added.
 _USER: dict[str, dict[str, tuple[dict, str]]] = {t: {} for t in USER_TABLES}
 _generation = [0]
+#: The merged tables (package entries, then the user's), built once per :func:`generation`:
+#: a lookup costs O(1), not a copy of the table.
+_MERGED: dict[str, dict] = {}
 
 
 def _table(name: str) -> dict:
@@ -61,7 +64,10 @@ def _table(name: str) -> dict:
     extra = _USER.get(name)
     if not extra:
         return table
-    return {**table, **{key: entry for key, (entry, _) in extra.items()}}
+    merged = _MERGED.get(name)
+    if merged is None:
+        merged = _MERGED[name] = {**table, **{key: entry for key, (entry, _) in extra.items()}}
+    return merged
 
 
 def origin(table: str, key: str) -> str:
@@ -108,6 +114,7 @@ def generation() -> int:
 
 def _changed() -> None:
     _generation[0] += 1
+    _MERGED.clear()
     for cached in (material, lubricant_record, lubricant, bearing, mounting,
                    mounting_coefficients, calibrated_loop_stiffness):  # fmt: skip
         cached.cache_clear()

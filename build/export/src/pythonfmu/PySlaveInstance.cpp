@@ -3,6 +3,7 @@
 
 #include "pythonfmu/Logger.hpp"
 #include "pythonfmu/PyState.hpp"
+#include "pythonfmu/SharedValues.hpp"
 #include "pythonfmu/SlaveInstance.hpp"
 
 #include <cstring>
@@ -164,6 +165,10 @@ public:
     void clearLogBuffer() const
     {
         clearLogStrBuffer();
+        // servofmu: nothing queued (most calls): no Python objects made to find that out
+        if (pMessages_ == nullptr || !PyList_Check(pMessages_) || PyList_Size(pMessages_) == 0) {
+            return;
+        }
 
         PyObject* msgField = Py_BuildValue("s", "msg");
         PyObject* categoryField = Py_BuildValue("s", "category");
@@ -220,6 +225,7 @@ public:
             PyGILState_Release(gilState);
             throw fatal_error("the slave class was released after a fatal error: free this instance");
         }
+        shared_.release(); // servofmu: the old instance's values
         Py_XDECREF(pInstance_);
         pInstance_ = nullptr;
         Py_XDECREF(pMessages_);
@@ -238,6 +244,9 @@ public:
             handle_py_exception("[initialize] PyObject_Call", gilState);
         }
         pMessages_ = PyObject_CallMethod(pInstance_, "_get_log_queue", nullptr);
+        shared_.attach(pInstance_); // servofmu: the values it shares, if any
+        if (pDoStep_ == nullptr) pDoStep_ = PyUnicode_InternFromString("do_step");
+        PyErr_Clear();
     }
 
     void SetupExperiment(double startTime, std::optional<double> stop, std::optional<double> tolerance) override
@@ -287,7 +296,15 @@ public:
     {
         bool status;
         py_safe_run([this, &status, currentTime, stepSize](PyGILState_STATE gilState) {
-            auto f = PyObject_CallMethod(pInstance_, "do_step", "(dd)", currentTime, stepSize);
+            // servofmu: the method's name made once per instance, the arguments as objects
+            // (no format string parsed, no name decoded on every step)
+            PyObject* t = PyFloat_FromDouble(currentTime);
+            PyObject* h = PyFloat_FromDouble(stepSize);
+            auto f = (pDoStep_ != nullptr && t != nullptr && h != nullptr)
+                ? PyObject_CallMethodObjArgs(pInstance_, pDoStep_, t, h, nullptr)
+                : PyObject_CallMethod(pInstance_, "do_step", "(dd)", currentTime, stepSize);
+            Py_XDECREF(t);
+            Py_XDECREF(h);
             if (f == nullptr) {
                 handle_py_exception("[doStep] PyObject_CallMethod", gilState);
             }
@@ -321,6 +338,7 @@ public:
     void SetReal(const fmi2ValueReference* vr, std::size_t nvr, const fmi2Real* values) override
     {
         requireArrays("fmi2SetReal", vr, values, nvr);
+        if (shared_.setReal(vr, nvr, values)) return; // servofmu: served without Python
         py_safe_run([this, &vr, nvr, &values](PyGILState_STATE gilState) {
             PyObject* vrs = PyList_New(nvr);
             PyObject* refs = PyList_New(nvr);
@@ -413,6 +431,7 @@ public:
     void GetReal(const fmi2ValueReference* vr, std::size_t nvr, fmi2Real* values) const override
     {
         requireArrays("fmi2GetReal", vr, values, nvr);
+        if (shared_.getReal(vr, nvr, values)) return; // servofmu: served without Python
         py_safe_run([this, &vr, nvr, &values](PyGILState_STATE gilState) {
             PyObject* vrs = PyList_New(nvr);
             for (int i = 0; i < nvr; i++) {
@@ -636,6 +655,8 @@ private:
 
     mutable std::vector<PyObject*> strBuffer;
     mutable std::vector<PyObject*> logStrBuffer;
+    mutable SharedValues shared_; // servofmu: the instance's Real values shared with the slave
+    mutable PyObject* pDoStep_{}; // servofmu: the name "do_step"
 
     std::string resourceLocation() const
     {
@@ -677,6 +698,7 @@ private:
         clearLogBuffer();
         clearLogStrBuffer();
         clearStrBuffer();
+        shared_.release(); // servofmu: before the instance that owns the values
         // servofmu: forgotten once released: a later call or the destructor never releases
         // them again (that double release crashed hosts after a fatal error)
         Py_XDECREF(pClass_);
@@ -685,6 +707,8 @@ private:
         pInstance_ = nullptr;
         Py_XDECREF(pMessages_);
         pMessages_ = nullptr;
+        Py_XDECREF(pDoStep_);
+        pDoStep_ = nullptr;
     }
 
     // servofmu: an error status for a host's mistake, raised with the GIL released

@@ -117,10 +117,11 @@ extern "C" {
 // servofmu: identifies this export and its protocol to the Python slave: a Python exception
 // with an attribute fmi2_status (fmi2Discard or fmi2Error) is answered with that status and
 // its message, and the instance stays alive; fmi2Warning, fmi2Error and fmi2Fatal messages
-// reach the host's logger whatever loggingOn says.
+// reach the host's logger whatever loggingOn says; from version 2, fmi2SetReal and
+// fmi2GetReal are served from the values a slave shares (SharedValues.hpp).
 const char* servofmuExport()
 {
-    return "servofmu-export 1 (pythonfmu 0.7.0, patched)";
+    return "servofmu-export 2 (pythonfmu 0.7.0, patched)";
 }
 
 

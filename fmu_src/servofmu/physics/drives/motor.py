@@ -158,10 +158,28 @@ def step(p: DCMotorParameters, state, voltage: float, load_torque: float, h: flo
     """
     check_finite("voltage", voltage, "V")
     check_finite("load_torque", load_torque, "N·m")
-    return _step(p, state, voltage, load_torque, h)
+    return step_unchecked(p, state, voltage, load_torque, h)
 
 
-def _step(p: DCMotorParameters, state, voltage: float, load_torque: float, h: float):
+def step_unchecked(p: DCMotorParameters, state, voltage: float, load_torque: float, h: float):
+    """:func:`step` without its argument checks, for a caller that checked them (the DCMotor
+    FMU checks its inputs once per step).
+
+    Parameters
+    ----------
+    p, state, voltage, load_torque, h : as :func:`step` (finite; h > 0 [s])
+
+    Returns
+    -------
+    tuple of float
+        The new (i [A], ω [rad/s], φ [rad]).
+
+    Examples
+    --------
+    >>> p = DCMotorParameters()
+    >>> step_unchecked(p, (0.0, 0.0, 0.0), 12.0, 0.0, 1e-3) == step(p, (0.0, 0.0, 0.0), 12.0, 0.0, 1e-3)
+    True
+    """  # noqa: E501
     phi, gamma = discretise(p, float(h))
     u = (voltage, load_torque)
     return tuple(
@@ -225,14 +243,34 @@ def step_with_friction(
     check_finite("load_torque", load_torque, "N·m")
     check_nonnegative("running_friction", running_friction, "N·m")
     check_nonnegative("breakaway_friction", breakaway_friction, "N·m")
-    return _step_with_friction(
+    return step_with_friction_unchecked(
         p, state, voltage, load_torque, h, running_friction, breakaway_friction, substep
     )
 
 
-def _step_with_friction(
+def step_with_friction_unchecked(
     p, state, voltage, load_torque, h, running_friction, breakaway_friction, substep
 ):
+    """:func:`step_with_friction` without its argument checks, for a caller that checked
+    them (the DCMotor FMU checks its inputs once per step).
+
+    Parameters
+    ----------
+    p, state, voltage, load_torque, h, running_friction, breakaway_friction, substep : as
+        :func:`step_with_friction` (finite; friction magnitudes ≥ 0 [N·m]; h, substep > 0 [s])
+
+    Returns
+    -------
+    tuple
+        (new (i [A], ω [rad/s], φ [rad]), mean friction torque over the step [N·m]).
+
+    Examples
+    --------
+    >>> p = DCMotorParameters()
+    >>> args = (p, (0.0, 0.0, 0.0), 0.1, 0.0, 1e-3, 0.01, 0.02, 1e-4)
+    >>> step_with_friction_unchecked(*args) == step_with_friction(*args)
+    True
+    """
     n = max(1, math.ceil(h / substep - 1e-9))
     hs = h / n
     phi, gamma = discretise(p, hs)

@@ -329,11 +329,34 @@ def step(
     ref = None
     if network.radiating:
         ref = tuple(_check_state(network, t if reference is None else reference))
-    return _step(network, t, ambient, sink, power, h, ref)
+    return step_unchecked(network, t, ambient, sink, power, h, ref)
 
 
-def _step(network, t, ambient, sink, power, h, reference):
-    """:func:`step` without checks: ``reference`` a tuple of floats (None without radiation)."""
+def step_unchecked(network, t, ambient, sink, power, h, reference):
+    """:func:`step` without its argument checks, for a caller that checked them (the
+    ThermalNetwork FMU checks its inputs once per step).
+
+    Parameters
+    ----------
+    network : ThermalNetwork
+    t : sequence of float
+        Node temperatures [K], one per node.
+    ambient, sink, power, h : as :func:`step` ([K], [K], [W], [s]; finite, h > 0)
+    reference : tuple of float or None
+        Temperatures [K] about which radiation is linearised (None without radiation).
+
+    Returns
+    -------
+    list of float
+        Node temperatures [K] after ``h``.
+
+    Examples
+    --------
+    >>> net = ThermalNetwork((10.0,), ambient=(2.0,), sink_radiation=(0.0,), heat_split=(1.0,),
+    ...                      nodes=("part",))
+    >>> [round(t, 9) for t in step_unchecked(net, [300.0], 290.0, 0.0, 0.0, 5.0, None)]
+    [293.678794412]
+    """
     m = propagator(network, h, reference)
     f = _rates(_terms(network), t, ambient, sink, power)
     return [x + sum(map(mul, row, f)) for x, row in zip(t, m, strict=True)]
