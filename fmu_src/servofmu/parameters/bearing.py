@@ -1,5 +1,5 @@
 """The flat parameter set of a bearing pair, as the BearingFriction FMU and its ``.ssv`` files
-name it, and the :class:`~.bearing.BearingPair` it stands for.
+name it, and the :class:`~servofmu.physics.bearing.BearingPair` it stands for.
 
 One mapping, used by the FMU (its parameter table is generated from :data:`PARAMETERS`, and
 ``BearingFriction.configure`` calls :func:`pair_from_parameters`), by the calibration

@@ -549,7 +549,7 @@ def _coefficient_values(mounting: str, solid: bool) -> tuple[dict, dict]:
     }
     fm = FrictionModel()  # the catalogue's SKF coefficients (μbl, Krs)
     values |= {
-        "friction_model": "yu2017",
+        "friction_model": fm.model,  # the registry's first: the default
         "skf_replenishment": fm.skf_replenishment,
         "skf_boundary_friction": fm.skf_boundary_friction,
         "lubricant_below_flow_limit": "hold",

@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..physics.contact.geometry import MAX_CONTACT_ANGLE
-from ..physics.friction.models import FRICTION_MODELS
+from ..physics.friction import registry
 from ..physics.pair.mounting import PRELOAD_METHODS
 from ..physics.pair.preload import ARRANGEMENTS, LOOP_MODELS
 
@@ -151,27 +151,6 @@ _LOOP_READINGS = (
         "members with the housing material's, the ring widths not counted",
     ),
 )
-_FRICTION_MODELS = (
-    Choice(
-        "yu2017",
-        "yu2017",
-        "Yu 2017 eq 1-9: hysteresis, spin (and Ning's sliding) per contact + Palmgren's "
-        "viscous torque s0·(ν·n)^(2/3)·dm³",
-    ),
-    Choice(
-        "skf2004",
-        "skf2004",
-        "SKF 2004: φish·φrs·Mrr + Msl per bearing with its own axial and radial load "
-        "(open, no oil bath)",
-    ),
-    Choice(
-        "ehl_per_contact",
-        "ehl_per_contact",
-        "Biboulet & Houpert 2010 hydrodynamic rolling torque of every ball-race contact + Yu's "
-        "hysteresis and spin per contact",
-    ),
-)
-assert tuple(c.key for c in _FRICTION_MODELS) == FRICTION_MODELS
 assert {c.key for c in _ARRANGEMENTS} == set(ARRANGEMENTS)
 assert tuple(c.key for c in _PRELOAD_METHODS) == PRELOAD_METHODS
 assert tuple(c.key for c in _LOOP_MODELS) == LOOP_MODELS
@@ -621,13 +600,18 @@ def _skf(name, description, lo, hi):
 
 
 def _friction_model_specs() -> tuple[ParameterSpec, ...]:
+    """The friction-model choice (its items from :mod:`~servofmu.physics.friction.registry`,
+    in its order) and the SKF model's numbers."""
+    models = registry.entries()
+    first, *others = (m.name for m in models)
+    listed = " or ".join(filter(None, (", ".join(others[:-1]), *others[-1:])))
     return (
         _choice(
             "friction_model",
-            "Friction model: yu2017 (default), skf2004 or ehl_per_contact",
+            f"Friction model: {first} (default), {listed}",
             "friction_model",
             "FrictionModel",
-            _FRICTION_MODELS,
+            tuple(Choice(m.name, m.name, m.description) for m in models),
         ),
         _skf("r1", "rolling constant R1 (Table 2b; catalogue units)", 1.0e-12, 1.0),
         _skf("r2", "rolling constant R2 of the axial load", 1.0e-6, 100.0),

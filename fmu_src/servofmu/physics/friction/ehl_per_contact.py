@@ -354,3 +354,46 @@ def dynamic_viscosity(kinematic_viscosity, density):
     nu = check_nonnegative("kinematic_viscosity", kinematic_viscosity, "m²/s")
     rho = check_range("density", density, 100.0, 5000.0, unit="kg/m³")
     return nu * rho
+
+
+def ehl_torque(terms, speed):
+    """Σ over the contacts of :func:`.friction.ehl_per_contact.contact_rolling_torque` [N·m] at ω
+    [rad/s]. ``terms`` = (scale, ivr, ehl, m0, U per rad/s): tuples of floats (one per loaded
+    contact, the per-step path) or arrays with a trailing contact axis (the exact path).
+
+    Parameters
+    ----------
+    terms : tuple
+        The contacts' terms.
+    speed : float or ndarray
+        ω [rad/s].
+
+    Returns
+    -------
+    float or ndarray
+        [N·m].
+
+    Examples
+    --------
+    >>> ehl_torque(((1.0,), (1.0,), (1.0,), (1.0,), (0.0,)), 5.0)  # dry contact: U = 0
+    0.0
+    """
+    scale, ivr, ehl, m0, u = terms
+    if isinstance(scale, np.ndarray):
+        return np.sum(contact_rolling_torque(scale, ivr, ehl, m0, u, speed), axis=-1)
+    total = 0.0
+    for k in range(len(scale)):
+        total += contact_rolling_torque(scale[k], ivr[k], ehl[k], m0[k], u[k], speed)
+    return total
+
+
+def running_terms(pair, kinematic_viscosity, pitch_diameter, rolling, speed):
+    """The friction model's speed terms (:mod:`.friction.registry`): (:func:`ehl_torque` of
+    the contacts' terms ``rolling`` at ω [rad/s], None) [N·m]; ν and dm are in the terms.
+
+    Returns
+    -------
+    tuple
+        (rolling torque [N·m], None: no sliding torque of its own).
+    """
+    return ehl_torque(rolling, speed), None

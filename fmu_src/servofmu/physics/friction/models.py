@@ -52,19 +52,16 @@ import numpy as np
 
 from .._checks import check_choice, check_nonnegative, check_range
 from ..kernels.friction import palmgren_torque
-from ..kernels.units import CST, MM, NMM, RPM
-from .ehl_per_contact import contact_rolling_torque
+from . import registry
+from .ehl_per_contact import ehl_torque as ehl_torque
 from .grease import GreaseTorqueTerm
-from .skf2004 import (
-    MU_BOUNDARY,
-    MU_EHL,
-    REPLENISHMENT_KRS,
-    SkfConstants,
-    _pair_moments,
-    _pair_starting,
-)
+from .skf2004 import MU_BOUNDARY, MU_EHL, REPLENISHMENT_KRS, SkfConstants
+from .skf2004 import skf_loads as skf_loads
+from .skf2004 import skf_starting as skf_starting
+from .skf2004 import skf_torques as skf_torques
 
-FRICTION_MODELS = ("yu2017", "skf2004", "ehl_per_contact")
+#: The built-in friction models (:mod:`.friction.registry`; the first is the default).
+FRICTION_MODELS = registry.names()
 #: Density assumed for a lubricant without a recorded one [kg/m³] (a hydrocarbon oil).
 ASSUMED_DENSITY = 870.0
 #: Provenance of the SKF coefficients that do not depend on bearing or lubricant.
@@ -91,7 +88,7 @@ class FrictionModel:
     provenance : ((field, source), ...)
     """
 
-    model: str = "yu2017"
+    model: str = FRICTION_MODELS[0]
     skf: SkfConstants | None = None
     skf_replenishment: float = REPLENISHMENT_KRS["grease"]
     skf_boundary_friction: float = MU_BOUNDARY
@@ -101,9 +98,10 @@ class FrictionModel:
     provenance: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self):
-        check_choice("friction_model", self.model, FRICTION_MODELS)
-        if self.model == "skf2004" and self.skf is None:
-            raise ValueError("friction_model = 'skf2004' needs the SKF series constants (skf)")
+        check_choice("friction_model", self.model, registry.names())
+        check = getattr(registry.get(self.model).implementation(), "check_numbers", None)
+        if check is not None:
+            check(self)
         if self.skf is not None and self.skf.bearing_type != "angular_contact":
             raise ValueError(
                 f"SKF series {self.skf.key!r} is {self.skf.bearing_type}: the pair takes "
@@ -142,143 +140,6 @@ def mean_diameter(bearing) -> float:
     21.5
     """
     return 0.5 * (float(bearing.bore) + float(bearing.outer_diameter))
-
-
-def skf_loads(force_a, force_b, radial_load):
-    """(Fa,A, Fa,B, Fr) [N]: each bearing's axial load from the equilibrium and its share of
-    the external radial load [N] (the pair solve makes Fr,A = Fr,B = F_r/2). A bearing that has
-    lost its preload under a radial load can have Σ Q·sin α slightly below 0 (balls past the
-    groove bottom on the far side): the SKF model's Fa is a thrust, so it counts as 0.
-
-    Parameters
-    ----------
-    force_a, force_b : float or ndarray
-        The bearings' axial forces [N].
-    radial_load : float or ndarray
-        F_r [N].
-
-    Returns
-    -------
-    tuple
-        (Fa,A, Fa,B, Fr) [N], negative thrusts counted as 0.
-
-    Examples
-    --------
-    >>> skf_loads(40.0, -1e-9, 10.0)  # N: a tiny negative thrust counts as 0; F_r/2 each
-    (40.0, 0.0, 5.0)
-    """
-    if type(force_a) is float and type(force_b) is float:
-        return max(force_a, 0.0), max(force_b, 0.0), 0.5 * abs(radial_load)
-    return np.maximum(force_a, 0.0), np.maximum(force_b, 0.0), 0.5 * abs(radial_load)
-
-
-def skf_torques(pair, loads, kinematic_viscosity, speed):
-    """(φish·φrs·ΣMrr, ΣMsl) [N·m] of the pair (:func:`.friction.skf2004.pair_moments`
-    without its checks) at the loads of :func:`skf_loads`, viscosity ν [m²/s] and speed ω
-    [rad/s].
-
-    Parameters
-    ----------
-    pair : BearingPair
-        The pair (its SKF constants).
-    loads : tuple
-        :func:`skf_loads` [N].
-    kinematic_viscosity : float or ndarray
-        ν [m²/s].
-    speed : float or ndarray
-        ω [rad/s].
-
-    Returns
-    -------
-    tuple
-        (rolling, sliding) [N·m].
-
-    Examples
-    --------
-    >>> from servofmu.physics.bearing import BearingPair
-    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
-    >>> rr, sl = skf_torques(pair, skf_loads(40.0, 40.0, 0.0), 100e-6, 10.0)
-    >>> round(float(rr) * 1e3, 4), round(float(sl) * 1e3, 4)  # N·mm
-    (1.0816, 0.6943)
-    """
-    fm, b = pair.friction, pair.bearing
-    fa_a, fa_b, fr = loads
-    rolling, sliding = _pair_moments(
-        fm.skf,
-        b.bore / MM,
-        b.outer_diameter / MM,
-        fa_a,
-        fa_b,
-        fr,
-        kinematic_viscosity / CST,
-        abs(speed) / RPM,
-        fm.skf_replenishment,
-        fm.skf_boundary_friction,
-        fm.skf_film_friction,
-    )
-    return rolling * NMM, sliding * NMM
-
-
-def skf_starting(pair, loads):
-    """SKF's starting torque of the pair ΣMsl(n → 0) [N·m] at the loads of :func:`skf_loads`
-    (open bearings: no seal moment).
-
-    Parameters
-    ----------
-    pair : BearingPair
-        The pair.
-    loads : tuple
-        :func:`skf_loads` [N].
-
-    Returns
-    -------
-    float or ndarray
-        [N·m].
-
-    Examples
-    --------
-    >>> from servofmu.physics.bearing import BearingPair
-    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
-    >>> round(float(skf_starting(pair, skf_loads(40.0, 40.0, 0.0))) * 1e3, 4)  # N·mm
-    0.8055
-    """
-    fm, b = pair.friction, pair.bearing
-    fa_a, fa_b, fr = loads
-    start = _pair_starting(
-        fm.skf, b.bore / MM, b.outer_diameter / MM, fa_a, fa_b, fr, fm.skf_boundary_friction
-    )
-    return start * NMM
-
-
-def ehl_torque(terms, speed):
-    """Σ over the contacts of :func:`.friction.ehl_per_contact.contact_rolling_torque` [N·m] at ω
-    [rad/s]. ``terms`` = (scale, ivr, ehl, m0, U per rad/s): tuples of floats (one per loaded
-    contact, the per-step path) or arrays with a trailing contact axis (the exact path).
-
-    Parameters
-    ----------
-    terms : tuple
-        The contacts' terms.
-    speed : float or ndarray
-        ω [rad/s].
-
-    Returns
-    -------
-    float or ndarray
-        [N·m].
-
-    Examples
-    --------
-    >>> ehl_torque(((1.0,), (1.0,), (1.0,), (1.0,), (0.0,)), 5.0)  # dry contact: U = 0
-    0.0
-    """
-    scale, ivr, ehl, m0, u = terms
-    if isinstance(scale, np.ndarray):
-        return np.sum(contact_rolling_torque(scale, ivr, ehl, m0, u, speed), axis=-1)
-    total = 0.0
-    for k in range(len(scale)):
-        total += contact_rolling_torque(scale[k], ivr[k], ehl[k], m0[k], u[k], speed)
-    return total
 
 
 def grease_running(pair, kinematic_viscosity, speed):
@@ -346,7 +207,7 @@ def grease_rest_and_start(pair, kinematic_viscosity):
     return 2.0 * rest, 2.0 * maximum(start, rest)
 
 
-def preset(bearing, lubricant=None, model: str = "yu2017", grease=None) -> FrictionModel:
+def preset(bearing, lubricant=None, model: str = FRICTION_MODELS[0], grease=None) -> FrictionModel:
     """The :class:`FrictionModel` of catalogue data, each number with its provenance: the SKF
     constants of the bearing's series (or the labelled fallback,
     :func:`.friction.skf2004.series_constants`), Krs for grease, the catalogue's μbl, μEHL of

@@ -810,3 +810,139 @@ def series_constants(designation: str, contact_angle: float) -> SkfConstants:
         s3=base.s3,
         provenance=tuple((f, f"{why}: {src}") for f, src in base.provenance),
     )
+
+
+# ------------------------------------------------------------------ the pair's model
+
+
+def skf_loads(force_a, force_b, radial_load):
+    """(Fa,A, Fa,B, Fr) [N]: each bearing's axial load from the equilibrium and its share of
+    the external radial load [N] (the pair solve makes Fr,A = Fr,B = F_r/2). A bearing that has
+    lost its preload under a radial load can have Σ Q·sin α slightly below 0 (balls past the
+    groove bottom on the far side): the SKF model's Fa is a thrust, so it counts as 0.
+
+    Parameters
+    ----------
+    force_a, force_b : float or ndarray
+        The bearings' axial forces [N].
+    radial_load : float or ndarray
+        F_r [N].
+
+    Returns
+    -------
+    tuple
+        (Fa,A, Fa,B, Fr) [N], negative thrusts counted as 0.
+
+    Examples
+    --------
+    >>> skf_loads(40.0, -1e-9, 10.0)  # N: a tiny negative thrust counts as 0; F_r/2 each
+    (40.0, 0.0, 5.0)
+    """
+    if type(force_a) is float and type(force_b) is float:
+        return max(force_a, 0.0), max(force_b, 0.0), 0.5 * abs(radial_load)
+    return np.maximum(force_a, 0.0), np.maximum(force_b, 0.0), 0.5 * abs(radial_load)
+
+
+def skf_torques(pair, loads, kinematic_viscosity, speed):
+    """(φish·φrs·ΣMrr, ΣMsl) [N·m] of the pair (:func:`.friction.skf2004.pair_moments`
+    without its checks) at the loads of :func:`skf_loads`, viscosity ν [m²/s] and speed ω
+    [rad/s].
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair (its SKF constants).
+    loads : tuple
+        :func:`skf_loads` [N].
+    kinematic_viscosity : float or ndarray
+        ν [m²/s].
+    speed : float or ndarray
+        ω [rad/s].
+
+    Returns
+    -------
+    tuple
+        (rolling, sliding) [N·m].
+
+    Examples
+    --------
+    >>> from servofmu.physics.bearing import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
+    >>> rr, sl = skf_torques(pair, skf_loads(40.0, 40.0, 0.0), 100e-6, 10.0)
+    >>> round(float(rr) * 1e3, 4), round(float(sl) * 1e3, 4)  # N·mm
+    (1.0816, 0.6943)
+    """
+    fm, b = pair.friction, pair.bearing
+    fa_a, fa_b, fr = loads
+    rolling, sliding = _pair_moments(
+        fm.skf,
+        b.bore / MM,
+        b.outer_diameter / MM,
+        fa_a,
+        fa_b,
+        fr,
+        kinematic_viscosity / CST,
+        abs(speed) / RPM,
+        fm.skf_replenishment,
+        fm.skf_boundary_friction,
+        fm.skf_film_friction,
+    )
+    return rolling * NMM, sliding * NMM
+
+
+def skf_starting(pair, loads):
+    """SKF's starting torque of the pair ΣMsl(n → 0) [N·m] at the loads of :func:`skf_loads`
+    (open bearings: no seal moment).
+
+    Parameters
+    ----------
+    pair : BearingPair
+        The pair.
+    loads : tuple
+        :func:`skf_loads` [N].
+
+    Returns
+    -------
+    float or ndarray
+        [N·m].
+
+    Examples
+    --------
+    >>> from servofmu.physics.bearing import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
+    >>> round(float(skf_starting(pair, skf_loads(40.0, 40.0, 0.0))) * 1e3, 4)  # N·mm
+    0.8055
+    """
+    fm, b = pair.friction, pair.bearing
+    fa_a, fa_b, fr = loads
+    start = _pair_starting(
+        fm.skf, b.bore / MM, b.outer_diameter / MM, fa_a, fa_b, fr, fm.skf_boundary_friction
+    )
+    return start * NMM
+
+
+def running_terms(pair, kinematic_viscosity, pitch_diameter, rolling, speed):
+    """The friction model's speed terms (:mod:`.friction.registry`): (φish·φrs·ΣMrr, ΣMsl)
+    [N·m] of :func:`skf_torques` at the bearings' loads ``rolling`` (:func:`skf_loads`), ν
+    [m²/s] and ω [rad/s]; the pitch diameter is not used (SKF's dm is nominal).
+
+    Returns
+    -------
+    tuple
+        (rolling, sliding) [N·m].
+    """
+    return skf_torques(pair, rolling, kinematic_viscosity, speed)
+
+
+def starting_torque(pair, rolling):
+    """The friction model's torque at rest (:mod:`.friction.registry`): :func:`skf_starting`
+    at the bearings' loads ``rolling`` [N] → [N·m]."""
+    return skf_starting(pair, rolling)
+
+
+def check_numbers(friction) -> None:
+    """Raise ValueError when the pair's friction numbers lack the SKF series constants."""
+    if friction.skf is None:
+        raise ValueError(
+            f"friction_model = {friction.model!r} needs the SKF series constants (skf)"
+        )

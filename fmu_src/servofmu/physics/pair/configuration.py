@@ -14,7 +14,7 @@ from ...parameters import catalog
 from .._checks import check_choice, check_positive, check_temperature
 from ..contact.geometry import BallBearing, RaceGeometry
 from ..friction.grease import lubricant_term
-from ..friction.models import DEFAULT_FRICTION, FrictionModel, preset
+from ..friction.models import DEFAULT_FRICTION, FRICTION_MODELS, FrictionModel, preset
 from ..friction.terms import FrictionCoefficients
 from ..lubrication.viscosity import ViscosityRange
 from ..thermal.fits import mounted_geometry
@@ -104,7 +104,7 @@ class BearingPair:
         cls,
         mounting: str,
         lubricant: str | None = None,
-        friction_model: str = "yu2017",
+        friction_model: str = FRICTION_MODELS[0],
         **overrides,
     ):
         """Pair built from catalogue keys: ``mounting`` (``data/mountings.toml``; it names its

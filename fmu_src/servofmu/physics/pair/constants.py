@@ -201,6 +201,7 @@ class PairConstants:
     )
 
     def __init__(self, pair):
+        from ..friction import registry
         from ..materials import reduced_compliance
         from . import state as pair_state  # the pair-level functions (imported when first used)
         from .configuration import closure_coefficients, pair_rows
@@ -256,15 +257,16 @@ class PairConstants:
         self.sliding = bool(pair.sliding)
         self.pressure_limit = float(pair.pressure_limit)
         fm = pair.friction
-        yu = fm.model == "yu2017"
+        model = registry.get(fm.model)
+        yu = model.palmgren  # the speed terms computed here (Palmgren's), else in Python
         self.fast = yu and fm.grease is None
-        self.needs_loads = fm.model == "skf2004"
-        self.needs_contacts = fm.model == "ehl_per_contact"
+        self.needs_loads = model.data == "loads"
+        self.needs_contacts = model.data == "contacts"
         self.density = float(fm.lubricant_density)
         co = pair.coefficients
         self.hysteresis_loss, self.mu = co.hysteresis_loss, co.sliding_friction
         self.static_ratio = co.static_friction_ratio
-        # Palmgren's s0 running (a lubricant) and at rest (the yu2017 model only)
+        # Palmgren's s0 running (a lubricant) and at rest (a Palmgren model only)
         self.s0 = co.palmgren_s0 if visc is not None else 0.0
         self.rest_s0 = self.s0 if yu else 0.0
         self.w_reg = float(pair.regularisation_speed)

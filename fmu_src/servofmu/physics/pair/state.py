@@ -28,15 +28,10 @@ from .. import compiled
 from .._checks import check_finite
 from ..contact.equilibrium import _axial_state, _ring_stiffness
 from ..contact.geometry import RaceGeometry
+from ..friction import registry
 from ..friction.ehl_per_contact import contact_rolling_terms
-from ..friction.models import (
-    ehl_torque,
-    grease_rest_and_start,
-    grease_running,
-    skf_loads,
-    skf_starting,
-    skf_torques,
-)
+from ..friction.models import grease_rest_and_start, grease_running
+from ..friction.skf2004 import skf_loads
 from ..friction.terms import BallSetTorques, ball_set_torques
 from ..kernels.friction import coulomb_and_excess, palmgren_torque, regularised_torque
 from ..thermal.fits import mounted_geometry
@@ -308,15 +303,14 @@ def _ehl_terms(pair: BearingPair, thermal: ThermalState, balls) -> tuple:
 
 def rolling_data(pair: BearingPair, thermal: ThermalState, force_a, force_b, radial_load, balls):
     """What the speed terms of the pair's friction model need besides viscosity and pitch
-    diameter: None for ``yu2017``; (Fa,A, Fa,B, Fr) [N] for ``skf2004``
-    (:func:`.friction.models.skf_loads`); the contacts' terms for ``ehl_per_contact``
+    diameter (its :attr:`~.friction.registry.Entry.data`): None; the bearings' loads
+    (Fa,A, Fa,B, Fr) [N] (:func:`.friction.skf2004.skf_loads`); or the contacts' terms
     (:func:`_ehl_terms` of ``balls``).
 
     Returns
     -------
     None or tuple
-        None (``yu2017``), (Fa,A, Fa,B, Fr) [N] (``skf2004``) or the contacts' terms
-        (``ehl_per_contact``).
+        None, (Fa,A, Fa,B, Fr) [N] or the contacts' terms.
 
     Examples
     --------
@@ -325,10 +319,10 @@ def rolling_data(pair: BearingPair, thermal: ThermalState, force_a, force_b, rad
     >>> rolling_data(pair, th, 40.0, 40.0, 0.0, []) is None  # Yu's model needs nothing
     True
     """
-    model = pair.friction.model
-    if model == "skf2004":
+    data = registry.get(pair.friction.model).data
+    if data == "loads":
         return skf_loads(force_a, force_b, radial_load)
-    if model == "ehl_per_contact":
+    if data == "contacts":
         return _ehl_terms(pair, thermal, balls)
     return None
 
@@ -578,16 +572,10 @@ def _speed_terms(pair: BearingPair, viscosity, pitch_diameter, coulomb, excess, 
 
 
 def _model_terms(pair: BearingPair, viscosity, pitch_diameter, rolling, w):
-    """(viscous torque, SKF's sliding torque or None) [N·m] of the pair's friction model at
-    speed w [rad/s]: Palmgren's (yu2017, Yu 2017 eq 8), SKF's φish·φrs·Mrr and Msl (skf2004) or
-    the contacts' EHL rolling torque (ehl_per_contact)."""
-    model = pair.friction.model
-    if model == "yu2017":
-        s0 = pair.coefficients.palmgren_s0 if pair.lubricant is not None else 0.0
-        return 2.0 * palmgren_torque(viscosity, w, pitch_diameter, s0), None
-    if model == "skf2004":
-        return skf_torques(pair, rolling, viscosity, w)
-    return ehl_torque(rolling, w), None
+    """(viscous torque, the model's own sliding torque or None) [N·m] of the pair's friction
+    model at speed w [rad/s] (its ``running_terms``, :mod:`.friction.registry`)."""
+    model = registry.get(pair.friction.model).implementation()
+    return model.running_terms(pair, viscosity, pitch_diameter, rolling, w)
 
 
 def _coulomb_excess(pair: BearingPair, hysteresis, spin, sliding):
@@ -598,8 +586,8 @@ def _coulomb_excess(pair: BearingPair, hysteresis, spin, sliding):
 
 def contact_terms(pair: BearingPair, hysteresis, spin, sliding, inner, outer):
     """The per-contact torques (hysteresis, spin, sliding, inner ring, outer ring) [N·m] as the
-    friction model counts them: Yu's and Ning's terms, or zeros under ``skf2004`` (the SKF
-    model's moments replace them).
+    friction model counts them: Yu's and Ning's terms, or zeros under a model whose own
+    moments replace them (:attr:`~.friction.registry.Entry.contact_terms` False: SKF 2004).
 
     Parameters
     ----------
@@ -619,7 +607,7 @@ def contact_terms(pair: BearingPair, hysteresis, spin, sliding, inner, outer):
     >>> contact_terms(pair, 1e-4, 2e-4, 0.0, 1e-4, 2e-4)  # yu2017: as they are
     (0.0001, 0.0002, 0.0, 0.0001, 0.0002)
     """
-    if pair.friction.model == "skf2004":
+    if not registry.get(pair.friction.model).contact_terms:
         zero = 0.0 * hysteresis
         return zero, zero, zero, zero, zero
     return hysteresis, spin, sliding, inner, outer
@@ -664,10 +652,11 @@ def state_torques(pair: BearingPair, hysteresis, spin, sliding, viscosity, pitch
     >>> round(c * 1e3, 6), round(brk * 1e3, 6)  # N·mm: + excess + Palmgren's floor at rest
     (0.3, 0.559316)
     """
-    skf = pair.friction.model == "skf2004"
-    if skf:
+    entry = registry.get(pair.friction.model)
+    own = not entry.contact_terms  # the model's own starting torque, sliding (SKF's Msl)
+    if own:
         coulomb = excess = 0.0
-        rest = skf_starting(pair, rolling)
+        rest = entry.implementation().starting_torque(pair, rolling)
     else:
         coulomb, excess = _coulomb_excess(pair, hysteresis, spin, sliding)
         if rest is None:
@@ -678,7 +667,7 @@ def state_torques(pair: BearingPair, hysteresis, spin, sliding, viscosity, pitch
         excess = excess + (g_start - g_rest)
         rest = rest + g_rest
     elif g is not None and g.has_start:  # ks on the friction model's own viscous torque
-        v_rest = 0.0 * rest if skf else rest  # SKF's starting torque is sliding, not viscous
+        v_rest = 0.0 * rest if own else rest  # a model's own starting torque is not viscous
         v_ref = _model_terms(pair, viscosity, pitch_diameter, rolling, g.reference_speed)[0]
         start = g.starting_ratio * v_ref
         maximum = max if type(start) is float and type(v_rest) is float else np.maximum
@@ -710,8 +699,8 @@ def rest_torque(pair: BearingPair, viscosity, pitch_diameter):
     >>> round(float(rest_torque(pair, 100e-6, 21.5e-3)) * 1e3, 6)  # N·mm, two bearings
     0.219316
     """
-    yu = pair.lubricant is not None and pair.friction.model == "yu2017"
-    s0 = pair.coefficients.palmgren_s0 if yu else 0.0
+    palmgren = pair.lubricant is not None and registry.get(pair.friction.model).palmgren
+    s0 = pair.coefficients.palmgren_s0 if palmgren else 0.0
     return 2.0 * palmgren_torque(viscosity, 0.0, pitch_diameter, s0)
 
 
