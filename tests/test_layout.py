@@ -1,4 +1,4 @@
-"""The layers of :mod:`servofmu.physics` (``docs/development.md``, "Layout"), read from the
+"""The layers of :mod:`servofmu.physics` (``docs/development.md``, "Layers"), read from the
 source: the import graph of ``physics`` and ``parameters`` (top-level and in-function imports,
 and the compiled modules chosen by name) has no cycle, the leaf layer ``kernels`` imports
 nothing else from ``physics``, and no module is over 1,500 lines."""

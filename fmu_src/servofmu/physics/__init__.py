@@ -1,5 +1,5 @@
 """Pure physics models (numpy in, numpy out, SI units), each citing its paper and equation,
-laid out in layers (``docs/development.md``, "Layout"):
+laid out in layers (``docs/development.md``, "Layers"):
 
 - :mod:`.kernels`: the equations, float-or-array, shared by the exact vectorised path and the
   per-step path; they import nothing else from :mod:`servofmu.physics`;
