@@ -491,6 +491,7 @@ def test_example_runs_with_plain_fmpy(fmus, tmp_path):
     )
     assert proc.returncode == 0, proc.stderr
     assert png.is_file() and "running [N·mm]" in proc.stdout
+    assert "Warning" not in proc.stdout + proc.stderr  # fmpy's "missing input for variable"
     assert "servofmu" not in script.read_text().split('"""')[2]  # plain fmpy, no servofmu import
 
 
