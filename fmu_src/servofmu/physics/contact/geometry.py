@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._checks import check_finite, check_positive, check_range
+from ..kernels import contact as kernels
 from ..kernels.units import MM, UM
 from ..materials import Material, reduced_compliance
 
@@ -95,7 +96,7 @@ def diametral_clearance(inner_groove_diameter, outer_groove_diameter, ball_diame
     d_i = check_positive("inner_groove_diameter", inner_groove_diameter, "m")
     d_o = check_positive("outer_groove_diameter", outer_groove_diameter, "m")
     dw = check_positive("ball_diameter", ball_diameter, "m")
-    return d_o - d_i - 2.0 * dw
+    return kernels.diametral_clearance(d_i, d_o, dw)
 
 
 def free_contact_angle(clearance, curvature_distance):
@@ -138,8 +139,7 @@ def free_contact_angle(clearance, curvature_distance):
             f"clearance = {clearance!r} m must be finite and <= 2·curvature_distance = "
             f"{2.0 * np.asarray(a)!r} m"
         )
-    c = 1.0 - np.maximum(pd, 0.0) / (2.0 * a)
-    out = np.arccos(np.clip(c, -1.0, 1.0))
+    out = np.asarray(kernels.free_contact_angle(pd, a))
     return out if out.ndim else float(out)
 
 
@@ -168,8 +168,8 @@ def first_contact_offset(clearance, curvature_distance):
     0.0
     """
     a = np.asarray(check_positive("curvature_distance", curvature_distance, "m"))
-    pd = np.clip(np.asarray(check_finite("clearance", clearance, "m"), dtype=float), 0.0, 2.0 * a)
-    out = np.sqrt(np.maximum(a**2 - (a - 0.5 * pd) ** 2, 0.0))
+    pd = np.asarray(check_finite("clearance", clearance, "m"), dtype=float)
+    out = np.asarray(kernels.first_contact_offset(pd, a))
     return out if out.ndim else float(out)
 
 

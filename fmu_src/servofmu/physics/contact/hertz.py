@@ -19,6 +19,7 @@ from scipy.interpolate import PchipInterpolator
 from scipy.special import ellipe, ellipk
 
 from .._checks import check_choice, check_nonnegative, check_positive, check_range
+from ..kernels import contact as kernels
 
 RACES = ("inner", "outer")
 
@@ -376,4 +377,4 @@ def hertz_load(stiffness, deflection):
     """
     check_nonnegative("stiffness", stiffness, "N/m^1.5")
     check_range("deflection", deflection, unit="m")
-    return stiffness * np.maximum(deflection, 0.0) ** 1.5
+    return kernels.hertz_load(stiffness, deflection)

@@ -29,7 +29,7 @@ import numpy as np
 
 from .._checks import check_finite, check_nonnegative, check_positive, check_temperature
 from ..contact.geometry import BallBearing, RaceGeometry
-from ..kernels.lame import lame_ratio
+from ..kernels import lame
 from ..materials import Material, reduced_compliance
 
 
@@ -115,9 +115,9 @@ def fit_pressure(
 
 
 def _fit_pressure(delta, d, d_b, d_o, m_in: Material, m_out: Material):
-    k_in = d / m_in.youngs_modulus * (lame_ratio(d_b, d) - m_in.poisson_ratio)
-    k_out = d / m_out.youngs_modulus * (lame_ratio(d, d_o) + m_out.poisson_ratio)
-    return np.maximum(delta, 0.0) / (k_in + k_out)
+    inner = lame.shaft_compliance(d_b, d, m_in.youngs_modulus, m_in.poisson_ratio)
+    outer = lame.hub_compliance(d, d_o, m_out.youngs_modulus, m_out.poisson_ratio)
+    return lame.fit_pressure(delta, d, inner, outer)
 
 
 def _check_annulus(bore, outer_diameter):
@@ -157,13 +157,7 @@ def bore_change_under_external_pressure(pressure, outer_diameter, bore, material
     """
     p = check_nonnegative("pressure", pressure, "Pa")
     _check_annulus(bore, outer_diameter)
-    return (
-        -2.0
-        * p
-        * outer_diameter**2
-        * bore
-        / (material.youngs_modulus * (outer_diameter**2 - bore**2))
-    )
+    return lame.bore_change(p, outer_diameter, bore, material.youngs_modulus)
 
 
 def outside_change_under_internal_pressure(pressure, bore, outer_diameter, material: Material):
@@ -195,13 +189,7 @@ def outside_change_under_internal_pressure(pressure, bore, outer_diameter, mater
     """
     p = check_nonnegative("pressure", pressure, "Pa")
     _check_annulus(bore, outer_diameter)
-    return (
-        2.0
-        * p
-        * bore**2
-        * outer_diameter
-        / (material.youngs_modulus * (outer_diameter**2 - bore**2))
-    )
+    return lame.outside_change(p, bore, outer_diameter, material.youngs_modulus)
 
 
 @dataclass(frozen=True)
@@ -279,41 +267,43 @@ def mounted_geometry(
     temps = part_temperatures(temperature)
     t0 = check_temperature("assembly_temperature", assembly_temperature)
     ring, ball = bearing.ring_material, bearing.ball_material
-    hm, sm = fit.housing_material, fit.shaft_material
-    grow_o = 1.0 + ring.expansion * (np.asarray(temps.outer_ring) - t0)
-    grow_i = 1.0 + ring.expansion * (np.asarray(temps.inner_ring) - t0)
-    grow_b = 1.0 + ball.expansion * (np.asarray(temps.balls) - t0)
-    grow_h = 1.0 + hm.expansion * (np.asarray(temps.housing) - t0)
-    grow_s = 1.0 + sm.expansion * (np.asarray(temps.shaft) - t0)
-    d_ring_o = bearing.outer_diameter * grow_o
-    d_groove_o = bearing.outer_groove_diameter * grow_o
-    d_ring_i = bearing.bore * grow_i
-    d_groove_i = bearing.inner_groove_diameter * grow_i
-
-    bore_h = (bearing.outer_diameter - fit.outer_interference) * grow_h
-    d_h = fit.housing_outer_diameter * grow_h
-    d_shaft = (bearing.bore + fit.inner_interference) * grow_s
-    d_shaft_bore = fit.shaft_bore * grow_s
-    delta_o = d_ring_o - bore_h
-    delta_i = d_shaft - d_ring_i
-    if coupled:
-        p_o = _fit_pressure(delta_o, d_ring_o, d_groove_o, d_h, ring, hm)
-        p_i = _fit_pressure(delta_i, d_ring_i, d_shaft_bore, d_groove_i, sm, ring)
-        d_groove_o = d_groove_o + bore_change_under_external_pressure(
-            p_o, d_ring_o, d_groove_o, ring
-        )
-        d_groove_i = d_groove_i + outside_change_under_internal_pressure(
-            p_i, d_ring_i, d_groove_i, ring
-        )
-    else:
-        p_o = p_i = np.zeros_like(delta_o)
+    d_i, d_o, dw, r_i, r_o, p_o, p_i, delta_o, delta_i = lame.mounted_races(
+        *(np.asarray(t) for t in (temps.housing, temps.shaft, temps.outer_ring, temps.inner_ring)),
+        t0,
+        _elastic(ring),
+        ball.expansion,
+        _elastic(fit.housing_material),
+        _elastic(fit.shaft_material),
+        (
+            bearing.outer_diameter,
+            bearing.bore,
+            bearing.outer_groove_diameter,
+            bearing.inner_groove_diameter,
+            bearing.ball_diameter,
+            bearing.inner_curvature,
+            bearing.outer_curvature,
+        ),
+        (
+            bearing.outer_diameter - fit.outer_interference,
+            bearing.bore + fit.inner_interference,
+            fit.housing_outer_diameter,
+            fit.shaft_bore,
+        ),
+        coupled,
+    )
     race = RaceGeometry(
-        ball_diameter=bearing.ball_diameter * grow_b,
-        inner_race_diameter=d_groove_i,
-        outer_race_diameter=d_groove_o,
-        inner_groove_radius=bearing.inner_curvature * bearing.ball_diameter * grow_i,
-        outer_groove_radius=bearing.outer_curvature * bearing.ball_diameter * grow_o,
+        ball_diameter=dw,
+        inner_race_diameter=d_i,
+        outer_race_diameter=d_o,
+        inner_groove_radius=r_i,
+        outer_groove_radius=r_o,
         n_balls=bearing.n_balls,
         compliance=reduced_compliance(ring, ball),
     )
     return MountedGeometry(race, p_o, p_i, delta_o, delta_i)
+
+
+def _elastic(material: Material) -> tuple[float, float, float]:
+    """(α [1/K], E [Pa], ν [-]) of a material, as :func:`~.kernels.lame.mounted_races` takes
+    it."""
+    return material.expansion, material.youngs_modulus, material.poisson_ratio
