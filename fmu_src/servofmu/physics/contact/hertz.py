@@ -279,11 +279,7 @@ def _constants(rho, k, eta) -> ContactConstants:
     m = 1.0 - 1.0 / k**2
     k_int = ellipk(m)
     e_int = ellipe(m)
-    base = 3.0 * eta / (np.pi * rho)
-    a_coef = np.cbrt(base * k**2 * e_int)
-    b_coef = np.cbrt(base * e_int / k)
-    delta_star = (2.0 * k_int / np.pi) * np.cbrt(np.pi / (2.0 * k**2 * e_int))
-    c_delta = 0.5 * delta_star * (1.5 * eta / rho) ** (2.0 / 3.0) * rho
+    a_coef, b_coef, c_delta = kernels.hertz_coefficients(rho, k, k_int, e_int, eta)
     return ContactConstants(
         curvature_sum=rho,
         ellipticity=k,
