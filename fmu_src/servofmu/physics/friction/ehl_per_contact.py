@@ -395,5 +395,10 @@ def running_terms(pair, kinematic_viscosity, pitch_diameter, rolling, speed):
     -------
     tuple
         (rolling torque [N·m], None: no sliding torque of its own).
+
+    Examples
+    --------
+    >>> running_terms(None, 1e-4, 0.02, ((1.0,), (1.0,), (1.0,), (1.0,), (0.0,)), 5.0)
+    (0.0, None)
     """
     return ehl_torque(rolling, speed), None

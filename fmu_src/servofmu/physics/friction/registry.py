@@ -76,6 +76,14 @@ def register(entry: Entry) -> Entry:
     Returns
     -------
     Entry
+        ``entry``.
+
+    Examples
+    --------
+    >>> register(Entry("skf2004", ".skf2004", "SKF 2004, again"))
+    Traceback (most recent call last):
+    ...
+    ValueError: friction model 'skf2004' is registered already
     """
     if entry.name in _MODELS:
         raise ValueError(f"friction model {entry.name!r} is registered already")
@@ -84,17 +92,49 @@ def register(entry: Entry) -> Entry:
 
 
 def unregister(name: str) -> None:
-    """Remove the model ``name`` (a model a test or a user added)."""
+    """Remove the model ``name`` (a model a test or a user added).
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> _ = register(Entry("constant", "toy_friction", "a constant torque"))
+    >>> unregister("constant")
+    >>> "constant" in names()
+    False
+    """
     del _MODELS[name]
 
 
 def names() -> tuple[str, ...]:
-    """The models' names, in order (the first is the default)."""
+    """The models' names, in order (the first is the default).
+
+    Returns
+    -------
+    tuple of str
+
+    Examples
+    --------
+    >>> names()[0]
+    'yu2017'
+    """
     return tuple(_MODELS)
 
 
 def entries() -> tuple[Entry, ...]:
-    """The models, in order."""
+    """The models, in order.
+
+    Returns
+    -------
+    tuple of Entry
+
+    Examples
+    --------
+    >>> [e.data for e in entries()]
+    ['', 'loads', 'contacts']
+    """
     return tuple(_MODELS.values())
 
 
@@ -104,6 +144,15 @@ def get(name: str) -> Entry:
     Returns
     -------
     Entry
+
+    Examples
+    --------
+    >>> get("ehl_per_contact").implementation().__name__
+    'servofmu.physics.friction.ehl_per_contact'
+    >>> get("yu2018")
+    Traceback (most recent call last):
+    ...
+    ValueError: friction_model = 'yu2018' is not one of ('yu2017', 'skf2004', 'ehl_per_contact')
     """
     try:
         return _MODELS[name]

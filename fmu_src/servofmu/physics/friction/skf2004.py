@@ -930,18 +930,53 @@ def running_terms(pair, kinematic_viscosity, pitch_diameter, rolling, speed):
     -------
     tuple
         (rolling, sliding) [N·m].
+
+    Examples
+    --------
+    >>> from servofmu.physics.bearing import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
+    >>> rr, sl = running_terms(pair, 100e-6, 21.5e-3, skf_loads(40.0, 40.0, 0.0), 10.0)
+    >>> round(float(rr) * 1e3, 4), round(float(sl) * 1e3, 4)  # N·mm, as skf_torques
+    (1.0816, 0.6943)
     """
     return skf_torques(pair, rolling, kinematic_viscosity, speed)
 
 
 def starting_torque(pair, rolling):
     """The friction model's torque at rest (:mod:`.friction.registry`): :func:`skf_starting`
-    at the bearings' loads ``rolling`` [N] → [N·m]."""
+    at the bearings' loads ``rolling`` [N].
+
+    Returns
+    -------
+    float or ndarray
+        [N·m].
+
+    Examples
+    --------
+    >>> from servofmu.physics.bearing import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
+    >>> round(float(starting_torque(pair, skf_loads(40.0, 40.0, 0.0))) * 1e3, 4)  # N·mm
+    0.8055
+    """
     return skf_starting(pair, rolling)
 
 
 def check_numbers(friction) -> None:
-    """Raise ValueError when the pair's friction numbers lack the SKF series constants."""
+    """Raise ValueError when the pair's friction numbers (a
+    :class:`~.friction.models.FrictionModel`) lack the SKF series constants.
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> from servofmu.physics.friction.models import FrictionModel
+    >>> FrictionModel(model="skf2004")
+    Traceback (most recent call last):
+    ...
+    ValueError: friction_model = 'skf2004' needs the SKF series constants (skf)
+    """
     if friction.skf is None:
         raise ValueError(
             f"friction_model = {friction.model!r} needs the SKF series constants (skf)"
