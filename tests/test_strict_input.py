@@ -137,7 +137,7 @@ def test_every_problem_of_a_file_is_listed(tmp_path):
 @pytest.mark.parametrize("table", sorted(schema.ENTRY_SCHEMAS))
 def test_the_packages_tables_fit_their_schemas(table):
     """A key the schema does not know fails here: add it to build/schema.py with its unit."""
-    with resources.files("servofmu.physics").joinpath(f"data/{table}.toml").open("rb") as fh:
+    with resources.files("servofmu.parameters").joinpath(f"data/{table}.toml").open("rb") as fh:
         data = tomllib.load(fh)
     problems = []
     for key, entry in data.items():
@@ -146,7 +146,7 @@ def test_the_packages_tables_fit_their_schemas(table):
 
 
 def test_the_schema_finds_a_misspelt_key_in_the_packages_table():
-    with resources.files("servofmu.physics").joinpath("data/mountings.toml").open("rb") as fh:
+    with resources.files("servofmu.parameters").joinpath("data/mountings.toml").open("rb") as fh:
         entry = dict(tomllib.load(fh)["ning_space_shaft"])
     entry["arangement"] = entry.pop("arrangement")
     assert schema.entry_problems("mountings", "ning_space_shaft", entry, "x:")
