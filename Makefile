@@ -7,9 +7,12 @@ OUT    ?= out
 
 .PHONY: run test test-long bench lint docs clean system-deps dist
 
-# setup.py compiles the FMU export library (build/export/) and the pair kernels
-# (physics/pair_kernels.py) at install: an edit there reinstalls
-$(STAMP): pyproject.toml setup.py $(wildcard build/export/src/*/*) fmu_src/servofmu/physics/pair_kernels.py
+# setup.py compiles the FMU export library (build/export/) and the modules of
+# physics/compiled.py's MODULES (each X.py with its X.pxd) at install: an edit there reinstalls
+PXD      = $(shell find fmu_src/servofmu/physics -name '*.pxd')
+COMPILED = fmu_src/servofmu/physics/compiled.py fmu_src/servofmu/physics/pair/continuation.py \
+           $(PXD) $(PXD:.pxd=.py)
+$(STAMP): pyproject.toml setup.py $(wildcard build/export/src/*/*) $(COMPILED)
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[test]'

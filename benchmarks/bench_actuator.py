@@ -15,7 +15,7 @@ import time
 import numpy as np
 from results import save  # benchmarks/ is the script's folder
 
-from servofmu.physics.actuator import Actuator, reduction_ratio, stiffness_breakdown
+from servofmu.physics.drives.actuator import Actuator, reduction_ratio, stiffness_breakdown
 
 
 def _time(fn, repeat: int = 3) -> float:

@@ -32,13 +32,13 @@ import numpy as np
 from results import save  # benchmarks/ is the script's folder
 from trajectories import BEARING_LOOPS as LOOPS  # benchmarks/ is the script's folder
 
+from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 from servofmu.physics.bearing import (
     BearingModel,
     bearing_outputs,
     load_state,
     thermal_state,
 )
-from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
 
 
 def per_step(pair, values, steps: int, repeat: int) -> tuple[float, int]:

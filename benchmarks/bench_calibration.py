@@ -29,8 +29,8 @@ TEMPS_C = (-40.0, -20.0, 0.0, 20.0, 40.0, 60.0)
 def write_file(path: Path, size_mb: float, seed: int = 1) -> int:
     """Write the synthetic CSV of about ``size_mb`` MB; returns the number of rows."""
     from servofmu.calibration import running_torque
-    from servofmu.physics.bearing_parameters import default_parameters
-    from servofmu.physics.units import DEG, NMM, ZERO_CELSIUS
+    from servofmu.parameters.bearing import default_parameters
+    from servofmu.physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 
     truth = dict(default_parameters("yu2017_gimbal_printed"), palmgren_s0=0.8, sliding_friction=0.1)
     temps = np.array(TEMPS_C) + ZERO_CELSIUS
@@ -59,8 +59,8 @@ def child(path: str) -> None:
     import resource
 
     from servofmu.calibration import calibrate, read_measurements
-    from servofmu.physics.bearing_parameters import default_parameters
-    from servofmu.physics.units import DEG
+    from servofmu.parameters.bearing import default_parameters
+    from servofmu.physics.kernels.units import DEG
 
     base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
     t0 = time.perf_counter()

@@ -9,7 +9,7 @@ loop's input history where the last one stopped) and the ratio to the empty FMU,
 aims of the speed table (:data:`AIMS`).
 
 The FMUs are built once; each implementation runs in its own process (a process imports
-servofmu once): the compiled kernels (``servofmu.physics._pair_kernels``, when built) and the
+servofmu once): the compiled modules (``servofmu.physics.compiled``, when built) and the
 Python ones (``SERVOFMU_PURE_PYTHON=1``), each with its own empty FMU, so that every ratio is
 measured within one process. ``--python-crossings`` adds a third: the compiled kernels with
 every FMI call entering Python (``SERVOFMU_SHARED_VALUES=0``), as without the values the FMUs
@@ -41,8 +41,8 @@ from trajectories import BEARING_LOOPS  # benchmarks/ is the script's folder
 
 from servofmu.build.fmu import FMUS, build_all
 from servofmu.fmus.shared_values import ENVIRONMENT as SHARED_VALUES
-from servofmu.physics.bearing_parameters import PARAMETERS
-from servofmu.physics.continuation import PURE_PYTHON
+from servofmu.parameters.bearing import PARAMETERS
+from servofmu.physics.compiled import PURE_PYTHON
 
 EMPTY = """
 from pythonfmu import Fmi2Causality, Fmi2Slave, Real
@@ -209,7 +209,7 @@ def measure(paths: dict, steps: int, repeat: int, clock, models: bool) -> dict:
 
 def _worker(args) -> None:
     """Measure the loops in this process and print {label: {"us", "ratio"}} as JSON."""
-    from servofmu.physics import continuation
+    from servofmu.physics import compiled as continuation
 
     clock = time.process_time if args.clock == "cpu" else time.perf_counter
     paths = {p.stem: p for p in Path(args.fmus).glob("*.fmu")}

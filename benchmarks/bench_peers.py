@@ -199,7 +199,7 @@ def measure(engine: str, ssp: Path, stop: float) -> dict:
 
 
 def compare(ssp: Path, stop: float, repeat: int) -> dict:
-    from servofmu.physics.units import DEG
+    from servofmu.physics.kernels.units import DEG
 
     rounds: dict[str, list[dict]] = {e: [] for e in ENGINES}
     for _ in range(repeat):

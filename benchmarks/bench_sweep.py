@@ -28,7 +28,7 @@ from results import save  # benchmarks/ is the script's folder
 from servofmu.harness.scenarios.common import system_path
 from servofmu.harness.sweep import ModelTask, SystemTask, grid_points, local_cluster, run_sweep
 from servofmu.harness.tolerance import tolerance_points
-from servofmu.physics.bearing_parameters import default_parameters
+from servofmu.parameters.bearing import default_parameters
 
 
 def workloads(samples: int):

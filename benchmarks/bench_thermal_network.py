@@ -16,7 +16,7 @@ import time
 import numpy as np
 from results import save  # benchmarks/ is the script's folder
 
-from servofmu.physics import thermal_network as tn
+from servofmu.physics.thermal import network as tn
 
 COLD, HOT, POWER = 213.15, 353.15, 0.05  # K, K, W
 

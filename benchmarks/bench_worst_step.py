@@ -30,7 +30,7 @@ from fmpy.fmi2 import FMU2Slave
 from results import save  # benchmarks/ is the script's folder
 
 from servofmu.build.fmu import build_all
-from servofmu.physics.bearing_parameters import PARAMETERS, default_parameters
+from servofmu.parameters.bearing import PARAMETERS, default_parameters
 
 LIMIT = 10e-3  # s: the aim for one step
 

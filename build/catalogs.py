@@ -1,5 +1,5 @@
 """User catalogues: a user's bearings, lubricants, materials and mountings, in the format of the
-package's ``physics/data/*.toml`` (every number ``{value, unit, kind, ref}``), merged into the
+package's ``parameters/data/*.toml`` (every number ``{value, unit, kind, ref}``), merged into the
 catalogue for a build (``servofmu build --catalog my.toml``) or a listing (``servofmu
 catalog``). The format is documented with an example in ``examples/my_gimbal_catalog.toml``.
 
@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from servofmu.files import read_input
-from servofmu.physics import catalog
+from servofmu.parameters import catalog
 from servofmu.physics._checks import suggest
 
 DEFAULT_KEYS = ("mounting", "lubricant", "support_mounting")
@@ -185,7 +185,7 @@ def load(paths, mounting=None, lubricant=None, support_mounting=None) -> Default
 
     >>> import tempfile
     >>> from pathlib import Path
-    >>> from servofmu.physics import catalog
+    >>> from servofmu.parameters import catalog
     >>> q = '{{ value = {}, unit = "{}", kind = "handbook", ref = "ASM" }}'.format
     >>> with tempfile.TemporaryDirectory() as tmp:
     ...     path = Path(tmp) / "mine.toml"
@@ -214,7 +214,7 @@ def load(paths, mounting=None, lubricant=None, support_mounting=None) -> Default
 
 
 def _merge(paths, mounting, lubricant, support_mounting) -> Defaults:
-    from servofmu.physics.bearing_parameters import default_parameters
+    from servofmu.parameters.bearing import default_parameters
 
     chosen = {"mounting": mounting, "lubricant": lubricant, "support_mounting": support_mounting}
     where = dict.fromkeys(chosen, "command line")
@@ -259,7 +259,7 @@ def _merge(paths, mounting, lubricant, support_mounting) -> Defaults:
 
 
 def _check_preset(path, mounting, default_parameters, lubricant=None) -> None:
-    from servofmu.physics.bearing_parameters import DEFAULT_MOUNTING, pair_from_parameters
+    from servofmu.parameters.bearing import DEFAULT_MOUNTING, pair_from_parameters
 
     try:
         pair_from_parameters(default_parameters(mounting or DEFAULT_MOUNTING, lubricant=lubricant))
@@ -276,7 +276,7 @@ def unload() -> None:
 
     Examples
     --------
-    >>> from servofmu.physics import catalog
+    >>> from servofmu.parameters import catalog
     >>> q = {"value": 70, "unit": "GPa", "kind": "assumed", "ref": "demo"}
     >>> entry = {"name": "demo", "youngs_modulus": q}
     >>> catalog.add_entries({"materials": {"demo_alu": entry}}, "demo.toml")
@@ -310,7 +310,7 @@ def listing() -> str:
     >>> print(next(line for line in lines if line.split()[0] == "71803"))
       71803      17 × 26 × 5, 15 × 2.381, 21.5, 15, 0.56/0.54  [data/bearings.toml]
     """
-    from servofmu.physics.bearing_parameters import default_parameters
+    from servofmu.parameters.bearing import default_parameters
 
     lines = ["bearings (d × D × B [mm], Z × Dw [mm], dm [mm], α0 [°], f_i/f_o)"]
     for key in catalog.keys("bearings"):
@@ -367,11 +367,11 @@ def preset_table(values, sources) -> str:
     ----------
     values : dict
         ``{parameter: value}`` in SI units (choices as item names), e.g.
-        :func:`~servofmu.physics.bearing_parameters.default_parameters`; every parameter of
+        :func:`~servofmu.parameters.bearing.default_parameters`; every parameter of
         ``PARAMETERS`` must be there.
     sources : dict
         ``{parameter: provenance}``, e.g.
-        :func:`~servofmu.physics.bearing_parameters.default_sources`.
+        :func:`~servofmu.parameters.bearing.default_sources`.
 
     Returns
     -------
@@ -382,13 +382,13 @@ def preset_table(values, sources) -> str:
     --------
     The first lines of the default preset (Yu 2017's gimbal, a 71803: d = 17 mm, D = 26 mm):
 
-    >>> from servofmu.physics.bearing_parameters import default_parameters, default_sources
+    >>> from servofmu.parameters.bearing import default_parameters, default_sources
     >>> text = preset_table(default_parameters(), default_sources())
     >>> print("\\n".join(text.splitlines()[:2]))
       bore                              0.017 m     paper: Yu 2017 §2
       outer_diameter                    0.026 m     paper: Yu 2017 §2
     """
-    from servofmu.physics.bearing_parameters import PARAMETERS
+    from servofmu.parameters.bearing import PARAMETERS
 
     rows = []
     for spec in PARAMETERS:

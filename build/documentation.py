@@ -22,6 +22,7 @@ from pathlib import Path
 import numpy as np
 
 import servofmu
+from servofmu.physics.friction import registry
 
 IMAGE = "characteristic.png"
 
@@ -43,7 +44,7 @@ def slave_class(name: str):
     --------
     >>> cls = slave_class("DCMotor")
     >>> cls.__name__, cls.__module__, cls.PHYSICS
-    ('DCMotor', 'servofmu.fmus.DCMotor', ('servofmu.physics.motor',))
+    ('DCMotor', 'servofmu.fmus.DCMotor', ('servofmu.physics.drives.motor',))
     """
     return getattr(importlib.import_module(f"servofmu.fmus.{name}"), name)
 
@@ -103,8 +104,12 @@ def _bearing_curve() -> Curve:
     friction model), and the running torque of the other friction models."""
     celsius = np.arange(-60.0, 80.0 + 1e-9, 2.5)
     speed = math.radians(10.0)
+    default, *others = registry.names()  # the FMU's enumeration items, numbered from 1
     fmus = [_Slave("BearingFriction", speed=speed)]
-    fmus += [_Slave("BearingFriction", {"friction_model": i}, speed=speed) for i in (2, 3)]
+    fmus += [
+        _Slave("BearingFriction", {"friction_model": i}, speed=speed)
+        for i in range(2, len(others) + 2)
+    ]
     rows = []
     for c in celsius:
         row = []
@@ -119,10 +124,12 @@ def _bearing_curve() -> Curve:
         "torque [N·mm]",
         celsius,
         (
-            ("running torque at 10 °/s (yu2017, default)", torque[:, 0]),
+            (f"running torque at 10 °/s ({default}, default)", torque[:, 0]),
             ("breakaway torque (a lower bound where breakaway_lower_bound is set)", torque[:, 1]),
-            ("running torque, friction_model skf2004", torque[:, 2]),
-            ("running torque, friction_model ehl_per_contact", torque[:, 4]),
+            *(
+                (f"running torque, friction_model {name}", torque[:, 2 * k + 2])
+                for k, name in enumerate(others)
+            ),
         ),
         "Default parameters (friction_model yu2017, no grease term) and the other friction "
         "models' running torque, no external load, shaft speed 10 °/s (logarithmic torque "
@@ -537,7 +544,7 @@ def _presets_rst(name: str) -> str:
     """What the presets inside the FMU are, and the catalogue entries they come from."""
     if name not in ("BearingFriction", "ActuatorStiffness"):
         return ""
-    from servofmu.physics import catalog
+    from servofmu.parameters import catalog
 
     prefix = "support\\_…" if name == "ActuatorStiffness" else ""
     kinds = ("mountings", "bearings") if prefix else ("mountings", "bearings", "lubricants")
@@ -607,7 +614,7 @@ def _build_defaults_rst(name: str, mechanism) -> str:
     (ActuatorStiffness); "" for the other FMUs or without a mechanism."""
     if mechanism is None or name not in ("BearingFriction", "ThermalNetwork", "ActuatorStiffness"):
         return ""
-    from servofmu.physics import catalog
+    from servofmu.parameters import catalog
 
     m = mechanism
     where = ", ".join(f for f, _ in m.catalogue_hashes) or "the package's catalogue"

@@ -35,16 +35,16 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from servofmu.physics import catalog
-from servofmu.physics.bearing_parameters import (
+from servofmu.parameters import catalog
+from servofmu.parameters.bearing import (
     DEFAULT_MOUNTING,
     LUBRICANT_FIELDS,
     PARAMETERS,
     default_parameters,
     default_sources,
 )
+from servofmu.parameters.presets import CoefficientSet, coefficient_set
 from servofmu.physics.materials import THERMAL_FIELDS
-from servofmu.physics.presets import CoefficientSet, coefficient_set
 
 from . import catalogs
 from .catalogs import Defaults
@@ -79,7 +79,7 @@ class Mechanism:
     lubricant : the lubricant of its preset (catalogue key)
     name : the mounting entry's name
     bearing : the bearing's catalogue key
-    coefficients : what its friction coefficients are (:func:`.presets.coefficient_set`)
+    coefficients : what its friction coefficients are (:func:`.parameters.presets.coefficient_set`)
     catalogue_hashes : (file, sha256 of its content) of every catalogue file, in order
     yu : whether it is one of Yu 2017's gimbal mountings of the package (his measurements
         are its reference)
@@ -289,7 +289,7 @@ def _thermal_complete(material, notes: dict) -> object:
 
 def thermal_parameters(mechanism: Mechanism):
     """The ThermalNetwork of the mechanism's parts in the air of a climatic chamber
-    (:func:`~servofmu.physics.thermal_network.mechanism_parameters`; needs its catalogues):
+    (:func:`~servofmu.physics.thermal.network.mechanism_parameters`; needs its catalogues):
     the package's preset for Yu's default gimbal (``yu2017_gimbal_chamber``), else derived
     from the mounting's bearing, seats, loop lengths and materials. A thermal property a
     material does not give is taken from the closest package material and said so in each
@@ -307,7 +307,7 @@ def thermal_parameters(mechanism: Mechanism):
     >>> p.environment, round(p.housing_capacity, 1), "30 N" in p.source("ball_conductance")
     ('air', 147.7, True)
     """
-    from servofmu.physics import thermal_network as tn
+    from servofmu.physics.thermal import network as tn
 
     if mechanism.mounting == DEFAULT_MOUNTING:
         return tn.preset("yu2017_gimbal_chamber")
@@ -364,7 +364,7 @@ def assumed_fields(p) -> list[str]:
 
     Examples
     --------
-    >>> from servofmu.physics.thermal_network import preset
+    >>> from servofmu.physics.thermal.network import preset
     >>> "inner_ring_heat_fraction" in assumed_fields(preset("yu2017_gimbal_chamber"))
     True
     """
@@ -412,8 +412,8 @@ def _reference_preload(mechanism: Mechanism) -> tuple[float, str]:
         return mounting.assembly_preload, (
             mounting.source("assembly_preload") or "the mounting's assembly preload"
         )
+    from servofmu.parameters.bearing import pair_from_parameters
     from servofmu.physics.bearing import BearingModel
-    from servofmu.physics.bearing_parameters import pair_from_parameters
 
     t0 = mounting.assembly_temperature
     preload = BearingModel(pair_from_parameters(mechanism.parameters())).evaluate(t0, 0.0).preload
@@ -444,7 +444,7 @@ def _components(system_dir: Path) -> dict[str, tuple[str, list[str]]]:
 
 
 def _thermal_value(name: str, value) -> tuple[str, str, str | None]:
-    from servofmu.physics.thermal_network import ENVIRONMENTS
+    from servofmu.physics.thermal.network import ENVIRONMENTS
 
     if name == "environment":
         return "Integer", str(ENVIRONMENTS.index(value) + 1), value

@@ -17,8 +17,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from servofmu.parameter_sets import write_ssv
-from servofmu.physics import catalog
-from servofmu.physics.bearing_parameters import (
+from servofmu.parameters import catalog
+from servofmu.parameters.bearing import (
     BEARING_FIELDS,
     DEFAULT_MOUNTING,
     LUBRICANT_FIELDS,
@@ -64,7 +64,7 @@ def start_values(name: str, defaults: Defaults) -> dict[str, tuple[object, str]]
         values, sources = default_parameters(*args, **kw), default_sources(*args, **kw)
         return {p.name: (_fmu_value(p, values[p.name]), sources[p.name]) for p in PARAMETERS}
     if name == "ThermalNetwork" and (defaults.mounting or DEFAULT_MOUNTING) != DEFAULT_MOUNTING:
-        from servofmu.physics.thermal_network import ENVIRONMENTS
+        from servofmu.physics.thermal.network import ENVIRONMENTS
 
         from .mechanism import resolve, thermal_parameters
 

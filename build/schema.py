@@ -4,7 +4,7 @@ type (a Boolean is not a number, a count is an integer) and, for every quantity
 
 The schemas are JSON Schema (draft 2020-12), checked with :mod:`fastjsonschema` (compiled:
 linear and fast) and, for the messages of an entry that fails, :mod:`jsonschema`; the units a
-quantity accepts are those of :data:`servofmu.physics.units.TO_SI` whose dimension, as
+quantity accepts are those of :data:`servofmu.physics.kernels.units.TO_SI` whose dimension, as
 :mod:`pint` reads them, is the quantity's. A plane angle is a dimension of its own here (rad,
 deg, and rpm per time), so that an angle is not a ratio and a torque is not a rotational
 stiffness. These libraries are used at build time only: an FMU reads no catalogue and imports
@@ -23,9 +23,10 @@ import re
 from collections.abc import Mapping
 
 from servofmu.physics._checks import suggest
-from servofmu.physics.units import TO_SI
+from servofmu.physics.kernels.units import TO_SI
 
-#: Provenance kinds of a catalogue quantity (as :data:`servofmu.physics.catalog.PROVENANCE_KINDS`).
+#: Provenance kinds of a catalogue quantity (as
+#: :data:`servofmu.parameters.catalog.PROVENANCE_KINDS`).
 KINDS = ("paper", "catalogue", "handbook", "assumed", "calibrated", "derived")
 
 #: Units whose pint spelling differs from the catalogue's (the rest: "." → "*", "m2" → "m**2").
@@ -74,7 +75,7 @@ def pint_spelling(unit: str) -> str:
     Parameters
     ----------
     unit : str
-        A key of :data:`~servofmu.physics.units.TO_SI` or "degC".
+        A key of :data:`~servofmu.physics.kernels.units.TO_SI` or "degC".
 
     Returns
     -------
@@ -215,8 +216,8 @@ def _array_of(item: dict) -> dict:
 
 
 def _choices():
-    from servofmu.physics.preload import ARRANGEMENTS, LOOP_MODELS, ROLES
-    from servofmu.physics.temperatures import MEMBER_PARTS
+    from servofmu.physics.pair.preload import ARRANGEMENTS, LOOP_MODELS, ROLES
+    from servofmu.physics.thermal.temperatures import MEMBER_PARTS
 
     return ARRANGEMENTS, LOOP_MODELS, ROLES, MEMBER_PARTS
 
@@ -412,7 +413,7 @@ def tolerance_band(unit: str | None = None) -> dict:
 def _tolerances() -> dict:
     """Bands by name: a parameter's band has its unit; the others are the seats' diameters
     (lengths), whose names the Monte-Carlo study checks (:mod:`servofmu.harness.tolerance`)."""
-    from servofmu.physics.bearing_parameters import PARAMETERS
+    from servofmu.parameters.bearing import PARAMETERS
 
     props = {
         spec.name: tolerance_band(spec.unit if spec.unit in TO_SI else None)

@@ -10,17 +10,20 @@ plot shows the running torque and its viscous and geometric (hysteresis + spin) 
 import sys
 
 import numpy as np
-from fmpy import simulate_fmu
+from fmpy import read_model_description, simulate_fmu
 
 fmu = sys.argv[1] if len(sys.argv) > 1 else "build/out/BearingFriction.fmu"
 png = sys.argv[2] if len(sys.argv) > 2 else "bearing_friction_temperature.png"
 
-# input signal: a structured array with a time column and one column per input
+# input signal: a structured array with a time column and one column per input of the FMU
+# (fmpy warns of an input without one); the inputs not ramped here keep their start values
 t = np.array([0.0, 100.0])
-signals = np.zeros(2, dtype=[("time", float), ("temperature", float), ("speed", float)])
+ramped = {"temperature": [233.15, 333.15], "speed": [0.1745, 0.1745]}  # K; rad/s (10 °/s)
+inputs = [v for v in read_model_description(fmu).modelVariables if v.causality == "input"]
+signals = np.zeros(2, dtype=[("time", float)] + [(v.name, float) for v in inputs])
 signals["time"] = t
-signals["temperature"] = [233.15, 333.15]  # K
-signals["speed"] = [0.1745, 0.1745]  # rad/s (10 °/s)
+for v in inputs:
+    signals[v.name] = ramped.get(v.name, float(v.start))
 
 # fmpy prints the FMU's errors (e.g. a temperature outside 173.15…473.15 K) and raises; a
 # discarded step only ends the rows early: debug_logging=True prints every message, discards

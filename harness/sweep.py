@@ -118,10 +118,10 @@ def _plain(v):
 @dataclass(frozen=True)
 class ModelTask:
     """Bearing-model evaluations: ``base`` is a full BearingFriction parameter set
-    (:func:`~servofmu.physics.bearing_parameters.default_parameters`), a point overrides
+    (:func:`~servofmu.parameters.bearing.default_parameters`), a point overrides
     parameters and inputs, and may name presets (``mounting``, ``bearing``, ``lubricant``:
     catalogue entries whose numbers it takes before its own numbers,
-    :func:`~servofmu.physics.bearing_parameters.resolve`); ``outputs`` are fields of
+    :func:`~servofmu.parameters.bearing.resolve`); ``outputs`` are fields of
     :class:`~servofmu.physics.bearing.BearingOutputs` (default: the FMU's outputs)."""
 
     base: Mapping[str, object]
@@ -149,13 +149,13 @@ class ModelTask:
 
     def check(self, points: Sequence[dict]) -> None:
         """Refuse, before anything is sent to the cluster, an unknown name, a value outside
-        the range of its parameter (:mod:`~servofmu.physics.bearing_parameters`) or input (the
+        the range of its parameter (:mod:`~servofmu.parameters.bearing`) or input (the
         BearingFriction FMU's), and an output that the model does not have."""
         from dataclasses import fields
 
+        from servofmu.parameters.bearing import PRESETS
         from servofmu.physics._checks import suggest
         from servofmu.physics.bearing import BearingOutputs
-        from servofmu.physics.bearing_parameters import PRESETS
 
         known = set(self.base) | set(INPUTS) | set(PRESETS) | {"sample"}
         for name in {k for p in points for k in p}:
@@ -183,7 +183,7 @@ class ModelTask:
 
     def units(self) -> dict[str, str]:
         """Unit of each column this task writes (parameters, inputs, outputs)."""
-        from servofmu.physics.bearing_parameters import PARAMETERS
+        from servofmu.parameters.bearing import PARAMETERS
 
         fmu = _fmu_variables()
         units = {}
@@ -198,8 +198,8 @@ class ModelTask:
         return {n: "-" if u == "1" else u for n, u in units.items() if u}
 
     def __call__(self, points: Sequence[dict]) -> list[dict]:
+        from servofmu.parameters.bearing import pair_from_parameters, resolve
         from servofmu.physics.bearing import operating_outputs
-        from servofmu.physics.bearing_parameters import pair_from_parameters, resolve
 
         rows: list[dict | None] = [None] * len(points)
         groups: dict[tuple, list[int]] = {}
@@ -278,13 +278,13 @@ def input_ranges() -> dict[str, tuple[float, float, str]]:
 
 def _model_value_problem(name: str, value) -> str:
     """Why ``value`` cannot be given to model parameter or input ``name``, or ""."""
+    from servofmu.parameters.bearing import PRESETS, parameter
     from servofmu.physics._checks import suggest
-    from servofmu.physics.bearing_parameters import PRESETS, parameter
 
     if name in INPUTS:
         lo, hi, unit = input_ranges()[name]
     elif name in PRESETS:  # a catalogue entry whose numbers the point takes
-        from servofmu.physics import catalog
+        from servofmu.parameters import catalog
 
         keys = catalog.keys(f"{name}s")
         hint = suggest(str(value), keys)
@@ -312,7 +312,7 @@ def _describe(point: dict) -> str:
 def _as_key(name: str, value):
     """A preset's catalogue key as text: a key that reads as a number (the bearing "71803",
     parsed from a command line as 71803.0) comes back as "71803"."""
-    from servofmu.physics.bearing_parameters import PRESETS
+    from servofmu.parameters.bearing import PRESETS
 
     if name in PRESETS and isinstance(value, (int, float)):
         return str(int(value)) if float(value).is_integer() else str(value)

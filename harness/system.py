@@ -558,7 +558,7 @@ def parameter_file(system: System, path) -> dict[str, object]:
     >>> import tempfile
     >>> from types import SimpleNamespace
     >>> from servofmu.parameter_sets import write_ssv
-    >>> from servofmu.physics.bearing_parameters import default_parameters, PARAMETERS
+    >>> from servofmu.parameters.bearing import default_parameters, PARAMETERS
     >>> names = {p.name for p in PARAMETERS}
     >>> system = SimpleNamespace(name="demo", components={
     ...     "motor": SimpleNamespace(variables={"voltage"}),

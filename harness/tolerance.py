@@ -24,10 +24,10 @@ from pathlib import Path
 import numpy as np
 
 from servofmu.files import save_figure
-from servofmu.physics import catalog
-from servofmu.physics.bearing_parameters import PARAMETER_NAMES, default_parameters
-from servofmu.physics.presets import coefficient_set
-from servofmu.physics.units import DEG, NMM, UM, celsius_to_kelvin
+from servofmu.parameters import catalog
+from servofmu.parameters.bearing import PARAMETER_NAMES, default_parameters
+from servofmu.parameters.presets import coefficient_set
+from servofmu.physics.kernels.units import DEG, NMM, UM, celsius_to_kelvin
 
 from .scenarios.common import ScenarioResult
 from .sweep import ModelTask, Uniform, cross, grid_points, run_sweep, sample_points
@@ -62,7 +62,7 @@ def tolerance_draws(nominal, bands, samples: int, seed: int) -> list[dict]:
         The parameter set (SI) the deviations apply to.
     bands : mapping
         {name: (low, high, provenance)}: deviations from nominal in SI
-        (:func:`servofmu.physics.catalog.tolerances`).
+        (:func:`servofmu.parameters.catalog.tolerances`).
     samples : int
         Number of draws, ≥ 1.
     seed : int
@@ -233,7 +233,7 @@ def run(
 
 def _unit(name: str) -> tuple[str, float]:
     """(unit, its size in SI) of a drawn parameter in the summary: µm for lengths."""
-    from servofmu.physics.bearing_parameters import parameter
+    from servofmu.parameters.bearing import parameter
 
     unit = parameter(name).unit or "-"
     return ("um", UM) if unit == "m" else (unit, 1.0)

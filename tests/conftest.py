@@ -1,7 +1,7 @@
 import pytest
 from hypothesis import settings
 
-from servofmu.physics import catalog
+from servofmu.parameters import catalog
 from servofmu.physics.bearing import BearingPair
 
 # Property tests run derandomized (a fixed sequence of examples: a CI run is reproducible and

@@ -1,5 +1,5 @@
 """The implementations of the per-step kernels the tests drive side by side: the compiled
-``servofmu.physics._pair_kernels`` and the Python ``servofmu.physics.pair_kernels``. Both,
+twins of ``servofmu.physics.compiled.MODULES`` and their Python sources. Both,
 unless ``SERVOFMU_PURE_PYTHON`` is set (then the Python one only); a missing compiled
 module is then an ImportError that names itself, not a silent skip."""
 
@@ -8,7 +8,7 @@ from __future__ import annotations
 import os
 
 from servofmu.physics.bearing import BearingModel
-from servofmu.physics.continuation import PURE_PYTHON
+from servofmu.physics.compiled import PURE_PYTHON
 
 
 def implementations() -> tuple[str, ...]:

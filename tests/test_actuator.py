@@ -6,8 +6,8 @@ import re
 import numpy as np
 import pytest
 
-from servofmu.physics import actuator as A
-from servofmu.physics.units import DEG
+from servofmu.physics.drives import actuator as A
+from servofmu.physics.kernels.units import DEG
 
 
 @pytest.fixture(scope="module")
@@ -285,7 +285,7 @@ def test_a_support_pair_with_play_is_named_where_it_holds_nothing():
     """Without preload (a shim of 0) the support pair has axial play: under a hinge moment its
     balls are loaded and the actuator has a stiffness, at zero moment it has none, and the
     per-step model says so naming the element instead of dividing by zero."""
-    from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
+    from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 
     p = default_parameters("liu2014_screw_support", lubricant="mos2_film")
     p.update(preload_method="shim", shim=0.0)

@@ -6,8 +6,12 @@ import re
 
 import pytest
 
-from servofmu.physics import catalog, equilibrium, fits, friction, geometry, hertz, preload
-from servofmu.physics.geometry import RaceGeometry
+from servofmu.parameters import catalog
+from servofmu.physics.contact import equilibrium, geometry, hertz
+from servofmu.physics.contact.geometry import RaceGeometry
+from servofmu.physics.friction import terms as friction
+from servofmu.physics.pair import preload
+from servofmu.physics.thermal import fits
 
 NAN = float("nan")
 

@@ -5,8 +5,8 @@ import re
 import numpy as np
 import pytest
 
-from servofmu.physics import bearing as bm
 from servofmu.physics.bearing import BearingModel, BearingPair, with_mounting
+from servofmu.physics.pair import model as bm
 
 
 @pytest.fixture(scope="module")

@@ -32,8 +32,8 @@ def test_fmu_ships_only_what_it_runs(fmus):
             if n.startswith("resources/servofmu/") and not n.endswith("/")
         }
     tops = {name.split("/")[0] for name in shipped}
-    assert tops == set(SHIPPED)  # __init__.py, physics/, fmus/: no papers, calibration, cli
-    assert "physics/data/bearings.toml" in shipped and "fmus/runtime.py" in shipped
+    assert tops == set(SHIPPED)  # __init__.py, physics/, parameters/, fmus/: no papers, cli
+    assert "parameters/data/bearings.toml" in shipped and "fmus/runtime.py" in shipped
     assert not [n for n in shipped if "__pycache__" in n or n.endswith(".pyc")]
     expected = {
         f.relative_to(PACKAGE_DIR).as_posix()
@@ -43,9 +43,10 @@ def test_fmu_ships_only_what_it_runs(fmus):
             if (PACKAGE_DIR / part).is_file()
             else (PACKAGE_DIR / part).rglob("*")
         )
-        # sources, data and the compiled modules built for this platform (the pair kernels)
+        # sources (with the compiled modules' declarations), data and the compiled modules
+        # built for this platform (physics/compiled.py)
         if f.is_file()
-        and f.suffix in (".py", ".toml", ".so", ".pyd")
+        and f.suffix in (".py", ".pxd", ".toml", ".so", ".pyd")
         and "__pycache__" not in f.parts
     }
     assert shipped == expected
@@ -58,7 +59,7 @@ def test_hash_covers_the_shipped_parts_only(tmp_path):
     label.write_text(label.read_text() + "\n# a new plot label\n")
     (copy / "cli.py").write_text((copy / "cli.py").read_text() + "\n")
     assert package_hash(copy) == package_hash(PACKAGE_DIR)  # not run by an FMU: not stale
-    data = copy / "physics" / "data" / "bearings.toml"
+    data = copy / "parameters" / "data" / "bearings.toml"
     data.write_text(data.read_text() + "\n# edited\n")
     assert package_hash(copy) != package_hash(PACKAGE_DIR)
 

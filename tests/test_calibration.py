@@ -17,8 +17,8 @@ from servofmu.calibration import (
     write_ssv,
 )
 from servofmu.calibration.synthetic import synthesise, write_measurements
-from servofmu.physics.bearing_parameters import default_parameters
-from servofmu.physics.units import DEG, celsius_to_kelvin
+from servofmu.parameters.bearing import default_parameters
+from servofmu.physics.kernels.units import DEG, celsius_to_kelvin
 
 TEMPS = celsius_to_kelvin(np.arange(-40.0, 61.0, 10.0))
 PRINTED = default_parameters("yu2017_gimbal_printed")
@@ -99,8 +99,8 @@ def test_warns_when_a_coefficient_has_no_effect_on_the_data():
 
 
 def test_running_torque_is_the_model_of_the_fmu_parameters():
+    from servofmu.parameters.bearing import pair_from_parameters
     from servofmu.physics.bearing import BearingModel
-    from servofmu.physics.bearing_parameters import pair_from_parameters
 
     model = BearingModel(pair_from_parameters(TRUTH))
     t, w = celsius_to_kelvin(-10.0), 7.0 * DEG
@@ -132,7 +132,7 @@ def test_fitted_ssv_gives_the_same_torque_in_the_fmu(fmus, tmp_path):
 
 def test_fmu_defaults_are_the_yu_gimbal_parameter_set():
     from servofmu.fmus.BearingFriction import BearingFriction
-    from servofmu.physics.bearing_parameters import PARAMETER_NAMES, parameter
+    from servofmu.parameters.bearing import PARAMETER_NAMES, parameter
 
     defaults = default_parameters("yu2017_gimbal")
     for v in BearingFriction.VARIABLES:
@@ -279,8 +279,8 @@ def test_estimates_at_a_bound_are_refused_and_keep_their_sensitivity():
 
 def test_model_jacobian_stays_inside_the_bounds_and_is_right_at_a_bound():
     from servofmu.calibration.fit import model_jacobian
+    from servofmu.parameters.bearing import pair_from_parameters
     from servofmu.physics.bearing import operating_outputs
-    from servofmu.physics.bearing_parameters import pair_from_parameters
 
     temps, w = TEMPS[::3], np.full(TEMPS[::3].shape, 10 * DEG)
     seen = []

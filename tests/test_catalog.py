@@ -2,8 +2,8 @@ import re
 
 import pytest
 
-from servofmu.physics import catalog
-from servofmu.physics.catalog import PROVENANCE_KINDS
+from servofmu.parameters import catalog
+from servofmu.parameters.catalog import PROVENANCE_KINDS
 
 
 @pytest.mark.parametrize("table", ["materials", "lubricants", "bearings", "mountings"])

@@ -11,9 +11,10 @@ import statistics
 
 import pytest
 
-from servofmu.physics import catalog, geometry
-from servofmu.physics.catalog import PROVENANCE_KINDS, bearing_from_entry
-from servofmu.physics.units import CST, UM
+from servofmu.parameters import catalog
+from servofmu.parameters.catalog import PROVENANCE_KINDS, bearing_from_entry
+from servofmu.physics.contact import geometry
+from servofmu.physics.kernels.units import CST, UM
 
 SERIES = ("718", "719", "70", "72", "618", "60", "62")
 
@@ -245,7 +246,7 @@ def test_the_fmu_numbers_of_a_catalogue_lubricant_give_its_model():
     """The parameters a catalogue lubricant fills in (ν40, ν100, the cold point, the range)
     make the FMU's viscosity the catalogue's model: exactly through its points, and at every
     temperature of its range (Vogel fitted to four points too: three points of its curve)."""
-    from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
+    from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 
     for key in ("pennzane_2000", "xc_5606j", "krytox_gpl_105", "krytox_143aa", "iso_vg32"):
         model = catalog.lubricant(key)

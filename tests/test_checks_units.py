@@ -4,8 +4,8 @@ import re
 import numpy as np
 import pytest
 
-from servofmu.physics import units
 from servofmu.physics._checks import check_positive, check_range, check_temperature
+from servofmu.physics.kernels import units
 
 
 def test_conversions_round_trip():

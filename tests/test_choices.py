@@ -22,8 +22,8 @@ from servofmu.fmus import declarations, model_description
 from servofmu.fmus.BearingFriction import BearingFriction
 from servofmu.fmus.runtime import ServoSlave
 from servofmu.harness import HarnessError, SystemError_, load_system, run
-from servofmu.physics import bearing_parameters
-from servofmu.physics.bearing_parameters import PARAMETERS, parameter
+from servofmu.parameters import bearing as bearing_parameters
+from servofmu.parameters.bearing import PARAMETERS, parameter
 
 SSV = (
     '<?xml version="1.0" encoding="UTF-8"?>\n<ssv:ParameterSet xmlns:ssv="http://ssp-standard.org/'
@@ -212,7 +212,7 @@ def test_a_catalogue_key_that_reads_as_a_number_stays_a_key():
     """The command line parses --grid values as floats when they read as one: the bearing
     preset "71803" must still name the bearing (the sweep's model task)."""
     from servofmu.harness.sweep import ModelTask
-    from servofmu.physics.bearing_parameters import default_parameters
+    from servofmu.parameters.bearing import default_parameters
 
     base = default_parameters("yu2017_gimbal")
     rows = ModelTask(base, ("preload",))(

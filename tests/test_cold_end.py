@@ -4,7 +4,7 @@ extrapolates the viscosity law down to the lubricant's flow limit (its pour poin
 operating temperature); below that no law holds and ``lubricant_below_flow_limit`` holds the
 viscosity at the limit or extrapolates on, said once in a warning. Its optional third
 viscosity point makes the viscosity Vogel's law through the three points
-(physics/viscosity.py)."""
+(physics/lubrication/viscosity.py)."""
 
 from __future__ import annotations
 
@@ -17,11 +17,11 @@ from fmpy.fmi1 import FMICallException
 from fmu_helpers import Fmu
 from pythonfmu.enums import Fmi2Status
 
-from servofmu.physics import catalog
+from servofmu.parameters import catalog
+from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 from servofmu.physics.bearing import BearingModel
-from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
-from servofmu.physics.units import CST
-from servofmu.physics.viscosity import (
+from servofmu.physics.kernels.units import CST
+from servofmu.physics.lubrication.viscosity import (
     VogelViscosity,
     viscosity_model,
     vogel_from_points,

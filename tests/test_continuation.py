@@ -1,4 +1,4 @@
-"""The per-step continuation (physics/pair_kernels.py, compiled and not) against the exact
+"""The per-step continuation (physics/pair/continuation.py, compiled and not) against the exact
 vectorised path.
 
 Every BearingFriction output of BearingModel.evaluate must equal operating_outputs (bracketing
@@ -25,7 +25,8 @@ from hypothesis import strategies as st
 from kernels import implementations, models
 from scipy.special import ellipe, ellipk
 
-from servofmu.physics import catalog, pair_kernels
+from servofmu.parameters import catalog
+from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 from servofmu.physics.bearing import (
     BearingModel,
     BearingPair,
@@ -33,11 +34,11 @@ from servofmu.physics.bearing import (
     operating_outputs,
     with_mounting,
 )
-from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
-from servofmu.physics.continuation import PURE_PYTHON
-from servofmu.physics.friction import ball_torque_terms
-from servofmu.physics.grease_torque import GreaseTorqueTerm
-from servofmu.physics.hertz import curvature_difference_of_ellipticity, ellipticity
+from servofmu.physics.compiled import PURE_PYTHON
+from servofmu.physics.contact.hertz import curvature_difference_of_ellipticity, ellipticity
+from servofmu.physics.friction.grease import GreaseTorqueTerm
+from servofmu.physics.friction.terms import ball_torque_terms
+from servofmu.physics.pair import balls, constants
 
 REL = 1e-9
 # the axial play is h − a near zero clearance, h = √(A·Pd) there: Pd's rounding (1e-17 m on
@@ -363,8 +364,8 @@ def test_state_restore_mid_ramp_repeats_bit_for_bit(impl):
 def test_anchor_expansion_error_at_its_thresholds(f_rho, threshold, rel):
     # k, K(m), E(m) from the second-order anchor expansion against scipy at Δk/k = threshold
     k0 = ellipticity(f_rho)
-    anchor = pair_kernels.Anchor(k0)
-    k_true = k0 * (1.0 + getattr(pair_kernels, threshold))
+    anchor = balls.Anchor(k0)
+    k_true = k0 * (1.0 + getattr(balls, threshold))
     q = (curvature_difference_of_ellipticity(k_true) - anchor.f) / anchor.f1
     k = anchor.k + q * (1.0 - 0.5 * anchor.f2 * q / anchor.f1)
     dm = (1.0 - 1.0 / k**2) - anchor.m
@@ -378,7 +379,7 @@ def test_anchor_expansion_error_at_its_thresholds(f_rho, threshold, rel):
 
 def test_anchor_derivatives_against_finite_differences():
     k0 = 8.0
-    a = pair_kernels.Anchor(k0)
+    a = balls.Anchor(k0)
     h = 1e-5 * k0
     f = curvature_difference_of_ellipticity
     assert a.f1 == pytest.approx((f(k0 + h) - f(k0 - h)) / (2 * h), rel=1e-7)
@@ -484,22 +485,20 @@ def test_hertz_constants_follow_a_base_within_its_spans(key):
     # c_δ, a_coef, k and E from a ball's base at (γ0, 1/f0), moved by up to GAMMA_SPAN in γ and
     # INV_F_SPAN in 1/f, against contact_terms anchored exactly at the new point: relative
     # error below 2e-12 (second order in γ, first in 1/f)
-    c = pair_kernels.PairConstants(PAIRS["yu_printed"]())  # steel on steel
+    c = constants.PairConstants(PAIRS["yu_printed"]())  # steel on steel
     geom = catalog.bearing(key).race_geometry()
     gs = float(geom.ball_diameter / geom.pitch_diameter)
-    spans = (pair_kernels.GAMMA_SPAN, pair_kernels.INV_F_SPAN)
+    spans = (balls.GAMMA_SPAN, balls.INV_F_SPAN)
     worst = 0.0
     for alpha in np.radians([0.0, 15.0, 25.0, 40.0]):
         g0 = gs * float(np.cos(alpha))
         for inner, curvature in ((True, geom.inner_curvature), (False, geom.outer_curvature)):
             f0 = 1.0 / float(curvature)
-            anchor = pair_kernels.Anchor(_exact_k(g0, f0, inner))
-            t0 = pair_kernels.contact_terms(c, g0, f0, inner, anchor)
+            anchor = balls.Anchor(_exact_k(g0, f0, inner))
+            t0 = balls.contact_terms(c, g0, f0, inner, anchor)
             for dg, df in itertools.product((-spans[0], spans[0]), (-spans[1], 0.0, spans[1])):
                 g1, f1 = g0 + dg, f0 + df
-                t1 = pair_kernels.contact_terms(
-                    c, g1, f1, inner, pair_kernels.Anchor(_exact_k(g1, f1, inner))
-                )
+                t1 = balls.contact_terms(c, g1, f1, inner, balls.Anchor(_exact_k(g1, f1, inner)))
                 for q in range(4):  # c_δ, a_coef, k, E
                     v0, v1, v2, vf = t0[4 * q : 4 * q + 4]
                     follow = v0 + dg * (v1 + v2 * dg) + vf * df
@@ -513,13 +512,13 @@ def _exact_k(gamma, inv_f, inner):
 
 
 def test_contact_terms_derivatives_against_finite_differences():
-    c = pair_kernels.PairConstants(PAIRS["yu_printed"]())
+    c = constants.PairConstants(PAIRS["yu_printed"]())
     g0, f0, h = 0.107, 1.92, 1e-6
     for inner in (True, False):
-        anchor = pair_kernels.Anchor(_exact_k(g0, f0, inner))
+        anchor = balls.Anchor(_exact_k(g0, f0, inner))
 
         def terms(g, f, inner=inner, anchor=anchor):
-            return pair_kernels.contact_terms(c, g, f, inner, anchor)
+            return balls.contact_terms(c, g, f, inner, anchor)
 
         t0, gp, gm = terms(g0, f0), terms(g0 + h, f0), terms(g0 - h, f0)
         fp, fm = terms(g0, f0 + h), terms(g0, f0 - h)
@@ -577,35 +576,36 @@ def test_ring_torques_equal_ball_torque_terms(name):
                 [h_i + h_o, sp_i + sp_o, sl_i + sl_o, h_i + sl_i + sp_i, h_o + sl_o + sp_o]
             )
         anchors = [(b.anc_i.k, b.anc_o.k) for b in ring]
-        got = pair_kernels.ring_sums(th, c, ring)[:5]
+        got = balls.ring_sums(th, c, ring)[:5]
         assert [(b.anc_i.k, b.anc_o.k) for b in ring] == anchors  # no renewal in between
         np.testing.assert_allclose(got, expected, rtol=1e-13, atol=0.0)
 
 
 @pytest.mark.parametrize("impl", implementations())
 def test_failed_warm_start_and_failed_exact_solve_name_the_point(monkeypatch, impl):
-    # an axial load of 1e12 N on Yu's printed pair: the continuation fails (its warm start,
+    # an axial load of 1e13 N on Yu's printed pair (the shaft pushed metres along: beyond the
+    # loads where the continuation's Newton settles): the continuation fails (its warm start,
     # then its cold start in stages) and the exact path solves the step; when that fails
     # too, the call raises a ValueError naming temperatures and loads, and the model keeps
     # its state. The kernels fail by themselves, compiled or not (nothing replaced in them).
-    from servofmu.physics import bearing as bm
+    from servofmu.physics.pair import model as bm
 
     pair = PAIRS["yu_printed"]()
     model = BearingModel(pair, impl)
     good = model.evaluate(293.15, 0.1, 5.0)
-    fallback = model.evaluate(293.15, 0.1, 1e12)
+    fallback = model.evaluate(293.15, 0.1, 1e13)
     assert model.exact_steps == 1 and model.cold_starts == 2
-    assert_equal_outputs(fallback, operating_outputs(pair, 293.15, 0.1, 1e12))
+    assert_equal_outputs(fallback, operating_outputs(pair, 293.15, 0.1, 1e13))
 
     def broken(*a, **k):
         raise ArithmeticError("no equilibrium")
 
     monkeypatch.setattr(bm, "load_state", broken)
-    where = re.escape("(294.15, 294.15, 294.15, 294.15) K, axial_load = 1000000000000.0 N, ")
+    where = re.escape("(294.15, 294.15, 294.15, 294.15) K, axial_load = 1e+16 N, ")
     with pytest.raises(ValueError, match=where + r"radial_load = 0\.0 N: no equilibrium"):
-        model.evaluate(294.15, 0.1, 1e12)
+        model.evaluate(294.15, 0.1, 1e16)
     assert model.exact_steps == 2
-    assert model.evaluate(293.15, 0.1, 1e12) == fallback  # the last state is kept
+    assert model.evaluate(293.15, 0.1, 1e13) == fallback  # the last state is kept
     monkeypatch.undo()
     assert_equal_outputs(model.evaluate(293.15, 0.1, 5.0), good)  # and it carries on
 
@@ -681,19 +681,21 @@ def test_random_trajectories_equal_the_exact_path(name, model, grease, parts, st
 _WITHOUT_CYTHON = """
 import json, sys
 sys.modules["cython"] = None  # as on a host without Cython: the package's own shadow names
-from servofmu.physics import continuation, pair_kernels
+from servofmu.physics import compiled
+from servofmu.physics.pair import continuation
 from servofmu.physics.bearing import BearingModel, BearingPair
-assert pair_kernels.cython.__name__ == "servofmu.physics._cython_shadow", pair_kernels.cython
+shadow = continuation.cython.__name__
+assert shadow == "servofmu.physics.kernels._cython_shadow", shadow
 pair = BearingPair.from_catalog("yu2017_gimbal_printed", "krytox_143aa")
 model = BearingModel(pair, "python")
 outs = [model.evaluate(t, 0.1, 5.0, 2.0).running_torque for t in (233.15, 233.5, 234.0)]
-print(json.dumps({"implementation": continuation.IMPLEMENTATION, "outs": outs}))
+print(json.dumps({"implementation": compiled.IMPLEMENTATION, "outs": outs}))
 """
 
 
 def test_the_python_path_runs_without_cython_and_gives_the_same_numbers():
-    # an FMU's host has numpy and scipy, not Cython: pair_kernels then takes Cython's
-    # pure-Python names from servofmu.physics._cython_shadow, with the same numbers
+    # an FMU's host has numpy and scipy, not Cython: the compiled modules' sources take Cython's
+    # pure-Python names from servofmu.physics.kernels._cython_shadow, with the same numbers
     env = {k: v for k, v in os.environ.items() if k != PURE_PYTHON}
     proc = subprocess.run(
         [sys.executable, "-c", _WITHOUT_CYTHON], capture_output=True, text=True, env=env

@@ -1,4 +1,4 @@
-"""The discrete PID (physics.control and the ServoController FMU) against values stepped by
+"""The discrete PID (physics.drives.control and the ServoController FMU) against values stepped by
 hand from the law in the module docstring (Åström & Hägglund 2006, ch. 3):
 
     e_k = r_k − y_k,  D_k = (T_f·D_{k−1} − K_d·(y_k − y_{k−1}))/(T_f + T_s),
@@ -10,7 +10,7 @@ import re
 import pytest
 from fmu_helpers import Fmu
 
-from servofmu.physics.control import PIDParameters, PIDState, pid_sample
+from servofmu.physics.drives.control import PIDParameters, PIDState, pid_sample
 
 #: K_p = 2, K_i = 10 /s, K_d = 0.01 s, T_f = T_s = 1 ms
 GAINS = dict(kp=2.0, ki=10.0, kd=0.01, derivative_filter=1e-3, sample_period=1e-3)

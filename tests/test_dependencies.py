@@ -109,7 +109,7 @@ _FRICTION_GROUPS = ("friction_model", "skf", "density", "grease", "grease_start"
 
 @pytest.mark.parametrize("model", ["skf2004", "ehl_per_contact"])
 def test_dependencies_hold_under_each_friction_model(fmus, model):
-    from servofmu.physics.bearing_parameters import parameter, parameters_in
+    from servofmu.parameters.bearing import parameter, parameters_in
 
     base = {
         **BASE["BearingFriction"],

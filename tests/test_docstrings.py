@@ -14,19 +14,21 @@ import pytest
 
 import servofmu
 
-_PACKAGES = ("servofmu", "servofmu.physics", "servofmu.papers", "servofmu.calibration",
-             "servofmu.fmus", "servofmu.harness", "servofmu.harness.scenarios",
-             "servofmu.build", "servofmu.margin")  # fmt: skip
+_PACKAGES = ("servofmu", "servofmu.physics", "servofmu.parameters", "servofmu.papers",
+             "servofmu.calibration", "servofmu.fmus", "servofmu.harness", "servofmu.build",
+             "servofmu.margin")  # fmt: skip
 
 
 def _module_names():
+    """Every module and package of :data:`_PACKAGES` and their subpackages (data folders
+    aside)."""
     names = []
     for pkg in _PACKAGES:
         module = importlib.import_module(pkg)
         names.append(pkg)
-        for info in pkgutil.iter_modules(module.__path__):
-            if not info.ispkg:
-                names.append(f"{pkg}.{info.name}")
+        for info in pkgutil.walk_packages(module.__path__, f"{pkg}."):
+            if not info.name.endswith(".data"):
+                names.append(info.name)
     return sorted(set(names))
 
 
@@ -49,7 +51,8 @@ def _public_functions(name):
 
 
 def test_the_packages_are_all_found():
-    assert "servofmu.physics.preload" in MODULES and "servofmu.build.golden" in MODULES
+    assert "servofmu.physics.pair.preload" in MODULES and "servofmu.build.golden" in MODULES
+    assert "servofmu.parameters.catalog" in MODULES
     assert "servofmu.harness.scenarios.thermal_cycle" in MODULES
     assert servofmu.__name__ == "servofmu"
 

@@ -8,8 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from servofmu.physics import ehl_rolling as er
-from servofmu.physics.hertz import contact_constants
+from servofmu.physics.contact.hertz import contact_constants
+from servofmu.physics.friction import ehl_per_contact as er
 
 E = 2.3e11  # E' of steel on steel, Bălan et al. 2015 §1
 

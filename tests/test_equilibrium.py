@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from servofmu.physics import catalog
-from servofmu.physics import equilibrium as eq
-from servofmu.physics.geometry import RaceGeometry
+from servofmu.parameters import catalog
+from servofmu.physics.contact import equilibrium as eq
+from servofmu.physics.contact.geometry import RaceGeometry
 
 
 def with_clearance(g: RaceGeometry, pd):

@@ -3,8 +3,8 @@ import re
 import numpy as np
 import pytest
 
-from servofmu.physics import catalog
-from servofmu.physics.fits import (
+from servofmu.parameters import catalog
+from servofmu.physics.thermal.fits import (
     bore_change_under_external_pressure,
     fit_pressure,
     mounted_geometry,

@@ -13,10 +13,10 @@ from fmpy.validation import validate_fmu
 from fmu_helpers import Fmu
 
 from servofmu.build.validate import validate
-from servofmu.physics import catalog
-from servofmu.physics.actuator import Actuator, ActuatorModel
+from servofmu.parameters import catalog
 from servofmu.physics.bearing import BearingModel, BearingPair
-from servofmu.physics.control import PIDParameters
+from servofmu.physics.drives.actuator import Actuator, ActuatorModel
+from servofmu.physics.drives.control import PIDParameters
 
 NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
 
@@ -221,11 +221,12 @@ def test_bearing_step_without_a_state_is_discarded_naming_the_point(fmus, monkey
     # The instance runs the Python kernels with a continuation that always fails (the FMU's
     # handling does not depend on the kernels; the compiled kernels failing by themselves:
     # tests/test_continuation.py)
-    from servofmu.physics import bearing as bm
-    from servofmu.physics import pair_kernels
+    from servofmu.physics import compiled
+    from servofmu.physics.pair import continuation
+    from servofmu.physics.pair import model as bm
 
-    monkeypatch.setattr(bm, "kernels", lambda implementation=None: pair_kernels)
-    monkeypatch.setattr(pair_kernels.PairSolver, "solve", lambda *args: None)
+    monkeypatch.setattr(compiled, "module", lambda name, implementation=None: continuation)
+    monkeypatch.setattr(continuation.PairSolver, "solve", lambda *args: None)
     fmu = Fmu(fmus["BearingFriction"], "nostate").init(temperature=293.15, axial_load=5.0)
 
     def no_equilibrium(*args, **kwargs):
@@ -288,7 +289,7 @@ def _library_checks(name, value, parameters=None, **inputs) -> bool:
 def _library_accepts(parameters=None, **inputs):
     """The bearing physics evaluated at the default parameter set (changed by
     ``parameters``) and inputs: finite outputs, no exception."""
-    from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
+    from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 
     p = default_parameters("yu2017_gimbal") | (parameters or {})
     point = dict(temperature=293.15, speed=0.0, axial_load=0.0, radial_load=0.0) | inputs
@@ -365,7 +366,7 @@ def test_bad_tunable_parameter_after_initialization_then_fixed(fmus):
             {"preload_method": "spring"},
             "preload_method = spring needs spring_stiffness > 0 N/m (got 0.0)",
         ),
-        (  # a tandem pair is preloaded by a force or a spring (physics/preload.py)
+        (  # a tandem pair is preloaded by a force or a spring (physics/pair/preload.py)
             "BearingFriction",
             {"arrangement": "tandem"},
             "arrangement = tandem needs preload_method = spring or force (got shim)",
@@ -437,7 +438,7 @@ def test_documentation_is_inside(fmus):
 def test_motor_is_exact_for_steps_from_0_1_to_10_ms(fmus):
     from scipy.integrate import solve_ivp
 
-    from servofmu.physics.motor import DCMotorParameters, state_matrices
+    from servofmu.physics.drives.motor import DCMotorParameters, state_matrices
 
     p = DCMotorParameters()
     a, b = state_matrices(p)
@@ -490,6 +491,7 @@ def test_example_runs_with_plain_fmpy(fmus, tmp_path):
     )
     assert proc.returncode == 0, proc.stderr
     assert png.is_file() and "running [N·mm]" in proc.stdout
+    assert "Warning" not in proc.stdout + proc.stderr  # fmpy's "missing input for variable"
     assert "servofmu" not in script.read_text().split('"""')[2]  # plain fmpy, no servofmu import
 
 
@@ -557,10 +559,10 @@ def test_the_package_hash_covers_the_compiled_kernels(tmp_path):
     from servofmu.fmus.package_hash import package_hash
 
     package = stage_package(tmp_path / "staged")
-    for f in (package / "physics").glob("_pair_kernels*"):
+    for f in (package / "physics").rglob("_*.so"):
         f.unlink()
     plain = package_hash(package)
-    module = package / "physics" / "_pair_kernels.cpython-311-x86_64-linux-gnu.so"
+    module = package / "physics" / "pair" / "_continuation.cpython-311-x86_64-linux-gnu.so"
     module.write_bytes(b"one build")
     one = package_hash(package)
     module.write_bytes(b"another build")

@@ -14,11 +14,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 from servofmu.physics.bearing import BearingModel, thermal_state
-from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
-from servofmu.physics.geometry import first_contact_offset
-from servofmu.physics.pair_state import axial_play, operating_outputs, preload_force
-from servofmu.physics.temperatures import PartTemperatures
+from servofmu.physics.contact.geometry import first_contact_offset
+from servofmu.physics.pair.state import axial_play, operating_outputs, preload_force
+from servofmu.physics.thermal.temperatures import PartTemperatures
 
 RIGID = default_parameters("yu2017_gimbal_rigid") | {"outer_interference": 0.0}
 ARRANGEMENTS = {

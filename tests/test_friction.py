@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from servofmu.physics import friction as fr
-from servofmu.physics.hertz import contact_constants
+from servofmu.physics.contact.hertz import contact_constants
+from servofmu.physics.friction import terms as fr
 
 
 def test_heathcote_constant_matches_johnson():
@@ -68,8 +68,8 @@ def test_regularised_torque_is_odd_smooth_and_bounded():
 
 
 def _ball_set(lubrication, sliding, mu=0.05, alpha_r=0.007):
-    from servofmu.physics import catalog
-    from servofmu.physics.equilibrium import axial_state, offset_for_axial_force
+    from servofmu.parameters import catalog
+    from servofmu.physics.contact.equilibrium import axial_state, offset_for_axial_force
 
     g = catalog.bearing("71803").race_geometry()
     s = axial_state(g, offset_for_axial_force(g, 30.0))

@@ -1,4 +1,4 @@
-"""The selectable friction models of a bearing pair (physics/friction_models.py) and the
+"""The selectable friction models of a bearing pair (physics/friction/models.py) and the
 grease term, against independent references: the SKF catalogue's formulas by hand (catalogue
 units) and the public single-bearing SKF function per bearing of the pair; Biboulet &
 Houpert's force of each contact recomputed from its own Hertz ellipse (hertz through
@@ -15,24 +15,24 @@ import pytest
 
 from servofmu.calibration.datasheet import calibrate_datasheet
 from servofmu.cli import main
-from servofmu.physics import catalog
-from servofmu.physics import rolling_friction as rf
-from servofmu.physics.bearing import BearingModel, BearingPair, load_state, thermal_state
-from servofmu.physics.bearing_parameters import (
+from servofmu.parameters import catalog
+from servofmu.parameters.bearing import (
     default_parameters,
     default_sources,
     pair_from_parameters,
     parameter_problems,
 )
-from servofmu.physics.ehl_rolling import (
+from servofmu.physics.bearing import BearingModel, BearingPair, load_state, thermal_state
+from servofmu.physics.contact.equilibrium import axial_state
+from servofmu.physics.friction import skf2004 as rf
+from servofmu.physics.friction.ehl_per_contact import (
     entrainment_speed,
     hydrodynamic_rolling_force,
     rolling_radii,
 )
-from servofmu.physics.equilibrium import axial_state
-from servofmu.physics.friction_models import skf_loads
-from servofmu.physics.grease_torque import GreaseTorqueTerm
-from servofmu.physics.units import RPM
+from servofmu.physics.friction.grease import GreaseTorqueTerm
+from servofmu.physics.friction.models import skf_loads
+from servofmu.physics.kernels.units import RPM
 
 T_COLD, W = 233.15, math.radians(10.0)  # −40 °C, Yu's assumed 10 °/s
 
@@ -181,7 +181,7 @@ def _g1074_on(bearing_values):
 def test_grease_term_on_the_test_bearing_gives_the_datasheet_numbers():
     # the calibrated set on a pair of 6204s (the JIS K 2220 bearing) at the test's −40 °C and
     # 1 r/min: each bearing runs at the datasheet's 50 mN·m and starts at its 99 mN·m
-    from servofmu.physics.presets import bearing_values
+    from servofmu.parameters.presets import bearing_values
 
     params, _ = _g1074_on(bearing_values(catalog.bearing("6204"))[0])
     params |= {"housing_outer_diameter": 0.07, "shaft_bore": 0.0}
@@ -215,7 +215,11 @@ def test_datasheet_calibration_poor_fit_with_inconsistent_points(monkeypatch):
     # two points of one grease that follow the law give it back; a third 50 % off is a
     # POOR FIT (rms relative residual above 10 %)
     from servofmu.calibration import datasheet as ds
-    from servofmu.physics.grease_torque import GreaseTorquePoint, base_oil_viscosity, torque_test
+    from servofmu.physics.friction.grease import (
+        GreaseTorquePoint,
+        base_oil_viscosity,
+        torque_test,
+    )
 
     rig, visc = torque_test("jis_k2220"), base_oil_viscosity("molykote_g1074")
     term = GreaseTorqueTerm(12.0, 2.5, rig.speed)
@@ -277,7 +281,7 @@ def test_the_grease_variant_is_what_the_calibration_writes():
     from servofmu.build.ssp import SSP_DIR
     from servofmu.build.xmlsafe import parse
     from servofmu.calibration.datasheet import GREASE_PARAMETERS
-    from servofmu.physics.bearing_parameters import parameter
+    from servofmu.parameters.bearing import parameter
 
     path = SSP_DIR / "seeker_gimbal" / "variants" / "grease_g1074.ssv"
     bound = {}

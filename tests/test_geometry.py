@@ -5,8 +5,8 @@ import re
 import numpy as np
 import pytest
 
-from servofmu.physics import catalog
-from servofmu.physics.geometry import (
+from servofmu.parameters import catalog
+from servofmu.physics.contact.geometry import (
     ball_diameter_from_grooves,
     first_contact_offset,
     free_contact_angle,
@@ -95,7 +95,7 @@ def test_race_geometry_properties(b71803):
 )
 def test_clearance_from_contact_angle_refuses_what_cannot_be_a_groove(args, message):
     """f_i + f_o < 1 would give a negative clearance silently (found while documenting it)."""
-    from servofmu.physics.geometry import clearance_from_contact_angle
+    from servofmu.physics.contact.geometry import clearance_from_contact_angle
 
     with pytest.raises(ValueError, match=re.escape(message)):
         clearance_from_contact_angle(*args)

@@ -6,9 +6,9 @@ import math
 
 import pytest
 
-from servofmu.physics import catalog
-from servofmu.physics import grease_torque as gt
-from servofmu.physics.units import RPM
+from servofmu.parameters import catalog
+from servofmu.physics.friction import grease as gt
+from servofmu.physics.kernels.units import RPM
 
 W1 = 1.0 * RPM  # 1 r/min
 
@@ -109,8 +109,13 @@ def test_every_data_value_has_provenance():
             for v in node:
                 yield from walk(v)
 
-    for table in ("grease_torques", "friction_measurements", "skf_friction"):
-        entries = list(walk(catalog._table(table)))
+    from servofmu.papers.validation import _measurements
+
+    tables = {"grease_torques": catalog._table("grease_torques"),
+              "friction_measurements": _measurements(),
+              "skf_friction": catalog._table("skf_friction")}  # fmt: skip
+    for table, data in tables.items():
+        entries = list(walk(data))
         assert entries, table
         for e in entries:
             value, _ = catalog.quantity(e, table)

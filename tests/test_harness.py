@@ -26,7 +26,7 @@ from servofmu.harness import (
 from servofmu.harness import master as master_module
 from servofmu.harness.master import order_components
 from servofmu.harness.units import read_results
-from servofmu.physics.actuator import Actuator, output_angle, reduction_ratio
+from servofmu.physics.drives.actuator import Actuator, output_angle, reduction_ratio
 
 
 @pytest.fixture(scope="module")
@@ -628,8 +628,8 @@ def test_the_gimbal_holds_10_deg_s_exactly_where_its_motor_can(out, celsius, flo
     Below the data the flag is set and each warning of the bearing comes once, naming the
     temperature."""
     from servofmu.harness import HarnessError
+    from servofmu.parameters.bearing import default_parameters, pair_from_parameters
     from servofmu.physics.bearing import BearingModel
-    from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
 
     motor = _ssv_reals(SSP_DIR / "seeker_gimbal" / "motor.ssv")
     volts = _ssv_reals(SSP_DIR / "seeker_gimbal" / "controller.ssv")["output_max"]

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from servofmu.physics import hertz
+from servofmu.physics.contact import hertz
 
 STEEL_ETA = 2 * (1 - 0.3**2) / 206.9e9  # Harris's steel–steel compliance [1/Pa]
 
@@ -160,7 +160,7 @@ def test_the_scalar_ellipticity_equals_the_interpolated_one():
     ball–groove contacts."""
     import numpy as np
 
-    from servofmu.physics.hertz import ellipticity
+    from servofmu.physics.contact.hertz import ellipticity
 
     f = np.linspace(0.002, 0.9998, 4001)
     scalar = np.array([ellipticity(float(x)) for x in f])

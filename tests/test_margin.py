@@ -27,8 +27,8 @@ from servofmu.margin import (
 from servofmu.margin.inputs import Resistance
 from servofmu.margin.standard import motorisation_ratio
 from servofmu.margin.study import margin_terms, row_flags, row_verdict
+from servofmu.parameters.bearing import pair_from_parameters
 from servofmu.physics.bearing import BearingModel, operating_outputs
-from servofmu.physics.bearing_parameters import pair_from_parameters
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 CATALOG = EXAMPLES / "my_gimbal_catalog.toml"

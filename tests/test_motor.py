@@ -1,4 +1,4 @@
-"""The DC motor (physics.motor and the DCMotor FMU) against the ODE as written, integrated by
+"""The DC motor (physics.drives.motor and the DCMotor FMU) against the ODE as written, integrated by
 scipy.integrate.solve_ivp, never against the module's own matrices:
 
     L·di/dt = V − R·i − k_e·ω,   J·dω/dt = k_t·i − b·ω − T,   dφ/dt = ω.
@@ -12,7 +12,7 @@ import pytest
 from fmu_helpers import Fmu
 from scipy.integrate import solve_ivp
 
-from servofmu.physics import motor
+from servofmu.physics.drives import motor
 
 #: Not the defaults, and k_t ≠ k_e, so that a swapped or scaled constant shows.
 P = motor.DCMotorParameters(

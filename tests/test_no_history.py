@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-DATA = ROOT / "fmu_src" / "servofmu" / "physics" / "data"
+DATA = ROOT / "fmu_src" / "servofmu" / "parameters" / "data"
 #: Generated or third-party files, and this test (its examples are history on purpose).
 SKIP = ("docs/_build/", "docs/_generated/", "docs/auto_examples/", "docs/api/generated/",
         "build/export/src/", "build/out/", "tests/test_no_history.py")  # fmt: skip
@@ -113,7 +113,8 @@ def test_the_research_log_pattern(text, found):
 def test_the_files_include_code_tests_and_every_catalogue():
     assert set(CATALOGUES) <= set(FILES)
     for name in ("README.md", "fmu_src/servofmu/fmus/runtime.py", "tests/test_readme.py",
-                 "harness/master.py", "fmu_src/servofmu/physics/data/lubricants.toml"):  # fmt: skip
+                 "harness/master.py",
+                 "fmu_src/servofmu/parameters/data/lubricants.toml"):  # fmt: skip
         assert name in FILES, name
 
 

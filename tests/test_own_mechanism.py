@@ -21,7 +21,7 @@ from fmu_helpers import Fmu
 from servofmu.build.mechanism import open_mechanism
 from servofmu.cli import main
 from servofmu.physics.bearing import BearingModel, BearingPair
-from servofmu.physics.units import DEG, NMM, celsius_to_kelvin
+from servofmu.physics.kernels.units import DEG, NMM, celsius_to_kelvin
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = ROOT / "examples" / "my_gimbal_catalog.toml"

@@ -381,7 +381,7 @@ def test_cli_rejects_unknown_paper(capsys):
 
 def test_coefficient_records_hold_the_code_calibration():
     # data/coefficients.toml (the FMU defaults) must equal what servofmu.papers.yu2017 fits
-    from servofmu.physics import catalog
+    from servofmu.parameters import catalog
 
     s0, mu = yu2017.calibrated_coefficients()
     record = catalog.coefficients("yu2017_gimbal")
@@ -391,7 +391,7 @@ def test_coefficient_records_hold_the_code_calibration():
 
 
 def test_ning_spacer_record_holds_the_code_calibration():
-    from servofmu.physics import catalog
+    from servofmu.parameters import catalog
 
     loop = {m.name: m for m in catalog.mounting("ning_space_shaft").loop.members}
     spacer = ning.calibrate_spacer()

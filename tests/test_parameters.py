@@ -17,9 +17,8 @@ from fmu_helpers import Fmu
 from servofmu.build import catalogs
 from servofmu.build.archive import read_member
 from servofmu.build.xmlsafe import parse
-from servofmu.physics import catalog
-from servofmu.physics.bearing import BearingModel, BearingPair
-from servofmu.physics.bearing_parameters import (
+from servofmu.parameters import catalog
+from servofmu.parameters.bearing import (
     BEARING_FIELDS,
     PARAMETER_NAMES,
     PARAMETERS,
@@ -29,8 +28,9 @@ from servofmu.physics.bearing_parameters import (
     parameter_problems,
     resolve,
 )
-from servofmu.physics.geometry import BallBearing
-from servofmu.physics.preload import LoopMember
+from servofmu.physics.bearing import BearingModel, BearingPair
+from servofmu.physics.contact.geometry import BallBearing
+from servofmu.physics.pair.preload import LoopMember
 
 EXAMPLE = Path(__file__).parents[1] / "examples" / "my_gimbal_catalog.toml"
 OUTPUTS = ("running_torque", "breakaway_torque", "preload", "contact_angle", "axial_stiffness",
@@ -143,7 +143,7 @@ def _preload(p, temperatures):
 
 def test_arrangement_flips_the_shaft_and_housing_growth():
     """Face-to-face: a warmer shaft (longer) raises the preload, a warmer housing relieves it;
-    back-to-back the other way round (physics/preload.py ARRANGEMENTS). Rigid members loop, no
+    back-to-back the other way round (physics/pair/preload.py ARRANGEMENTS). Rigid members loop, no
     fits, so only the axial terms act."""
     base = default_parameters("yu2017_gimbal_rigid") | {"outer_interference": 0.0}
     t0 = base["assembly_temperature"]
@@ -449,7 +449,11 @@ def test_the_bearing_fields_are_the_bearing_records():
 def test_the_examples_in_the_docstrings_run():
     import doctest
 
-    from servofmu.physics import bearing_parameters, parameter_table, preload, presets, viscosity
+    from servofmu.parameters import bearing as bearing_parameters
+    from servofmu.parameters import presets
+    from servofmu.parameters import table as parameter_table
+    from servofmu.physics.lubrication import viscosity
+    from servofmu.physics.pair import preload
 
     for module in (bearing_parameters, parameter_table, presets, preload, viscosity):
         result = doctest.testmod(module)

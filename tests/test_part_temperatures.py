@@ -24,7 +24,7 @@ OUTPUTS = (
 @pytest.fixture(scope="module")
 def library():
     # the FMU's defaults: the Yu gimbal with its calibrated coefficients
-    from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
+    from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 
     return BearingModel(pair_from_parameters(default_parameters("yu2017_gimbal")))
 
@@ -137,7 +137,7 @@ def test_actuator_equal_part_temperatures_give_the_uniform_outputs_exactly(fmus,
 def test_actuator_support_pair_follows_its_part_temperatures(fmus):
     # a cold housing around warm rings and screw (a chamber cooling the actuator): the support
     # pair's thermal preload, hence its stiffness, is the library's at those part temperatures
-    from servofmu.physics.actuator import Actuator, ActuatorModel
+    from servofmu.physics.drives.actuator import Actuator, ActuatorModel
 
     temps = {**_all(293.15), "housing_temperature": 253.15, "outer_ring_temperature": 263.15}
     fmu = _actuator(fmus, "p", temperature_mode="parts", **temps)
@@ -161,7 +161,7 @@ def test_actuator_support_pair_follows_its_part_temperatures(fmus):
 
 
 def test_actuator_library_names_a_bad_part_temperature():
-    from servofmu.physics.actuator import Actuator, ActuatorModel
+    from servofmu.physics.drives.actuator import Actuator, ActuatorModel
 
     model = ActuatorModel(Actuator.from_catalog("liu2014_ema"))
     with pytest.raises(ValueError, match="shaft_temperature = nan"):

@@ -23,7 +23,7 @@ from pathlib import Path
 import pytest
 
 from servofmu.build.exportlib import compiled_export
-from servofmu.physics import continuation
+from servofmu.physics import compiled
 
 PLAIN = Path(__file__).resolve().parent / "robustness" / "plain_fmpy.py"
 NAMES = ("BearingFriction", "ActuatorStiffness", "DCMotor", "ServoController", "ThermalNetwork")
@@ -141,7 +141,13 @@ def _kernels_said(stdout: str) -> list[str]:
 
 def _shipped_kernels(fmu: Path) -> list[str]:
     with zipfile.ZipFile(fmu) as z:
-        return [n for n in z.namelist() if n.startswith("resources/servofmu/physics/_pair_kernels")]
+        return [
+            n
+            for n in z.namelist()
+            if n.startswith("resources/servofmu/physics/")
+            and n.rpartition("/")[2].startswith("_")
+            and n.endswith((".so", ".pyd"))
+        ]
 
 
 def test_the_fmu_ships_its_compiled_kernels_and_says_which_run(plain_python, fmus):
@@ -151,9 +157,9 @@ def test_the_fmu_ships_its_compiled_kernels_and_says_which_run(plain_python, fmu
     assert proc.returncode == 0 and proc.stdout.rstrip().endswith("done"), proc.stderr[-2000:]
     said = _kernels_said(proc.stdout)
     shipped = _shipped_kernels(fmus["BearingFriction"])
-    if continuation.IMPLEMENTATION == "compiled":
-        assert len(shipped) == 1, shipped
-        assert said and f"per-step kernels compiled ({Path(shipped[0]).name})" in said[0], said
+    if compiled.IMPLEMENTATION == "compiled":
+        assert len(shipped) == len(compiled.MODULES), shipped
+        assert said and f"per-step kernels {compiled.describe()}" in said[0], said
     else:  # an install without a compiler: nothing to ship, and the FMU says why
         assert shipped == [] and said and "per-step kernels Python (" in said[0], said
 
@@ -169,7 +175,7 @@ def test_an_fmu_built_without_compiled_kernels_runs_python_and_says_so(
     copy = tmp_path / "copy"
     with zipfile.ZipFile(built) as z:
         z.extractall(copy)
-    for f in (copy / "resources" / "servofmu" / "physics").glob("_pair_kernels*"):
+    for f in (copy / "resources" / "servofmu" / "physics").rglob("_*.so"):
         f.unlink()
     info_file = copy / "resources" / "servofmu_build.json"
     info = json.loads(info_file.read_text())

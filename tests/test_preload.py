@@ -3,10 +3,10 @@ import math
 import numpy as np
 import pytest
 
-from servofmu.physics import catalog
+from servofmu.parameters import catalog
 from servofmu.physics.bearing import effective_shim, loop_closure, thermal_state
-from servofmu.physics.equilibrium import axial_force, axial_state, offset_for_axial_force
-from servofmu.physics.preload import (
+from servofmu.physics.contact.equilibrium import axial_force, axial_state, offset_for_axial_force
+from servofmu.physics.pair.preload import (
     loop_interference,
     pair_axial_stiffness,
     pair_equilibrium,
@@ -107,7 +107,7 @@ def test_scalar_and_vectorised_mean_offset_agree(yu_pair):
     # the per-step path solves one state with scipy's brentq, curves use the elementwise
     # Chandrupatla solver: the same root of the loop compatibility
     from servofmu.physics.bearing import thermal_state
-    from servofmu.physics.preload import mean_offset
+    from servofmu.physics.pair.preload import mean_offset
 
     for t in (233.15, 273.15, 300.0):
         th = thermal_state(yu_pair, t)

@@ -21,7 +21,7 @@ import pytest
 
 import servofmu
 from servofmu.build.ssp import SSP_DIR, systems
-from servofmu.physics import continuation
+from servofmu.physics import compiled
 
 ROOT = Path(__file__).resolve().parents[1]
 BIN = Path(sys.executable).parent
@@ -99,28 +99,38 @@ def test_the_wheel_holds_what_every_command_reads(dist):
             assert f"servofmu/examples/{f.relative_to(ROOT / 'examples').as_posix()}" in names
     for f in (ROOT / "build" / "model_descriptions").glob("*.xml"):
         assert f"servofmu/build/model_descriptions/{f.name}" in names
-    for f in (ROOT / "fmu_src" / "servofmu" / "physics" / "data").glob("*.toml"):
-        assert f"servofmu/physics/data/{f.name}" in names
+    for f in (ROOT / "fmu_src" / "servofmu" / "parameters" / "data").glob("*.toml"):
+        assert f"servofmu/parameters/data/{f.name}" in names
     with tarfile.open(sdist) as tf:  # the sdist keeps the project's own build/ package
         assert any(n.endswith("/build/fmu.py") for n in tf.getnames())
 
 
 def test_the_sdist_carries_the_kernels_source_and_the_wheel_their_build(dist, user):
-    # the wheel is built from the sdist: pair_kernels.py compiles there (Cython is a build
+    # the wheel is built from the sdist: the compiled modules compile there (Cython is a build
     # requirement only); an installed wheel without Cython runs the compiled module
     sdist, wheel = dist
     with tarfile.open(sdist) as tf:
         names = tf.getnames()
-    for source in ("setup.py", "physics/pair_kernels.py", "physics/_cython_shadow.py"):
+    for source in ("setup.py", "physics/pair/continuation.py", "physics/kernels/_cython_shadow.py"):
         assert any(n.endswith(f"/{source}") for n in names), source
     assert not any("/.setuptools-build/" in n for n in names)  # generated copies stay out
     with zipfile.ZipFile(wheel) as zf:
-        compiled = [n for n in zf.namelist() if n.startswith("servofmu/physics/_pair_kernels")]
-    if continuation.IMPLEMENTATION == "compiled":  # this machine compiles the kernels
-        assert len(compiled) == 1 and compiled[0].endswith(".so"), compiled
-    code = "from servofmu.physics import continuation as c; print(c.describe())"
+        names = zf.namelist()
+    twins = [
+        n
+        for n in names
+        if n.startswith("servofmu/physics/") and n.rpartition("/")[2].startswith("_")
+        and n.endswith(".so")
+    ]  # fmt: skip
+    for name in compiled.MODULES:  # the sources the twins' SOURCE_HASH covers, .pxd included
+        path = "servofmu/physics/" + name.replace(".", "/")
+        assert f"{path}.py" in names, path
+        assert not Path(ROOT / "fmu_src" / f"{path}.pxd").is_file() or f"{path}.pxd" in names
+    if compiled.IMPLEMENTATION == "compiled":  # this machine compiles the kernels
+        assert len(twins) == len(compiled.MODULES), twins
+    code = "from servofmu.physics import compiled as c; print(c.describe())"
     said = _run([user[0], "-c", code], cwd="/").stdout
-    assert said.startswith("compiled (" if compiled else "Python ("), said
+    assert said.startswith("compiled (" if twins else "Python ("), said
 
 
 @pytest.fixture(scope="module")

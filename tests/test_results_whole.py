@@ -183,7 +183,7 @@ def test_a_second_signal_during_a_sweeps_cleanup_loses_no_row(monkeypatch, sigte
     import dask.distributed
 
     from servofmu.harness.sweep import ModelTask, grid_points, run_sweep
-    from servofmu.physics.bearing_parameters import default_parameters
+    from servofmu.parameters.bearing import default_parameters
 
     real = dask.distributed.as_completed
 

@@ -7,9 +7,9 @@ import math
 import numpy as np
 import pytest
 
-from servofmu.physics import catalog
-from servofmu.physics import rolling_friction as rf
-from servofmu.physics.units import RPM
+from servofmu.parameters import catalog
+from servofmu.physics.friction import skf2004 as rf
+from servofmu.physics.kernels.units import RPM
 
 # 6204 (d = 20, D = 47 mm) with the series-62 constants; 7205 (25 × 52) with 72 B's.
 D62 = dict(r1=3.9e-7, r2=1.7, s1=3.23e-3, s2=36.5, kz=3.1)

@@ -189,9 +189,9 @@ def test_chamber_transient_shaft_lags_and_preload_departs_by_the_library_amount(
     """The gimbal's chamber steps: the steel shaft lags the aluminium frame, and the transient
     preload differs from the quasi-static one by what the bearing library gives at the
     recorded part temperatures against the chamber temperature (computed here)."""
-    from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
-    from servofmu.physics.pair_state import operating_outputs
-    from servofmu.physics.temperatures import PartTemperatures
+    from servofmu.parameters.bearing import default_parameters, pair_from_parameters
+    from servofmu.physics.pair.state import operating_outputs
+    from servofmu.physics.thermal.temperatures import PartTemperatures
 
     res = results["chamber_transient"]
     # bearing.ssv of seeker_gimbal_chamber binds the Yu gimbal's catalogue values

@@ -102,7 +102,7 @@ def test_thermal_systems_bind_the_network_presets(name, preset, ssv):
     """The ThermalNetwork of each thermal system (and Ning's chamber-air variant) carries its
     preset's values exactly (the library's derived parameters), and the bearing reads the
     network's part temperatures."""
-    from servofmu.physics import thermal_network as tn
+    from servofmu.physics.thermal import network as tn
 
     def values(ssv):
         root = etree.parse(str(SSP_DIR / name / ssv)).getroot()

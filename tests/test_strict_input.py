@@ -16,7 +16,7 @@ import pytest
 
 from servofmu import cli
 from servofmu.build import schema
-from servofmu.physics.units import TO_SI, to_si
+from servofmu.physics.kernels.units import TO_SI, to_si
 
 
 def _q(value, unit):
@@ -137,7 +137,7 @@ def test_every_problem_of_a_file_is_listed(tmp_path):
 @pytest.mark.parametrize("table", sorted(schema.ENTRY_SCHEMAS))
 def test_the_packages_tables_fit_their_schemas(table):
     """A key the schema does not know fails here: add it to build/schema.py with its unit."""
-    with resources.files("servofmu.physics").joinpath(f"data/{table}.toml").open("rb") as fh:
+    with resources.files("servofmu.parameters").joinpath(f"data/{table}.toml").open("rb") as fh:
         data = tomllib.load(fh)
     problems = []
     for key, entry in data.items():
@@ -146,7 +146,7 @@ def test_the_packages_tables_fit_their_schemas(table):
 
 
 def test_the_schema_finds_a_misspelt_key_in_the_packages_table():
-    with resources.files("servofmu.physics").joinpath("data/mountings.toml").open("rb") as fh:
+    with resources.files("servofmu.parameters").joinpath("data/mountings.toml").open("rb") as fh:
         entry = dict(tomllib.load(fh)["ning_space_shaft"])
     entry["arangement"] = entry.pop("arrangement")
     assert schema.entry_problems("mountings", "ning_space_shaft", entry, "x:")
@@ -154,7 +154,8 @@ def test_the_schema_finds_a_misspelt_key_in_the_packages_table():
 
 @pytest.mark.parametrize("unit", [*TO_SI, "degC"])
 def test_pint_agrees_with_every_conversion_factor(unit):
-    """The factors servofmu converts catalogue units with (physics/units.py), against pint."""
+    """The factors servofmu converts catalogue units with (physics/kernels/units.py), against
+    pint."""
     ureg = schema.registry()
     q = schema.pint_quantity(unit)
     if unit == "degC":
@@ -301,7 +302,7 @@ def test_the_fmus_import_no_schema_library(fmus):
 def test_the_merged_catalogue_table_is_built_once_per_change():
     """Not a timing: the merged table is built once per change of the catalogue, not per
     lookup (a lookup copied the table: quadratic in the number of entries)."""
-    from servofmu.physics import catalog
+    from servofmu.parameters import catalog
 
     q = {"value": 70, "unit": "GPa", "kind": "assumed", "ref": "x"}
     entry = {"name": "x", "youngs_modulus": q}

@@ -19,8 +19,8 @@ from servofmu.harness.sweep import (
     run_sweep,
     sample_points,
 )
+from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 from servofmu.physics.bearing import BearingModel
-from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
 
 BASE = default_parameters("yu2017_gimbal")
 

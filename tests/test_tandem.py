@@ -1,7 +1,7 @@
 """A tandem pair (the thermal loop differs between back-to-back, face-to-face and tandem;
 these tests say how): both bearings face the same way and share the thrust of
 a force or spring preload and the axial load. The members between them do not change that
-thrust, they shift it between A and B (physics/preload.py ARRANGEMENTS, tandem_offsets).
+thrust, they shift it between A and B (physics/pair/preload.py ARRANGEMENTS, tandem_offsets).
 
 The checks are the model's own equations evaluated by hand from the parameters: the shared
 thrust, the mismatch a_B − a_A = L_shaft·α_shaft·ΔT_shaft − L_housing·α_housing·ΔT_housing,
@@ -16,13 +16,13 @@ import numpy as np
 import pytest
 from fmu_helpers import Fmu
 
-from servofmu.physics.actuator import check_support_pair
+from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 from servofmu.physics.bearing import BearingModel, load_state, thermal_state
-from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
-from servofmu.physics.equilibrium import axial_force, axial_state, offset_for_axial_force
-from servofmu.physics.mounting import Mounting
-from servofmu.physics.preload import LoopMember, tandem_equilibrium
-from servofmu.physics.temperatures import PartTemperatures
+from servofmu.physics.contact.equilibrium import axial_force, axial_state, offset_for_axial_force
+from servofmu.physics.drives.actuator import check_support_pair
+from servofmu.physics.pair.mounting import Mounting
+from servofmu.physics.pair.preload import LoopMember, tandem_equilibrium
+from servofmu.physics.thermal.temperatures import PartTemperatures
 
 P0 = 40.0  # N, the set's preload
 # the rigid-tube gimbal without fits: only the axial terms act
@@ -165,7 +165,9 @@ def test_the_fmu_runs_a_tandem_pair_as_the_library_does(fmus):
 def test_the_tandem_examples_run():
     import doctest
 
-    from servofmu.physics import actuator, pair, preload
+    from servofmu.physics.drives import actuator
+    from servofmu.physics.pair import configuration as pair
+    from servofmu.physics.pair import preload
 
     names = {"tandem_offsets", "tandem_axial_stiffness", "tandem_equilibrium", "is_tandem",
              "tandem_preload", "check_support_pair"}  # fmt: skip

@@ -11,9 +11,9 @@ from fmpy.fmi1 import FMICallException
 from fmu_helpers import Fmu
 from scipy.integrate import quad, solve_ivp
 
-from servofmu.physics import catalog
-from servofmu.physics import thermal_network as tn
+from servofmu.parameters import catalog
 from servofmu.physics.materials import Material
+from servofmu.physics.thermal import network as tn
 
 SIGMA = 5.670374419e-8
 OUTPUTS = (

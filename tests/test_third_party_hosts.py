@@ -69,7 +69,7 @@ def test_libcosim_gives_the_same_results(fmus, name):
     assert ex.simulate_until(target_time=round(STEP * STEPS * 1e9))
     got = observer.last_real_values(idx, [vr[n] for n in outputs])
     # libcosim sets the inputs before initialization, the fmpy reference after it: the
-    # bearing's continuation (physics/continuation.py) then starts from another state and
+    # bearing's continuation (physics/compiled.py) then starts from another state and
     # agrees to its stated 1e-9; the other FMUs are identical
     rtol = 1e-9 if name == "BearingFriction" else 1e-12
     np.testing.assert_allclose(got, fmpy_reference(fmus[name], inputs, outputs), rtol=rtol)
@@ -121,7 +121,7 @@ def test_plain_c_host_runs_every_fmu(fmus, c_host, tmp_path, name):
     inputs, outputs = CASES[name]
     got = [final[n] for n in outputs]
     # libcosim sets the inputs before initialization, the fmpy reference after it: the
-    # bearing's continuation (physics/continuation.py) then starts from another state and
+    # bearing's continuation (physics/compiled.py) then starts from another state and
     # agrees to its stated 1e-9; the other FMUs are identical
     rtol = 1e-9 if name == "BearingFriction" else 1e-12
     np.testing.assert_allclose(got, fmpy_reference(fmus[name], inputs, outputs), rtol=rtol)
@@ -146,7 +146,7 @@ def test_plain_c_host_exits_normally(fmus, c_host, tmp_path, name):
     inputs, outputs = CASES[name]
     got = [last[1][n] for n in outputs]
     # libcosim sets the inputs before initialization, the fmpy reference after it: the
-    # bearing's continuation (physics/continuation.py) then starts from another state and
+    # bearing's continuation (physics/compiled.py) then starts from another state and
     # agrees to its stated 1e-9; the other FMUs are identical
     rtol = 1e-9 if name == "BearingFriction" else 1e-12
     np.testing.assert_allclose(got, fmpy_reference(fmus[name], inputs, outputs), rtol=rtol)

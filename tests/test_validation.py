@@ -9,10 +9,10 @@ from pathlib import Path
 import pytest
 
 from servofmu import cli
-from servofmu.papers import run
+from servofmu.papers import run, validation
 from servofmu.papers.report import STATUSES
-from servofmu.physics import catalog
-from servofmu.physics.catalog import PROVENANCE_KINDS
+from servofmu.parameters import catalog
+from servofmu.parameters.catalog import PROVENANCE_KINDS
 
 # computed/published as reported (commit of this test); a drift beyond 1e-3 fails.
 RATIOS = {
@@ -82,8 +82,8 @@ def test_statuses_follow_the_stated_tolerances(rep):
 
 def test_the_second_source_row_counts_the_recorded_sources(rep):
     """The validation wants two independent sources; while one is recorded the row says so and
-    names every candidate searched (data/friction_measurements.toml [[searched]])."""
-    data = catalog._table("friction_measurements")
+    names every candidate searched (papers/data/friction_measurements.toml [[searched]])."""
+    data = validation._measurements()
     recorded = [k for k, v in data.items() if isinstance(v, dict)]
     assert recorded == ["balan2015"]
     row = rows(rep)["validation.second_oil_source"]

@@ -4,8 +4,11 @@ import re
 import numpy as np
 import pytest
 
-from servofmu.physics import catalog
-from servofmu.physics.viscosity import walther_from_two_points, walther_kinematic_viscosity
+from servofmu.parameters import catalog
+from servofmu.physics.lubrication.viscosity import (
+    walther_from_two_points,
+    walther_kinematic_viscosity,
+)
 
 
 def yu_eq18_cst(t_k):

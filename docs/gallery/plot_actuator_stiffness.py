@@ -12,7 +12,7 @@ import os
 import matplotlib.pyplot as plt
 import numpy as np
 
-from servofmu.physics.actuator import Actuator, per_degree, stiffness_breakdown
+from servofmu.physics.drives.actuator import Actuator, per_degree, stiffness_breakdown
 
 COARSE = os.environ.get("SERVOFMU_GALLERY") == "coarse"  # the site's quick build
 moments = np.linspace(20.0, 300.0, 8 if COARSE else 57)  # N·m

@@ -5,7 +5,7 @@ Three friction models
 The same bearing pair under each of BearingFriction's friction models (``yu2017``,
 ``skf2004``, ``ehl_per_contact``), with and without a grease term calibrated on a grease
 datasheet (Molykote G-1074's −40 °C torque). The model is one parameter set
-(:mod:`servofmu.physics.bearing_parameters`): changing ``friction_model`` changes the torque
+(:mod:`servofmu.parameters.bearing`): changing ``friction_model`` changes the torque
 equations only, every thermal effect stays the same.
 """
 
@@ -14,8 +14,8 @@ import os
 import matplotlib.pyplot as plt
 import numpy as np
 
+from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 from servofmu.physics.bearing import BearingModel
-from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
 
 COARSE = os.environ.get("SERVOFMU_GALLERY") == "coarse"  # the site's quick build
 celsius = np.linspace(-50.0, 40.0, 10 if COARSE else 91)

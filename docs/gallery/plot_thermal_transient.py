@@ -3,7 +3,7 @@ Thermal transient of a gimbal
 =============================
 
 Yu's gimbal in a climatic chamber that cools in one step from +20 to −40 °C: the four part
-temperatures of :mod:`servofmu.physics.thermal_network` (frame, shaft, outer and inner
+temperatures of :mod:`servofmu.physics.thermal.network` (frame, shaft, outer and inner
 rings), and the preload of the bearing pair that reads them (``temperature_mode`` parts)
 against the preload with every part at the chamber temperature.
 """
@@ -13,8 +13,8 @@ import os
 import matplotlib.pyplot as plt
 import numpy as np
 
-from servofmu.physics import thermal_network as tn
 from servofmu.physics.bearing import BearingModel, BearingPair
+from servofmu.physics.thermal import network as tn
 
 COARSE = os.environ.get("SERVOFMU_GALLERY") == "coarse"  # the site's quick build
 h = 120.0 if COARSE else 20.0  # s, one step of the network

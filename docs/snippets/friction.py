@@ -1,5 +1,5 @@
 from servofmu.physics.bearing import BearingModel, BearingPair
-from servofmu.physics.bearing_parameters import default_parameters, pair_from_parameters
+from servofmu.parameters.bearing import default_parameters, pair_from_parameters
 
 skf = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
 out = BearingModel(skf).evaluate(233.15, 0.1745)  # −40 °C, 10 °/s

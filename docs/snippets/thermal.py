@@ -1,4 +1,4 @@
-from servofmu.physics import thermal_network as tn
+from servofmu.physics.thermal import network as tn
 from servofmu.physics.bearing import BearingPair
 
 pair = BearingPair.from_catalog("ning_space_shaft", "mos2_film")

@@ -76,12 +76,12 @@ def _catalog(args) -> int:
             print(catalogs.listing())
             return 0
         from servofmu.parameter_sets import write_ssv
-        from servofmu.physics.bearing_parameters import (
+        from servofmu.parameters.bearing import (
             DEFAULT_MOUNTING,
             default_parameters,
             default_sources,
         )
-        from servofmu.physics.presets import coefficient_set
+        from servofmu.parameters.presets import coefficient_set
 
         mounting = args.mounting or DEFAULT_MOUNTING
         kw = {"bearing": args.bearing, "lubricant": args.lubricant}
@@ -332,7 +332,7 @@ def _mounting_for(bearing: str) -> str:
     """The catalogue mounting of ``bearing`` when it has exactly one; otherwise the user must
     name it (the mounting decides fits, preload loop and materials: a wrong default fits
     nothing, or fits wrong coefficients)."""
-    from .physics import catalog
+    from .parameters import catalog
 
     keys = [k for k in catalog.keys("mountings") if catalog.mounting(k).bearing_key == bearing]
     if len(keys) == 1:
@@ -345,7 +345,7 @@ def _mounting_for(bearing: str) -> str:
     raise ValueError(
         f"--mounting is required: bearing {bearing} has {len(keys)} catalogue mountings, and "
         f"the one the data were measured on decides fits, preload loop and materials; name "
-        f"one of {keys} (physics/data/mountings.toml describes each)"
+        f"one of {keys} (parameters/data/mountings.toml describes each)"
     )
 
 
@@ -428,7 +428,7 @@ def _calibrate_data(args, mechanism) -> int:
         write_residuals,
         write_ssv,
     )
-    from .physics.bearing_parameters import (
+    from .parameters.bearing import (
         default_parameters,
         default_sources,
         pair_from_parameters,
@@ -456,7 +456,7 @@ def _calibrate_data(args, mechanism) -> int:
     for name in unknowns:
         if name not in UNKNOWNS:
             raise ValueError(f"--fit {args.fit}: {name!r} is not one of {list(UNKNOWNS)}")
-    from .physics.presets import coefficient_set
+    from .parameters.presets import coefficient_set
 
     before = coefficient_set(mounting).label
     data = read_measurements(args.data)
@@ -560,7 +560,7 @@ def _sweep_mechanism(args, mechanism) -> int:
         run_sweep,
         sample_points,
     )
-    from servofmu.physics.bearing_parameters import default_parameters
+    from servofmu.parameters.bearing import default_parameters
 
     out = Path(args.out or "out/sweep/results.csv")
     check_table_path(out)
@@ -949,14 +949,14 @@ def build_parser() -> argparse.ArgumentParser:
         "'speed [deg/s]', '[rad/s]' or '[rpm]' and 'direction' (forward/reverse); '#' lines "
         "are comments. Or, with --datasheet LUBRICANT, calibrate the grease term (grease_f0, "
         "grease_starting_ratio) on the grease's published low-temperature torque test "
-        "(physics/data/grease_torques.toml).",
+        "(parameters/data/grease_torques.toml).",
     )
     c.add_argument("data", nargs="?", help="CSV file of measured friction torque")
     c.add_argument(
         "--datasheet",
         metavar="LUBRICANT",
         help="calibrate the grease term on this grease's datasheet low-temperature torque "
-        "(ASTM D1478 / JIS K 2220 points of physics/data/grease_torques.toml) instead of DATA",
+        "(ASTM D1478 / JIS K 2220 points of parameters/data/grease_torques.toml) instead of DATA",
     )
     c.add_argument(
         "--test",

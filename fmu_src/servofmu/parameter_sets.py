@@ -16,7 +16,7 @@ from xml.etree.ElementTree import Comment, Element, SubElement, register_namespa
 
 from servofmu.files import write_text
 
-from .physics.bearing_parameters import PARAMETERS
+from .parameters.bearing import PARAMETERS
 
 SSV_NS = "http://ssp-standard.org/SSP1/SystemStructureParameterValues"
 #: The ParameterSet name of every .ssv of servofmu (ecos applies one name only).
@@ -101,7 +101,7 @@ def ssv_value(spec, value) -> tuple[str, str, str | None]:
 
     Examples
     --------
-    >>> from servofmu.physics.bearing_parameters import parameter
+    >>> from servofmu.parameters.bearing import parameter
     >>> ssv_value(parameter("lubrication"), "solid"), ssv_value(parameter("bore"), 0.017)
     (('Integer', '2', 'solid'), ('Real', '0.017', None))
     """

@@ -38,7 +38,7 @@ from pathlib import Path
 import numpy as np
 
 from servofmu.files import save_figure, written
-from servofmu.physics.units import DEG, NMM, ZERO_CELSIUS
+from servofmu.physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 
 from .. import load_system
 from .. import run as run_system
@@ -157,8 +157,8 @@ class Trace:
 def library_model(system):
     """The bearing library model of the system's ``bearing`` component: the FMU's defaults
     with the component's bindings (the quasi-static reference)."""
+    from servofmu.parameters.bearing import PARAMETERS, pair_from_parameters
     from servofmu.physics.bearing import BearingModel
-    from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters
 
     values = {p.name: p.default for p in PARAMETERS}
     specs = {p.name: p for p in PARAMETERS}

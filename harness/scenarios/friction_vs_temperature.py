@@ -19,7 +19,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from servofmu.files import save_figure
-from servofmu.physics.units import DEG, NMM, celsius_to_kelvin
+from servofmu.physics.friction import registry
+from servofmu.physics.kernels.units import DEG, NMM, celsius_to_kelvin
 
 from .. import load_system
 from .. import run as run_system
@@ -43,7 +44,9 @@ MOUNTINGS = {
 #: Yu 2017's measured (Fig 9) and computed (Fig 8) total friction torque at −40 °C [N·mm].
 YU_M40 = 3.17
 #: BearingFriction's friction models and what in each was calibrated (what its −40 °C value is).
-FRICTION_MODELS = {
+#: What this scenario's numbers are for each friction model (the models run are the
+#: registry's, servofmu.physics.friction.registry).
+MODEL_NOTES = {
     "yu2017": "s0 and μ calibrated on Yu's −40 °C values, in the yoke chosen knowing them: "
     "consistent with Yu, not a prediction",
     "skf2004": "SKF 2004 with catalogue constants (the 72 B series as labelled fallback for the "
@@ -51,6 +54,12 @@ FRICTION_MODELS = {
     "ehl_per_contact": "contact EHL rolling (Biboulet & Houpert, literature constants; Krytox "
     "density assumed) + Yu's hysteresis (α_r assumed) and spin (μ calibrated on Yu)",
 }
+
+
+def _note(model: str) -> str:
+    return MODEL_NOTES.get(model, "not assessed in this scenario")
+
+
 #: The variant with the grease term of Molykote G-1074 (ssp/seeker_gimbal/variants).
 GREASE_VARIANT = "grease_g1074"
 
@@ -133,11 +142,7 @@ def _models_note(yu: bool, grease: bool, mechanism) -> str:
             "bearing were packed full of it)"
         )
     if yu:
-        return (
-            text
-            + ". Calibrated: "
-            + "; ".join(f"{m}: {what}" for m, what in FRICTION_MODELS.items())
-        )
+        return text + ". Calibrated: " + "; ".join(f"{m}: {_note(m)}" for m in registry.names())
     coefficients = mechanism.coefficients.label if mechanism is not None else ""
     return text + (
         f". yu2017 and the hysteresis and spin of ehl_per_contact take the mechanism's "
@@ -182,7 +187,7 @@ def _model_table(system, kt, plateau, yu: bool = True, with_grease: bool = True)
     cold = celsius_to_kelvin(TEMPS_C[0])
     rows = []
     for grease in (False, True) if with_grease else (False,):
-        for model in FRICTION_MODELS:
+        for model in registry.names():
             variant = [GREASE_VARIANT] if grease else []
             res = run_system(
                 system,

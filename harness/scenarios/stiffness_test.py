@@ -7,7 +7,7 @@ The output angle of the system is the kinematic angle of the held motor (the act
 deflection of the actuator, so the measured stiffness also carries whatever the servo loop
 gives way under load (its integral action brings it back to the reference; the residual is
 reported). It is set next
-to the library's series stiffness (``physics.actuator.stiffness_breakdown``, support-bearing
+to the library's series stiffness (``physics.drives.actuator.stiffness_breakdown``, support-bearing
 extension included) and to Liu's measurement (100 N·m calibrated in the liu2014 report,
 200/300 N·m predictions there).
 """
@@ -19,8 +19,8 @@ from pathlib import Path
 import numpy as np
 
 from servofmu.papers.liu2014 import KEY, TABLE1, TEST_ANGLE
-from servofmu.physics.actuator import Actuator, per_degree, stiffness_breakdown
-from servofmu.physics.units import DEG
+from servofmu.physics.drives.actuator import Actuator, per_degree, stiffness_breakdown
+from servofmu.physics.kernels.units import DEG
 
 from .. import load_system
 from .. import run as run_system

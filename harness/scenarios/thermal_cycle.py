@@ -20,7 +20,8 @@ from pathlib import Path
 
 import numpy as np
 
-from servofmu.physics.units import NMM, UM, celsius_to_kelvin
+from servofmu.physics.friction import registry
+from servofmu.physics.kernels.units import NMM, UM, celsius_to_kelvin
 
 from .. import load_system
 from .. import run as run_system
@@ -31,13 +32,21 @@ LOW_C, HIGH_C = -60.0, 80.0  # °C, the alternating-temperature range
 TABLE_C = tuple(range(-60, 81, 20))  # °C, rows of the table on each branch
 MODELS_C = -40.0  # °C of the friction-model table
 #: BearingFriction's friction models, and what each is for Ning's dry MoS2 film.
-FRICTION_MODELS = {
+#: What this scenario's numbers are for each friction model (the models run are the
+#: registry's, servofmu.physics.friction.registry).
+MODEL_NOTES = {
     "yu2017": "Ning's hysteresis, sliding and inner-race spin (α_r and μ assumed): no fluid, "
     "no viscous term",
     "skf2004": "SKF 2004 with catalogue constants (72 B fallback) and its boundary μbl = 0.15 "
     "for lubricated contacts: a dry film is outside the model (no oil, no rolling term)",
     "ehl_per_contact": "as yu2017: no fluid, so no hydrodynamic rolling torque",
 }
+
+
+def _note(model: str) -> str:
+    return MODEL_NOTES.get(model, "not assessed in this scenario")
+
+
 #: Yu 2017's measured −40 °C torque of the gimbal's 71803 pair [N·mm]: another bearing, for scale.
 YU_M40 = 3.17
 
@@ -139,7 +148,7 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
             "Rows are interpolated on each branch at the listed temperatures.",
             f"friction models: the system held at {MODELS_C:g} °C, BearingFriction's "
             "friction_model set in it; "
-            + "; ".join(f"{m}: {what}" for m, what in FRICTION_MODELS.items())
+            + "; ".join(f"{m}: {_note(m)}" for m in registry.names())
             + f". Yu 2017's {YU_M40} N·mm is the gimbal's 71803 pair, not this bearing: a "
             "scale, not a reference.",
         ],
@@ -168,7 +177,7 @@ def _model_table(system, kt) -> Table:
     running and breakaway torque at steady state (2 s each)."""
     stop = 2.0
     rows = []
-    for model in FRICTION_MODELS:
+    for model in registry.names():
         res = run_system(
             system,
             parameters=[{"bearing.friction_model": model}],

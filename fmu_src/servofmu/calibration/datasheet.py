@@ -1,11 +1,11 @@
-"""Calibration of the grease term (:mod:`servofmu.physics.grease_torque`) on a grease
+"""Calibration of the grease term (:mod:`servofmu.physics.friction.grease`) on a grease
 datasheet's low-temperature torque test (``servofmu calibrate --datasheet LUBRICANT``).
 
-The datasheet points are data (``physics/data/grease_torques.toml``: the test's bearing, speed
+The datasheet points are data (``parameters/data/grease_torques.toml``: the test's bearing, speed
 and load, and the grease's published starting and running torques; its base-oil viscosities
-are its entry of ``physics/data/lubricants.toml``).
+are its entry of ``parameters/data/lubricants.toml``).
 For each point i, Palmgren's law at f0 = 1 gives u_i = M0(ν_i, n_test, dm_test)
-(:func:`~servofmu.physics.grease_torque.grease_factor`: f0_i = M_run,i/u_i), and
+(:func:`~servofmu.physics.friction.grease.grease_factor`: f0_i = M_run,i/u_i), and
 
 - f0 minimises Σ (f0·u_i/M_run,i − 1)², i.e. f0 = Σ(1/f0_i)/Σ(1/f0_i)² (relative least squares;
   one point: f0 = f0_1 exactly);
@@ -27,7 +27,7 @@ The result is a partial parameter set of the BearingFriction FMU: the grease's l
 since f0 holds with the viscosity it was calibrated with) with the grease term calibrated here
 (``grease_f0``, ``grease_starting_ratio``, ``grease_reference_speed``). The same calibration is
 what the lubricant's preset carries by default
-(:func:`~servofmu.physics.grease_torque.lubricant_term`); this command reports it, and
+(:func:`~servofmu.physics.friction.grease.lubricant_term`); this command reports it, and
 calibrates on one test of several.
 """
 
@@ -36,15 +36,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..physics.grease_torque import (
+from ..parameters.presets import lubricant_values
+from ..parameters.table import LUBRICANT_FIELDS, spec
+from ..physics.friction.grease import (
     base_oil_viscosity,
     fit_points,
     grease_torque_points,
     torque_test,
 )
-from ..physics.parameter_table import LUBRICANT_FIELDS, spec
-from ..physics.presets import lubricant_values
-from ..physics.units import CST, RPM, kelvin_to_celsius
+from ..physics.kernels.units import CST, RPM, kelvin_to_celsius
 from .fit import UNREPLICATED_LIMIT
 
 #: The parameters a datasheet calibration writes, in the order of the parameter table: the
@@ -120,7 +120,7 @@ def calibrate_datasheet(lubricant: str, test: str | None = None) -> DatasheetCal
 
     Parameters
     ----------
-    lubricant : key of ``[greases.KEY]`` in ``physics/data/grease_torques.toml``
+    lubricant : key of ``[greases.KEY]`` in ``parameters/data/grease_torques.toml``
     test : key of ``[tests.KEY]`` (``jis_k2220``, ``astm_d1478``)
 
     Returns
@@ -133,12 +133,12 @@ def calibrate_datasheet(lubricant: str, test: str | None = None) -> DatasheetCal
     """
     points = grease_torque_points(lubricant)
     if not points:
-        from ..physics.catalog import _table
+        from ..parameters.catalog import _table
 
         known = sorted(k for k, v in _table("grease_torques")["greases"].items() if v.get("points"))
         raise ValueError(
             f"--datasheet {lubricant!r}: no published low-temperature torque in "
-            f"physics/data/grease_torques.toml; greases with points: {known}"
+            f"parameters/data/grease_torques.toml; greases with points: {known}"
         )
     tests = sorted({p.test for p in points})
     if test is None:
@@ -220,7 +220,7 @@ def _warnings(cal: DatasheetCalibration, rig) -> list[str]:
     notes.append(
         f"the test bearing (d = {rig.bore * 1e3:g} mm, D = {rig.outer_diameter * 1e3:g} mm) is "
         "packed full; a bearing filled to 20-40 % churns less, so the term over-predicts it by "
-        "an unknown factor (limits: physics/grease_torque.py)"
+        "an unknown factor (limits: physics/friction/grease.py)"
     )
     if cal.test == "jis_k2220":
         notes.append(

@@ -5,7 +5,7 @@ being reported as a result.
 The model is the library's running torque of the pair (Yu 2017 eq 1–9 for grease; Ning's
 hysteresis, differential sliding and spin for a solid film), with the thermal coupling of
 frame, shaft and rings (Yu eq 10–17), built from the BearingFriction FMU's parameter set
-(:mod:`servofmu.physics.bearing_parameters`), so the fitted set gives the same torques in
+(:mod:`servofmu.parameters.bearing`), so the fitted set gives the same torques in
 the FMU. The unknowns are fitted with ``scipy.optimize.least_squares`` (trust-region
 reflective, within physical bounds).
 
@@ -50,9 +50,9 @@ from scipy.differentiate import jacobian
 from scipy.optimize import least_squares
 from scipy.stats import f as f_distribution
 
+from ..parameters.bearing import PARAMETER_NAMES, pair_from_parameters
 from ..physics.bearing import operating_outputs
-from ..physics.bearing_parameters import PARAMETER_NAMES, pair_from_parameters
-from ..physics.units import DEG
+from ..physics.kernels.units import DEG
 from .measurements import FrictionMeasurements
 
 
@@ -125,7 +125,7 @@ JACOBIAN_STEP = 1e-2
 
 def running_torque(parameters: Mapping[str, object], temperature, speed) -> np.ndarray:
     """Running friction torque [N·m] of the pair of parameter set ``parameters`` (names of
-    :data:`~servofmu.physics.bearing_parameters.PARAMETER_NAMES`) at temperatures [K] and
+    :data:`~servofmu.parameters.bearing.PARAMETER_NAMES`) at temperatures [K] and
     speed magnitudes [rad/s] (arrays of one shape), no external load: Yu 2017 eq 9 (grease)
     or Ning's sum (solid), through :mod:`servofmu.physics.bearing`."""
     return _running(_outputs(parameters, temperature, speed), temperature)

@@ -31,7 +31,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..physics.units import DEG, NMM, RPM, ZERO_CELSIUS
+from ..physics.kernels.units import DEG, NMM, RPM, ZERO_CELSIUS
 
 #: Valid temperatures of the bearing model [K] (the BearingFriction FMU's input range).
 TEMPERATURE_RANGE = (173.15, 473.15)

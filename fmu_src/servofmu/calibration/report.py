@@ -11,7 +11,7 @@ import numpy as np
 from servofmu.files import save_figure, write_text, written
 
 from ..parameter_sets import write_ssv
-from ..physics.units import DEG, NMM, ZERO_CELSIUS
+from ..physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 from .fit import UNKNOWNS, Calibration, running_torque
 
 #: Plot markers of the measured points per direction.
@@ -135,10 +135,10 @@ def _toml_table(items: dict) -> str:
 
 def write_coefficients(cal: Calibration, path, mounting: str, data, sources) -> Path:
     """The fitted coefficients as a user catalogue (``[coefficients.MOUNTING]``, the format of
-    ``physics/data/coefficients.toml``): each fitted value with kind ``calibrated``, its
+    ``parameters/data/coefficients.toml``): each fitted value with kind ``calibrated``, its
     standard error and the data it came from; the coefficients not fitted with the value and
     provenance they had (``sources``: the preset's, e.g.
-    :func:`~servofmu.physics.bearing_parameters.default_sources`). With the catalogue that
+    :func:`~servofmu.parameters.bearing.default_sources`). With the catalogue that
     defines the mounting, ``servofmu build --catalog …`` then builds FMUs and systems whose
     defaults are the calibrated set (a user's set of a mounting takes precedence over the
     package's).
@@ -169,8 +169,8 @@ def write_coefficients(cal: Calibration, path, mounting: str, data, sources) -> 
     >>> import tempfile
     >>> from servofmu.calibration import calibrate
     >>> from servofmu.calibration.synthetic import synthesise, write_measurements
-    >>> from servofmu.physics import catalog
-    >>> from servofmu.physics.bearing_parameters import default_parameters, default_sources
+    >>> from servofmu.parameters import catalog
+    >>> from servofmu.parameters.bearing import default_parameters, default_sources
     >>> from servofmu.build import catalogs
     >>> p = default_parameters("yu2017_gimbal_printed")
     >>> data = synthesise(p | {"sliding_friction": 0.1}, [233.15, 263.15, 293.15], [0.17])
@@ -189,7 +189,7 @@ def write_coefficients(cal: Calibration, path, mounting: str, data, sources) -> 
     """
     import hashlib
 
-    from ..physics.catalog import CALIBRATION_RECORD, COEFFICIENT_FIELDS, PROVENANCE_KINDS
+    from ..parameters.catalog import CALIBRATION_RECORD, COEFFICIENT_FIELDS, PROVENANCE_KINDS
 
     path = Path(path)
     d = cal.data

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from ..files import write_text
-from ..physics.units import DEG, NMM, ZERO_CELSIUS
+from ..physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 from .fit import running_torque
 from .measurements import FrictionMeasurements
 

@@ -1,11 +1,11 @@
 """ActuatorStiffness FMU: stiffness of gear train → ball screw → crank-slider linkage → output
 shaft, with the screw's support bearings (Liu 2014 and this project's extension), at the
 output shaft for the current angle, hinge moment and temperature
-(:class:`servofmu.physics.actuator.ActuatorModel`).
+(:class:`servofmu.physics.drives.actuator.ActuatorModel`).
 
 The angle comes from the ``angle`` input (output shaft) or, with the parameter
 ``motor_side_inputs``, from ``motor_angle`` (motor shaft) through the exact inverse of the
-crank-slider (:func:`servofmu.physics.actuator.output_angle`): a system can then connect its
+crank-slider (:func:`servofmu.physics.drives.actuator.output_angle`): a system can then connect its
 motor to the actuator directly, without a LinearTransformation, which can only be linear.
 
 The support-bearing pair is given by numbers, like BearingFriction's pair: the parameters
@@ -37,15 +37,15 @@ from servofmu.fmus.part_temperatures import (  # noqa: E402
     temperatures,
 )
 from servofmu.fmus.runtime import ServoSlave  # noqa: E402
-from servofmu.physics.actuator import Actuator, ActuatorModel, check_support_pair  # noqa: E402
-from servofmu.physics.actuator import output_angle as mechanism_output_angle  # noqa: E402
-from servofmu.physics.bearing_parameters import (  # noqa: E402
+from servofmu.parameters.bearing import (  # noqa: E402
     STATE_PARAMETERS,
     default_parameters,
     default_sources,
     pair_from_parameters,
     prefixed_specs,
 )
+from servofmu.physics.drives.actuator import Actuator, ActuatorModel, check_support_pair  # noqa: E402
+from servofmu.physics.drives.actuator import output_angle as mechanism_output_angle  # noqa: E402
 
 _A = Actuator.from_catalog("liu2014_ema")
 _ANGLE = ("angle", "motor_angle")  # the position input: output shaft, or motor shaft
@@ -122,7 +122,7 @@ class ActuatorStiffness(ServoSlave):
     )
     FEEDTHROUGH = True
     DEFAULT_EXPERIMENT = (0.0, 1.0, 1.0e-2)
-    PHYSICS = ("servofmu.physics.actuator",)
+    PHYSICS = ("servofmu.physics.drives.actuator",)
     VARIABLES = (
         real_input(
             "temperature",
@@ -454,7 +454,8 @@ class ActuatorStiffness(ServoSlave):
         return self.angle
 
     def hidden_state(self):
-        # the support pair's continuation (physics/continuation.py): restored bit for bit
+        # the support pair's continuation (physics/pair/continuation.py): restored bit
+        # for bit
         return {"continuation": self.model.state() if self._configured else None}
 
     def restore_hidden_state(self, state):

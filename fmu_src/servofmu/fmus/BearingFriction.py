@@ -16,7 +16,7 @@ with are in ``resources/presets/`` as SSP parameter sets. An inconsistent set (a
 cannot be a bearing, ν100 ≥ ν40, a spring preload without a stiffness, …) is refused at
 fmi2ExitInitializationMode with fmi2Error and a logged error naming the values.
 
-``friction_model`` chooses the torque (:mod:`servofmu.physics.friction_models`):
+``friction_model`` chooses the torque (:mod:`servofmu.physics.friction.models`):
 
 - ``yu2017`` (default): Yu's hysteresis and spin per contact and Palmgren's viscous term;
 - ``skf2004``: the SKF model per bearing with its own axial and radial load (``skf_*``: its
@@ -35,7 +35,7 @@ adds to the running and the breakaway torque:
 
 The lubricant's viscosity is the ASTM D341 line through ``lubricant_viscosity_40``/``_100``, or
 Vogel's law through them and ``lubricant_viscosity_cold`` at ``lubricant_cold_temperature``
-(:mod:`servofmu.physics.viscosity`). Outside the range of the lubricant's data (from its
+(:mod:`servofmu.physics.lubrication.viscosity`). Outside the range of the lubricant's data (from its
 coldest viscosity point or ``lubricant_data_minimum_temperature`` to
 ``lubricant_maximum_temperature``) the output ``outside_lubricant_range`` is set and one
 warning naming the temperature and the limit is logged each time the lubricant's temperature
@@ -47,13 +47,13 @@ warning says which.
 
 The breakaway after a soak at rest adds the lubricant's cold start: ``grease_starting_ratio``
 (ks, from its published starting-torque test) times the lubricant's torque at
-``grease_reference_speed`` (:mod:`servofmu.physics.grease_torque`). Without starting data
+``grease_reference_speed`` (:mod:`servofmu.physics.friction.grease`). Without starting data
 (ks = 0) the breakaway holds only the zero-speed limit of the viscous term, and the output
 ``breakaway_lower_bound`` says that it is a lower bound.
 ``preload`` is never negative, ``axial_play`` is the gap of an
 unloaded pair, ``reverse_loaded`` says a bearing is loaded on the other flanks of its grooves
-(:func:`servofmu.physics.pair_state.preload_force`, :func:`~servofmu.physics.pair_state.axial_play`,
-:func:`~servofmu.physics.pair_state.state_flags`).
+(:func:`servofmu.physics.pair.state.preload_force`, :func:`~servofmu.physics.pair.state.axial_play`,
+:func:`~servofmu.physics.pair.state.state_flags`).
 
 The range its physics holds for: the balls on the designed flanks of their grooves
 (``contact_angle`` ≥ 0 for bearing A). A pair pulled far apart (a 473 K housing around a 173 K
@@ -83,11 +83,11 @@ from servofmu.fmus.part_temperatures import (  # noqa: E402
     temperatures,
 )
 from servofmu.fmus.runtime import ServoSlave  # noqa: E402
-from servofmu.physics import continuation  # noqa: E402
+from servofmu.parameters.bearing import PARAMETERS, pair_from_parameters, parameters_in  # noqa: E402
+from servofmu.parameters.table import LATER_PARAMETERS  # noqa: E402
+from servofmu.physics import compiled as continuation  # noqa: E402
 from servofmu.physics.bearing import BearingModel  # noqa: E402
-from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in  # noqa: E402
-from servofmu.physics.pair_state import PointState  # noqa: E402
-from servofmu.physics.parameter_table import LATER_PARAMETERS  # noqa: E402
+from servofmu.physics.pair.state import PointState  # noqa: E402
 
 _TEMPS = TEMPERATURE_INPUTS
 _ALL = (*_TEMPS, "speed", "axial_load", "radial_load")
@@ -144,16 +144,16 @@ class BearingFriction(ServoSlave):
     DEFAULT_EXPERIMENT = (0.0, 1.0, 1.0e-3)
     PHYSICS = (
         "servofmu.physics.bearing",
-        "servofmu.physics.friction",
-        "servofmu.physics.friction_models",
-        "servofmu.physics.rolling_friction",
-        "servofmu.physics.ehl_rolling",
-        "servofmu.physics.grease_torque",
-        "servofmu.physics.fits",
-        "servofmu.physics.preload",
-        "servofmu.physics.equilibrium",
-        "servofmu.physics.hertz",
-        "servofmu.physics.viscosity",
+        "servofmu.physics.friction.terms",
+        "servofmu.physics.friction.models",
+        "servofmu.physics.friction.skf2004",
+        "servofmu.physics.friction.ehl_per_contact",
+        "servofmu.physics.friction.grease",
+        "servofmu.physics.thermal.fits",
+        "servofmu.physics.pair.preload",
+        "servofmu.physics.contact.equilibrium",
+        "servofmu.physics.contact.hertz",
+        "servofmu.physics.lubrication.viscosity",
     )
     VARIABLES = (
         real_input(
@@ -378,8 +378,8 @@ class BearingFriction(ServoSlave):
         self._copy_state = self.output_copier(PointState.__dataclass_fields__)
 
     def hidden_state(self):
-        # the continuation of the thermal and load state (physics/continuation.py): a restored
-        # instance continues bit for bit
+        # the continuation of the thermal and load state (physics/pair/continuation.py): a
+        # restored instance continues bit for bit
         return {"continuation": self.model.state() if self._configured else None}
 
     def restore_hidden_state(self, state):

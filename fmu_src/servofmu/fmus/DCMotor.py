@@ -1,6 +1,6 @@
 """DCMotor FMU: armature circuit and rotor/load inertia, integrated exactly inside the FMU
 (zero-order hold of the linear equations), with the bearings' Coulomb friction applied
-implicitly on sub-steps (:mod:`servofmu.physics.motor`): connect a BearingFriction's
+implicitly on sub-steps (:mod:`servofmu.physics.drives.motor`): connect a BearingFriction's
 running_torque and breakaway_torque to friction_running_torque and friction_breakaway_torque
 for chatter-free low-speed co-simulation at any communication step."""
 
@@ -15,8 +15,8 @@ servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
 
 from servofmu.fmus.declarations import output, real_input, real_parameter  # noqa: E402
 from servofmu.fmus.runtime import ServoSlave  # noqa: E402
-from servofmu.physics import motor  # noqa: E402
-from servofmu.physics.motor import DCMotorParameters  # noqa: E402
+from servofmu.physics.drives import motor  # noqa: E402
+from servofmu.physics.drives.motor import DCMotorParameters  # noqa: E402
 
 _P = DCMotorParameters()
 #: The most sub-steps of max_substep one fmi2DoStep takes, with or without friction (the work
@@ -39,7 +39,7 @@ class DCMotor(ServoSlave):
 
     description = "Permanent-magnet DC motor with rotor and load inertia (exact ZOH stepping)"
     DEFAULT_EXPERIMENT = (0.0, 1.0, 1.0e-3)
-    PHYSICS = ("servofmu.physics.motor",)
+    PHYSICS = ("servofmu.physics.drives.motor",)
     # the state is integrated inside the FMU: no output depends directly on an input, and
     # right after initialization each is its initial state (friction_torque: none applied yet)
     VARIABLES = (

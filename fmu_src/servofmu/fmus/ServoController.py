@@ -1,5 +1,5 @@
 """ServoController FMU: discrete PID with anti-windup and output limit, position or speed loop
-(:mod:`servofmu.physics.control`)."""
+(:mod:`servofmu.physics.drives.control`)."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
 
 from servofmu.fmus.declarations import Item, Var, output, real_input, real_parameter  # noqa: E402
 from servofmu.fmus.runtime import ServoSlave  # noqa: E402
-from servofmu.physics.control import MODES, PIDParameters, PIDState, pid_sample  # noqa: E402
+from servofmu.physics.drives.control import MODES, PIDParameters, PIDState, pid_sample  # noqa: E402
 
 #: The most samples one fmi2DoStep computes (the work per call is bounded: a longer step is
 #: discarded, naming this limit)
@@ -37,7 +37,7 @@ class ServoController(ServoSlave):
 
     description = "Discrete PID (derivative on measurement, clamping anti-windup, output limit)"
     DEFAULT_EXPERIMENT = (0.0, 1.0, 1.0e-3)
-    PHYSICS = ("servofmu.physics.control",)
+    PHYSICS = ("servofmu.physics.drives.control",)
     VARIABLES = (
         real_input(
             "reference",

@@ -1,6 +1,6 @@
 """ThermalNetwork FMU: part temperatures of a bearing mechanism (housing, shaft, outer and inner
 rings) from the ambient and sink temperatures and the bearing's power loss, integrated exactly
-over each communication step (:mod:`servofmu.physics.thermal_network`).
+over each communication step (:mod:`servofmu.physics.thermal.network`).
 
 Defaults: a network filled in at build time (the FMU's documentation names it): the standard
 build's is the preset ``yu2017_gimbal_chamber``, a build for another mounting that mounting's
@@ -36,7 +36,7 @@ from pythonfmu.enums import Fmi2Status  # noqa: E402
 
 from servofmu.fmus.declarations import Item, Var  # noqa: E402
 from servofmu.fmus.runtime import ServoSlave  # noqa: E402
-from servofmu.physics import thermal_network as tn  # noqa: E402
+from servofmu.physics.thermal import network as tn  # noqa: E402
 
 _P = tn.preset("yu2017_gimbal_chamber")
 _OUTPUTS = (
@@ -167,7 +167,7 @@ class ThermalNetwork(ServoSlave):
         "lumped capacitances, fits, ball contacts, convection and radiation, exact stepping"
     )
     DEFAULT_EXPERIMENT = (0.0, 3600.0, 10.0)
-    PHYSICS = ("servofmu.physics.thermal_network",)
+    PHYSICS = ("servofmu.physics.thermal.network",)
     VARIABLES = (
         _temperature_input(
             "ambient_temperature", "Ambient air and mounting-plate temperature", 173.15

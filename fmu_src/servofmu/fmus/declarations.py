@@ -270,7 +270,7 @@ def spec_parameter(spec) -> Var:
     Parameters
     ----------
     spec : an object with the attributes of
-        :class:`servofmu.physics.parameter_table.ParameterSpec`
+        :class:`servofmu.parameters.table.ParameterSpec`
 
     Returns
     -------
@@ -281,7 +281,7 @@ def spec_parameter(spec) -> Var:
 
     Examples
     --------
-    >>> from servofmu.physics.parameter_table import spec
+    >>> from servofmu.parameters.table import spec
     >>> v = spec_parameter(spec("ball_diameter"))
     >>> v.causality, v.unit, v.display_unit
     ('parameter', 'm', 'mm')

@@ -18,7 +18,7 @@ from .. import different_build
 
 BUILD_INFO = "servofmu_build.json"  # written into resources/ by the build
 #: Package parts that run inside an FMU (the build ships and hashes exactly these).
-SHIPPED = ("__init__.py", "physics", "fmus")
+SHIPPED = ("__init__.py", "physics", "parameters", "fmus")
 #: The files of the shipped parts that make up its code: sources, data, compiled modules.
 _HASHED = (".py", ".toml", ".so", ".pyd")
 

@@ -1,5 +1,5 @@
 """The part-temperature inputs shared by the FMUs whose physics takes the temperatures of a
-bearing mounting's parts (:class:`servofmu.physics.temperatures.PartTemperatures`):
+bearing mounting's parts (:class:`servofmu.physics.thermal.temperatures.PartTemperatures`):
 BearingFriction (its pair) and ActuatorStiffness (the ball screw's support pair).
 
 Each such FMU keeps its uniform ``temperature`` input and adds ``housing_temperature``,
@@ -12,7 +12,7 @@ record with every part at it, so equal part temperatures give exactly the unifor
 from __future__ import annotations
 
 from servofmu.fmus.declarations import Item, Var, real_input
-from servofmu.physics.temperatures import PARTS
+from servofmu.physics.thermal.temperatures import PARTS
 
 #: How the temperature inputs are read (parameter ``temperature_mode``): every part at
 #: ``temperature``; the rings at their seats' temperatures; or each part its own input.
@@ -22,7 +22,8 @@ TEMPERATURE_MODES = {
     "shaft_temperature",
     "parts": "housing, shaft, outer and inner ring at their own inputs (a thermal network)",
 }
-#: The part-temperature inputs, in the order of :data:`~servofmu.physics.temperatures.PARTS`.
+#: The part-temperature inputs, in the order of
+# :data:`~servofmu.physics.thermal.temperatures.PARTS`.
 PART_INPUTS = tuple(f"{p}_temperature" for p in PARTS)
 #: Every temperature input: the uniform one, then the parts'.
 TEMPERATURE_INPUTS = ("temperature", *PART_INPUTS)

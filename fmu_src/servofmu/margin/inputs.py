@@ -26,7 +26,7 @@ import numpy as np
 
 from servofmu.files import read_input
 from servofmu.physics._checks import suggest
-from servofmu.physics.units import DEG, GRAM_FORCE_CM, RPM, ZERO_CELSIUS, to_si
+from servofmu.physics.kernels.units import DEG, GRAM_FORCE_CM, RPM, ZERO_CELSIUS, to_si
 
 from .schema import schema_problems
 from .standard import (
@@ -168,7 +168,7 @@ class Transient:
     housing, the housing bolted to a plate at the chamber temperature when ``mounted``; the
     ball contacts' conductance at ``reference_preload`` [N] (None: the model's preload at the
     assembly temperature); ``network``: the mechanism's
-    :class:`~servofmu.physics.thermal_network.ThermalParameters` (set when the file is
+    :class:`~servofmu.physics.thermal.network.ThermalParameters` (set when the file is
     loaded, from the catalogue mounting's geometry and materials)."""
 
     start: float
@@ -417,7 +417,7 @@ def _operating_temperatures(r: _Reader, mounting: str, notes: list) -> tuple[flo
     """The mounting's declared operating range (``operating_minimum_temperature`` and
     ``operating_maximum_temperature`` of its catalogue entry) in steps of
     :data:`OPERATING_STEP`; a problem when it declares none."""
-    from servofmu.physics import catalog
+    from servofmu.parameters import catalog
 
     entry = catalog.mounting_entry(mounting)
     names = ("operating_minimum_temperature", "operating_maximum_temperature")
@@ -630,14 +630,14 @@ def _tolerances(r: _Reader, data: Mapping, mounting: str, nominal: Mapping, note
         return None
     bands = t.get("bands", "catalogue")
     if bands == "catalogue":
-        from servofmu.physics import catalog
+        from servofmu.parameters import catalog
 
         try:
             found = catalog.tolerances(mounting)
         except ValueError:
             notes.append(
                 f"tolerances: the catalogue has no tolerance bands for mounting {mounting!r} "
-                "(physics/data/tolerances.toml, or a user catalogue's [tolerances.MOUNTING]): "
+                "(parameters/data/tolerances.toml, or a user catalogue's [tolerances.MOUNTING]): "
                 "no Monte-Carlo draws; give them in [tolerances.bands] of the input file"
             )
             return None
@@ -961,7 +961,7 @@ def _parse(data, base_dir: Path, source: str, catalogs, mounting) -> MarginInput
 
 def _mechanism_title(mounting: str, chosen_from: str) -> str:
     """The title of a study run on another mechanism than its file's: that mounting's name."""
-    from servofmu.physics import catalog
+    from servofmu.parameters import catalog
 
     return f"{catalog.mounting(mounting).name} (mounting {mounting}, from {chosen_from})"
 
@@ -971,7 +971,7 @@ def _choose_mounting(mounting, catalogs, mech: Mapping, file_catalogs, source: s
     --catalog's [defaults], else the file's mechanism.mounting, else its catalogues'
     [defaults], else the package default."""
     from servofmu.build import catalogs as cat
-    from servofmu.physics.bearing_parameters import DEFAULT_MOUNTING
+    from servofmu.parameters.bearing import DEFAULT_MOUNTING
 
     if mounting:
         return mounting, "--mounting"
@@ -993,7 +993,7 @@ def _parameters(r: _Reader, mech: Mapping, eol: Mapping, mounting: str, lives,
     """{life: parameter set (SI)}: the mounting's preset (with a catalogue's ``[defaults]``
     lubricant when one names it), the file's changes, and at end of life the end-of-life
     changes; each checked."""
-    from servofmu.physics.bearing_parameters import (
+    from servofmu.parameters.bearing import (
         default_parameters,
         pair_from_parameters,
         parameter_problems,
@@ -1069,8 +1069,8 @@ def _reference_preload(r: _Reader, transient: Transient, params: Mapping, notes:
         return transient
     from dataclasses import replace
 
+    from servofmu.parameters.bearing import pair_from_parameters
     from servofmu.physics.bearing import BearingModel
-    from servofmu.physics.bearing_parameters import pair_from_parameters
 
     pair = pair_from_parameters(params)
     t0 = pair.mounting.assembly_temperature
@@ -1094,8 +1094,8 @@ def _network(r: _Reader, transient: Transient, mounting: str) -> Transient:
     materials' density, specific heat, conductivity and emissivity)."""
     from dataclasses import replace
 
-    from servofmu.physics import catalog
-    from servofmu.physics.thermal_network import mechanism_parameters
+    from servofmu.parameters import catalog
+    from servofmu.physics.thermal.network import mechanism_parameters
 
     if transient.reference_preload is None:
         return transient

@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from servofmu.files import save_figure, written
-from servofmu.physics.units import DEG, NMM, ZERO_CELSIUS
+from servofmu.physics.kernels.units import DEG, NMM, ZERO_CELSIUS
 
 from .inputs import CASES
 from .standard import CATEGORIES, TERMS

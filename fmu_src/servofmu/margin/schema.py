@@ -40,8 +40,8 @@ def input_schema() -> dict:
     """
     from servofmu.build.schema import TEXT, tolerance_band
     from servofmu.harness.tolerance import SEAT_BANDS
-    from servofmu.physics.bearing_parameters import PARAMETERS, PRESETS
-    from servofmu.physics.units import TO_SI
+    from servofmu.parameters.bearing import PARAMETERS, PRESETS
+    from servofmu.physics.kernels.units import TO_SI
 
     changes = {
         "type": "object",

@@ -366,7 +366,7 @@ def run(inputs: MarginInputs, result: MarginResult | None = None) -> MarginResul
     >>> block, row["life"], row["case"], round(row["temperature"] - 273.15, 2)
     ('steady', 'EOL', 'run', -40.0)
     """
-    from servofmu.physics.bearing_parameters import pair_from_parameters
+    from servofmu.parameters.bearing import pair_from_parameters
 
     result = MarginResult(inputs) if result is None else result
     result.notes[:] = list(inputs.notes)
@@ -469,8 +469,8 @@ def _draw_rows(inputs: MarginInputs, life: str, params: Mapping, temps, notes) -
     """The rows of every Monte-Carlo draw of one life: the parameters drawn from the bands
     around this life's values (the same seed at every life: the same parts)."""
     from servofmu.harness.tolerance import tolerance_draws
+    from servofmu.parameters.bearing import pair_from_parameters
     from servofmu.physics.bearing import BearingModel
-    from servofmu.physics.bearing_parameters import pair_from_parameters
 
     tol = inputs.tolerances
     rows = []
@@ -518,12 +518,12 @@ def chamber_temperature(transient, time):
 
 def _transient_rows(inputs: MarginInputs, life: str, pair, notes: list) -> list[dict]:
     """Rows along the chamber transient of one life: the thermal network of the pair
-    (:mod:`servofmu.physics.thermal_network`) stepped with the chamber as its ambient and
+    (:mod:`servofmu.physics.thermal.network`) stepped with the chamber as its ambient and
     sink and the bearing's power loss at the operating speed as its heat input; the bearing
     (:class:`~servofmu.physics.bearing.BearingModel`) at the parts' temperatures each step; the
     motor and the other torques at the housing's temperature."""
-    from servofmu.physics import thermal_network as tn
     from servofmu.physics.bearing import BearingModel
+    from servofmu.physics.thermal import network as tn
 
     tr = inputs.transient
     model = BearingModel(pair)

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ..physics.bearing import BearingPair, loop_stiffness
-from ..physics.units import DEG, MM, UM, kelvin_to_celsius
+from ..physics.kernels.units import DEG, MM, UM, kelvin_to_celsius
 from .report import Parameter
 
 

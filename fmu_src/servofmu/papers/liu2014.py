@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import brentq
 
-from ..physics.actuator import (
+from ..physics.drives.actuator import (
     Actuator,
     per_degree,
     reduction_ratio,
@@ -36,7 +36,7 @@ from ..physics.actuator import (
     stiffness_breakdown,
     support_axial_stiffness,
 )
-from ..physics.units import DEG, MM, celsius_to_kelvin
+from ..physics.kernels.units import DEG, MM, celsius_to_kelvin
 from .common import bearing_parameters, material_parameters, mounting_parameters
 from .report import (
     MEASURED_CHANGE,
@@ -88,7 +88,7 @@ def calibrate_crank_length() -> float:
 def calibrate_arm_length(crank_length: float) -> float:
     """Output-arm length l [m] that gives K_rod = 1021.5 N·m/° at 100 N·m (eq 17–19 make the
     arm softer as it grows)."""
-    from ..physics.actuator import linkage_stiffness
+    from ..physics.drives.actuator import linkage_stiffness
 
     def gap(arm):
         act = Actuator.from_catalog(KEY, crank_length=crank_length, arm_length=arm)

@@ -27,10 +27,10 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import brentq
 
-from ..physics import catalog
+from ..parameters import catalog
 from ..physics.bearing import BearingModel, BearingPair, with_mounting
-from ..physics.fits import mounted_geometry
-from ..physics.units import MM, NMM, RPM, UM, celsius_to_kelvin
+from ..physics.kernels.units import MM, NMM, RPM, UM, celsius_to_kelvin
+from ..physics.thermal.fits import mounted_geometry
 from .common import bearing_parameters, material_parameters, mounting_parameters
 from .report import (
     MEASURED_CHANGE,
@@ -148,8 +148,8 @@ def part_temperatures(chamber_k, interval: float | None = None, preset: str = TH
 
     Without ``interval``: every part at the chamber temperature (Ning's uniform-temperature
     assumption, quasi-static), under the key ``"uniform"``. With it: the housing, shaft and
-    ring temperatures (keys of :data:`~servofmu.physics.temperatures.PARTS`) of the thermal
-    network ``preset`` (:func:`~servofmu.physics.thermal_network.preset`), soaked at the first
+    ring temperatures (keys of :data:`~servofmu.physics.thermal.temperatures.PARTS`) of the thermal
+    network ``preset`` (:func:`~servofmu.physics.thermal.network.preset`), soaked at the first
     chamber temperature, the chamber linear between the points (sub-steps of
     :data:`THERMAL_SUBSTEP`), air and sink at the chamber temperature; the bearing's own loss
     (about 4 mW at 10 rpm) is left out.
@@ -163,8 +163,8 @@ def part_temperatures(chamber_k, interval: float | None = None, preset: str = TH
     chamber = np.asarray(chamber_k, dtype=float)
     if interval is None:
         return {"uniform": chamber}
-    from ..physics import thermal_network as tn
-    from ..physics.temperatures import PARTS
+    from ..physics.thermal import network as tn
+    from ..physics.thermal.temperatures import PARTS
 
     net = tn.network(tn.preset(preset))
     n = max(1, round(interval / THERMAL_SUBSTEP))
@@ -189,7 +189,7 @@ def torque_history(pair: BearingPair, parts: dict[str, np.ndarray]) -> np.ndarra
     >>> bool(t[0] == t[1] > 0)
     True
     """
-    from ..physics.temperatures import PARTS, PartTemperatures
+    from ..physics.thermal.temperatures import PARTS, PartTemperatures
 
     if set(parts) == {"uniform"}:
         temps = parts["uniform"]

@@ -2,25 +2,26 @@
 that no coefficient of theirs was fitted to, and every catalogue lubricant's law against the
 viscosities it was built from.
 
-Sources (data with provenance in ``physics/data/friction_measurements.toml`` and
-``physics/data/grease_torques.toml``):
+Sources (data with provenance in ``papers/data/friction_measurements.toml`` and
+``parameters/data/grease_torques.toml``):
 
 1. Bălan, Houpert, Tufescu, Olaru (2015), Lubricants 3:222, Tables 1–2: three balls of a
    modified thrust bearing 51205 in mineral oil, spin-down torques at 60–210 r/min. Checked:
-   the per-contact hydrodynamic rolling model (:mod:`physics.ehl_rolling`, Biboulet &
+   the per-contact hydrodynamic rolling model (:mod:`physics.friction.ehl_per_contact`, Biboulet &
    Houpert 2010 with literature constants only) and, for reference, the Yu-calibrated
    Palmgren term that servofmu uses by default. The SKF model has no constants for a
    three-ball bearing and is not applied.
 2. DuPont, technical data sheet of Molykote G-1074 (form 80-8136B-01, 09/19): starting and
    running torque at −40 °C in the JIS K 2220 low-temperature torque test. Checked: the SKF
-   model (:mod:`physics.rolling_friction`, catalogue constants of series 62) as a
-   prediction; the grease term (:mod:`physics.grease_torque`) is calibrated on this point, so
+   model (:mod:`physics.friction.skf2004`, catalogue constants of series 62) as a
+   prediction; the grease term (:mod:`physics.friction.grease`) is calibrated on this point, so
    its rows are "calibrated", and its prediction is untested for want of a second point.
 
-3. Every viscosity the catalogue records for a lubricant (``physics/data/lubricants.toml``: ν40,
-   ν100 and further published points) against the lubricant's law (:mod:`physics.viscosity`:
-   the ASTM D341 line through two points, Vogel's law through three or more), with the
-   range of each lubricant's data; Yu's Krytox 143AA against his eq 18.
+3. Every viscosity the catalogue records for a lubricant (``parameters/data/lubricants.toml``:
+   ν40, ν100 and further published points) against the lubricant's law
+   (:mod:`physics.lubrication.viscosity`: the ASTM D341 line through two points, Vogel's law
+   through three or more), with the range of each lubricant's data; Yu's Krytox 143AA
+   against his eq 18.
 
 The validation wants at least two independent oil-lubricated sources. The candidates searched for a
 second one, and why none could be used, are data (``[[searched]]`` in
@@ -30,26 +31,28 @@ recorded and lists the candidates while there is only one.
 
 from __future__ import annotations
 
+import functools
 import math
+import tomllib
 from pathlib import Path
 
 import numpy as np
 
 from servofmu.files import save_figure, written
 
-from ..physics import catalog
-from ..physics.catalog import quantity
-from ..physics.ehl_rolling import ehl_rolling_torque
-from ..physics.friction import palmgren_viscous_torque
-from ..physics.grease_torque import (
+from ..parameters import catalog
+from ..parameters.catalog import quantity
+from ..physics.friction.ehl_per_contact import ehl_rolling_torque
+from ..physics.friction.grease import (
     base_oil_viscosity,
     calibrate_grease_term,
     grease_torque_points,
     torque_test,
 )
-from ..physics.rolling_friction import MU_BOUNDARY, MU_EHL, skf_constants, skf_friction
-from ..physics.units import CST, NMM, RPM, kelvin_to_celsius
-from ..physics.viscosity import T40, T100, VogelViscosity, walther_from_reference
+from ..physics.friction.skf2004 import MU_BOUNDARY, MU_EHL, skf_constants, skf_friction
+from ..physics.friction.terms import palmgren_viscous_torque
+from ..physics.kernels.units import CST, NMM, RPM, kelvin_to_celsius
+from ..physics.lubrication.viscosity import T40, T100, VogelViscosity, walther_from_reference
 from .report import (
     MEASURED_TORQUE,
     VISCOSITY_FIT,
@@ -67,13 +70,25 @@ from .report import (
 MINERAL_OIL_DENSITY = 870.0  # kg/m³, assumed (only for the Yu-model reference rows)
 
 
+#: The published measurements the friction models are checked against, and the record of the
+#: sources searched for them (``data/friction_measurements.toml``, beside this module): read
+#: by this validation only, so not shipped in the FMUs.
+MEASUREMENTS = Path(__file__).parent / "data" / "friction_measurements.toml"
+
+
+@functools.cache
+def _measurements() -> dict:
+    with MEASUREMENTS.open("rb") as fh:
+        return tomllib.load(fh)
+
+
 def _q(entry: dict, field: str) -> tuple[float, str]:
     return quantity(entry[field], field)
 
 
 def _balan_series():
     """The two series of Bălan 2015 with SI values: (rig dict, [(series dict, points)])."""
-    data = catalog._table("friction_measurements")["balan2015"]
+    data = _measurements()["balan2015"]
     rig = {f: _q(data, f) for f in ("race_radius", "groove_radius", "reduced_modulus", "n_balls")}
     out = []
     for s in data["series"]:
@@ -267,10 +282,11 @@ def _lubricant_points(rec) -> list[tuple[float, float, str]]:
 
 def _viscosity_rows(out_dir: Path) -> tuple[list[Row], list[Parameter], list[str]]:
     """Every recorded viscosity of every catalogue lubricant against the lubricant's law
-    (physics/viscosity.py): the law is built from these numbers, so each is a calibration row
-    at the viscosity-fit rule (±3 %); a cold point also gives what the ASTM D341 line through
-    ν40/ν100 alone gives there. Yu's Krytox 143AA (no published point) is checked against his
-    eq 18 at his chamber temperatures. The range of each lubricant's data is a parameter."""
+    (physics/lubrication/viscosity.py): the law is built from these numbers, so each is a
+    calibration row at the viscosity-fit rule (±3 %); a cold point also gives what the ASTM
+    D341 line through ν40/ν100 alone gives there. Yu's Krytox 143AA (no published point) is
+    checked against his eq 18 at his chamber temperatures. The range of each lubricant's data
+    is a parameter."""
     rows, params, table = [], [], []
     for key in catalog.keys("lubricants"):
         rec = catalog.lubricant_record(key)
@@ -518,7 +534,7 @@ def _second_source_row() -> Row:
     """The trend row for "at least two independent sources": the number of sources
     recorded in ``friction_measurements.toml`` and, while it is one, the candidates that were
     searched for and why none is used (its ``[[searched]]`` entries)."""
-    data = catalog._table("friction_measurements")
+    data = _measurements()
     sources = [k for k, v in data.items() if isinstance(v, dict)]
     searched = data.get("searched", [])
     listed = "; ".join(f"{c['cite']} ({c['why']})" for c in searched)

@@ -32,12 +32,12 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import brentq
 
-from ..physics import catalog
+from ..parameters import catalog
 from ..physics.bearing import BearingModel, BearingPair, loop_stiffness, with_mounting
-from ..physics.fits import mounted_geometry
-from ..physics.friction import FrictionCoefficients
-from ..physics.preload import loop_interference
-from ..physics.units import DEG, MM, NMM, UM, celsius_to_kelvin
+from ..physics.friction.terms import FrictionCoefficients
+from ..physics.kernels.units import DEG, MM, NMM, UM, celsius_to_kelvin
+from ..physics.pair.preload import loop_interference
+from ..physics.thermal.fits import mounted_geometry
 from .common import bearing_parameters, material_parameters, mounting_parameters
 from .report import (
     PAPER_MODEL,
@@ -721,7 +721,7 @@ COLD_START_STATEMENT = (
 
 def cold_start(r: _Reproduction) -> list[Row]:
     """After a soak at rest the breakaway adds the lubricant's cold start
-    (:mod:`~servofmu.physics.grease_torque`): Yu's gimbal (Krytox 143AA, no published starting
+    (:mod:`~servofmu.physics.friction.grease`): Yu's gimbal (Krytox 143AA, no published starting
     torque: a lower bound) and the same gimbal with G-1074 (its datasheet's start), breakaway
     against running at −40 °C and the test speed; below Yu's −40 °C the viscosity law goes on
     (extrapolated, flagged), it is not held. Writes ``cold_start.csv``/``.png``.
@@ -774,7 +774,7 @@ def cold_start(r: _Reproduction) -> list[Row]:
                 note=note,
                 miss_note=(
                     f"no published starting torque of {key} (or of a grease on it) is recorded "
-                    "(physics/data/grease_torques.toml): its breakaway holds only the "
+                    "(parameters/data/grease_torques.toml): its breakaway holds only the "
                     "zero-speed limit of the viscous term, a lower bound, and BearingFriction "
                     "says so (breakaway_lower_bound)"
                     if bound

@@ -1,31 +1,19 @@
-"""The bearing-pair friction model: thermal coupling (fits, preload) + equilibrium + friction.
+"""The bearing-pair friction model, in one place: thermal coupling (fits, preload) +
+equilibrium + friction (Yu 2017 §1–3; Ning §1–2). The names below live in :mod:`.pair`:
 
-Where each part lives (Yu 2017 §1–3; Ning §1–2):
-
-- :mod:`.pair`: the configuration, :class:`BearingPair` (bearing, mounting, lubrication,
-  coefficients) and :func:`with_mounting`;
-- :mod:`.pair_state`: the exact state, vectorised over operating points:
+- :mod:`.pair.configuration`: the configuration, :class:`BearingPair` (bearing, mounting,
+  lubrication, coefficients) and :func:`with_mounting`;
+- :mod:`.pair.state`: the exact state, vectorised over operating points:
   :func:`thermal_state` (Yu eq 10–18), :func:`load_state` (Jones; eq 1–7, Ning),
   :func:`bearing_outputs` (eq 8–9, breakaway, regularised sign) and
   :func:`operating_outputs` (all three);
-- :mod:`.continuation`: the same equations solved per step from the previous step's
-  solution, on floats;
-- here, :class:`BearingModel`: the per-step evaluation an FMU calls, continuation first and
-  a cold start on the same floats when the warm start fails, and the exact path when that
-  fails too.
-
+- :mod:`.pair.model`: :class:`BearingModel`, the per-step evaluation an FMU calls
+  (continuation first, the exact path as its fallback).
 """
 
 from __future__ import annotations
 
-from . import pair_kernels
-from ._checks import TEMPERATURE_RANGE as _TEMPERATURE_RANGE
-from ._checks import check_operating_temperature
-from .continuation import kernels
-from .mounting import Mounting
-
-# the public names of .pair and .pair_state are importable from here as well
-from .pair import (
+from .pair.configuration import (
     DEFAULT_COEFFICIENTS,
     LUBRICATIONS,
     MOUNTING_CHANGES,
@@ -38,7 +26,9 @@ from .pair import (
     loop_stiffness,
     with_mounting,
 )
-from .pair_state import (
+from .pair.model import TEMPERATURE_RANGE, BearingModel
+from .pair.mounting import Mounting
+from .pair.state import (
     BearingOutputs,
     LoadState,
     ThermalState,
@@ -52,13 +42,15 @@ from .pair_state import (
     thermal_state,
     to_floats,
 )
-from .temperatures import PARTS, PartTemperatures
+from .thermal.temperatures import PARTS, PartTemperatures
 
 __all__ = [
     "DEFAULT_COEFFICIENTS",
     "LUBRICATIONS",
     "MOUNTING_CHANGES",
+    "PARTS",
     "PRESSURE_LIMIT",
+    "TEMPERATURE_RANGE",
     "BearingModel",
     "BearingOutputs",
     "BearingPair",
@@ -70,195 +62,15 @@ __all__ = [
     "axial_load_state",
     "bearing_outputs",
     "effective_shim",
+    "exact_point",
     "is_tandem",
     "load_state",
     "loop_closure",
     "loop_stiffness",
     "operating_outputs",
+    "point_outputs",
     "state_flags",
     "thermal_state",
     "to_floats",
     "with_mounting",
 ]
-
-#: Valid range of a part temperature [K]: the FMUs' (:data:`._checks.TEMPERATURE_RANGE`).
-TEMPERATURE_RANGE = _TEMPERATURE_RANGE
-_LO, _HI = TEMPERATURE_RANGE
-
-
-def _temperatures(temperature) -> tuple[float, float, float, float]:
-    """(housing, shaft, outer ring, inner ring) [K] as floats from a uniform temperature, a
-    :class:`PartTemperatures` or a 4-tuple; ValueError naming one outside
-    :data:`TEMPERATURE_RANGE` (with a hint when it looks like °C)."""
-    if type(temperature) is float and _LO <= temperature <= _HI:  # the per-step cases
-        return (temperature, temperature, temperature, temperature)
-    if type(temperature) is tuple and len(temperature) == 4:
-        h, s, o, i = temperature
-        if type(h) is type(s) is type(o) is type(i) is float and (
-            _LO <= h <= _HI and _LO <= s <= _HI and _LO <= o <= _HI and _LO <= i <= _HI
-        ):
-            return temperature
-    if isinstance(temperature, PartTemperatures):
-        temps = tuple(float(getattr(temperature, p)) for p in PARTS)
-    elif isinstance(temperature, tuple):
-        temps = tuple(float(t) for t in temperature)
-    else:
-        t = float(temperature)
-        temps = (t, t, t, t)
-    for name, t in zip(PARTS, temps, strict=True):
-        if not (_LO <= t <= _HI):
-            label = "temperature" if temps.count(t) == 4 else f"{name}_temperature"
-            check_operating_temperature(label, t)
-    return temps
-
-
-class BearingModel:
-    """Per-step evaluation of a :class:`BearingPair` at (temperatures, speed, axial load,
-    radial load), as floats: the path of the BearingFriction FMU.
-
-    The thermal and load state is solved by continuation from the previous call
-    (:class:`~.pair_kernels.PairSolver`, compiled when the build could compile it:
-    :mod:`.continuation`); the first call, and any call whose warm start fails, is solved from
-    scratch on the same floats (:meth:`~.pair_kernels.PairSolver.start`), and the exact path
-    (:func:`thermal_state`, :func:`load_state`) solves a call that fails too and seeds the
-    continuation again. Every arrangement alike (:class:`~.pair_kernels.PairRows`). A call
-    whose temperatures and loads equal the previous call's reuses its state
-    (:class:`~.pair_kernels.PointState`): a change of speed alone costs only the speed
-    terms; a call whose temperatures equal the previous call's reuses the thermal state.
-
-    Parameters
-    ----------
-    pair : BearingPair
-    implementation : "compiled", "python" or None (the one :mod:`.continuation` chose)
-
-    Attributes
-    ----------
-    steps : calls that solved a new state
-    cold_starts : of those, the ones the continuation solved from scratch (the first call,
-        or a failed warm start)
-    exact_steps : of those, the ones solved by the exact path (a failed cold start)
-    """
-
-    def __init__(self, pair: BearingPair, implementation: str | None = None):
-        self.pair = pair
-        self.kernels = kernels(implementation)
-        self.solver = self.kernels.PairSolver(pair)
-        self.exact_steps = 0
-
-    @property
-    def implementation(self) -> str:
-        """ "compiled" or "python"."""
-        return "python" if self.kernels is pair_kernels else "compiled"
-
-    @property
-    def steps(self) -> int:
-        return self.solver.steps
-
-    @property
-    def cold_starts(self) -> int:
-        return self.solver.cold_starts
-
-    # ---------------------------------------------------------------- state
-    def state(self) -> dict:
-        """The per-step state (JSON-serialisable): the continuation, the operating point and
-        the state there. With :meth:`restore`, a model continues bit for bit."""
-        return self.solver.state()
-
-    def restore(self, state: dict | None) -> None:
-        """Continue from a :meth:`state`: the state at its operating point as it was, and the
-        continuation from there, so that the next steps repeat bit for bit."""
-        self.solver.restore(state)
-
-    # ---------------------------------------------------------------- per step
-    def _exact(self, temps, axial_load: float, radial_load: float):
-        """The exact path's state, seeding the continuation at the solver's thermal state."""
-        try:
-            th_exact = to_floats(thermal_state(self.pair, PartTemperatures(*temps)))
-            ls = to_floats(load_state(self.pair, th_exact, axial_load, radial_load))
-        except (ValueError, ArithmeticError) as exc:
-            raise ValueError(
-                f"no state at temperatures (housing, shaft, outer ring, inner ring) = "
-                f"{temps} K, axial_load = {axial_load!r} N, radial_load = "
-                f"{radial_load!r} N: {exc}"
-            ) from exc
-        th = self.solver.thermal
-        p = 0.5 * (ls.offset_a + ls.offset_b)
-        z = 0.5 * (ls.offset_a - ls.offset_b)
-        inputs = (*temps, axial_load, radial_load)
-        if radial_load == 0.0:
-            self.solver.seed(th, inputs, (p, z))
-        else:
-            self.solver.seed(th, inputs, (p, z, ls.radial_a, ls.radial_b), ls.ball_cosines)
-        point = exact_point(self.kernels.PointState, self.pair, th_exact, ls)
-        self.solver.accept(th, point, axial_load, radial_load)
-        return point
-
-    def update(self, temperature, axial_load: float = 0.0, radial_load: float = 0.0):
-        """The state at (temperature, axial_load, radial_load) (arguments as :meth:`evaluate`):
-        solved when it is a new operating point, else the last one.
-
-        Returns
-        -------
-        PointState
-            Every output of :meth:`evaluate` that does not move with speed (torques [N·m],
-            forces [N], angle [rad], lengths [m], stiffness [N/m], pressures [Pa], flags).
-        """
-        if type(temperature) is float and _LO <= temperature <= _HI:  # the per-step case
-            t_h = t_s = t_o = t_i = temperature
-        else:
-            t_h, t_s, t_o, t_i = _temperatures(temperature)
-        fa, fr = float(axial_load), float(radial_load)
-        point = self.solver.update(t_h, t_s, t_o, t_i, fa, fr)
-        if point is None:
-            self.exact_steps += 1
-            point = self._exact((t_h, t_s, t_o, t_i), fa, fr)
-        return point
-
-    def evaluate(
-        self, temperature, speed: float, axial_load: float = 0.0, radial_load: float = 0.0
-    ) -> BearingOutputs:
-        """All outputs at one operating point, as floats.
-
-        Parameters
-        ----------
-        temperature : uniform temperature [K], or the parts' temperatures
-            (:class:`PartTemperatures` or a (housing, shaft, outer ring, inner ring) tuple)
-        speed : shaft speed relative to the housing [rad/s], signed
-        axial_load : external axial load [N], positive towards bearing A
-        radial_load : external radial load [N], shared by the two bearings
-
-        Returns
-        -------
-        BearingOutputs
-            Torques [N·m], preload [N], angles [rad], lengths [m], viscosity [m²/s],
-            stiffness [N/m], power [W], pressures [Pa], flags.
-
-        >>> model = BearingModel(BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa"))
-        >>> out = model.evaluate(293.15, 0.17, axial_load=5.0)
-        >>> round(out.running_torque * 1e3, 3)  # N·mm (the compliant yoke at 20 °C)
-        0.301
-        """
-        point = self.update(temperature, axial_load, radial_load)
-        speed_outputs = self.solver.speed_outputs(float(speed))
-        return point_outputs(point, speed_outputs, self.pair.breakaway_lower_bound)
-
-    def speed_outputs(self, speed: float) -> tuple[float, float, float, float, float, float]:
-        """(friction_torque, running_torque, sliding_torque, viscous_torque, grease_torque
-        [N·m], power_loss [W]) at ``speed`` [rad/s] for the state of the last :meth:`evaluate`
-        call: the per-step path when only the speed changed (the same equations, so the same
-        numbers as evaluate)."""
-        return self.solver.speed_outputs(speed)
-
-    # ---------------------------------------------------------------- exact
-    def thermal(self, temperature) -> ThermalState:
-        """Exact :func:`thermal_state` at one temperature [K] (fields as floats)."""
-        return to_floats(thermal_state(self.pair, PartTemperatures(*_temperatures(temperature))))
-
-    def load(self, temperature, axial_load: float = 0.0, radial_load: float = 0.0) -> LoadState:
-        """Exact :func:`load_state` at one temperature [K] and loads [N] (fields as floats)."""
-        return to_floats(load_state(self.pair, self.thermal(temperature), axial_load, radial_load))
-
-    def curves(self, temperatures, speed: float, axial_load: float = 0.0) -> BearingOutputs:
-        """Outputs over an array of temperatures [K] at one speed [rad/s] and axial load [N],
-        vectorised and exact (zero radial load)."""
-        return operating_outputs(self.pair, temperatures, speed, axial_load)

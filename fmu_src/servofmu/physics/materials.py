@@ -2,7 +2,7 @@
 properties a heat-transfer model needs (density, specific heat, conductivity, emissivity), SI.
 
 The values live in ``data/materials.toml`` with their provenance; load them with
-:func:`servofmu.physics.catalog.material`.
+:func:`servofmu.parameters.catalog.material`.
 """
 
 from __future__ import annotations
@@ -91,7 +91,7 @@ def reduced_compliance(m1: Material, m2: Material) -> float:
 
     Examples
     --------
-    >>> from servofmu.physics import catalog
+    >>> from servofmu.parameters import catalog
     >>> s = catalog.material("bearing_steel_yu")
     >>> round(reduced_compliance(s, s) * 1e12, 4)  # 1/TPa: 2·(1 − ν²)/E
     8.6515

@@ -1,0 +1,13 @@
+# Declarations of friction.py for the compiled modules that call it in C.
+cpdef double hysteresis_force(double load, double semi_minor_axis, double ball_diameter,
+                              double loss_factor)
+cpdef double contact_spin_moment(double load, double semi_major_axis, double e_integral,
+                                 double friction_coefficient)
+cpdef double heathcote_force(double load, double semi_major_axis, double ball_diameter,
+                             double groove_radius, double friction)
+cpdef double palmgren_torque(double kinematic_viscosity, double speed, double pitch_diameter,
+                             double s0)
+cpdef double regularised_torque(double speed, double running_torque, double breakaway_excess,
+                                double regularisation_speed, double stribeck_speed)
+cpdef (double, double) coulomb_and_excess(double static_ratio, double hysteresis, double spin,
+                                          double sliding)
