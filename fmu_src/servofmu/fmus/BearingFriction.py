@@ -75,7 +75,7 @@ import math  # noqa: E402
 
 from pythonfmu.enums import Fmi2Status  # noqa: E402
 
-from servofmu.fmus.declarations import output, real_input, spec_parameter  # noqa: E402
+from servofmu.fmus.declarations import Var, output, real_input, real_parameter, spec_parameter  # noqa: E402
 from servofmu.fmus.part_temperatures import (  # noqa: E402
     TEMPERATURE_INPUTS,
     part_inputs,
@@ -83,7 +83,7 @@ from servofmu.fmus.part_temperatures import (  # noqa: E402
     temperatures,
 )
 from servofmu.fmus.runtime import ServoSlave  # noqa: E402
-from servofmu.physics import continuation  # noqa: E402
+from servofmu.physics import continuation, prerolling  # noqa: E402
 from servofmu.physics.bearing import BearingModel  # noqa: E402
 from servofmu.physics.bearing_parameters import PARAMETERS, pair_from_parameters, parameters_in  # noqa: E402
 from servofmu.physics.pair_state import PointState  # noqa: E402
@@ -117,7 +117,12 @@ def _out(name, description, unit, display=None, *, depends=_LOADS, groups=_STATE
         display_unit=display,
         type=kw.pop("kind", "Real"),
         depends=depends,
-        initial_depends=(*depends, "temperature_mode", *parameters_in(*groups)),
+        initial_depends=(
+            *depends,
+            "temperature_mode",
+            *parameters_in(*groups),
+            *kw.pop("also", ()),  # parameters outside bearing_parameters.GROUPS
+        ),
         field=kw.pop("field", name),
         **kw,
     )
@@ -130,6 +135,61 @@ def _outputs_of(fields, variables) -> tuple[str, ...]:
 
 def _flag(name, description, groups=_STATE, depends=_LOADS):
     return _out(name, description, None, kind="Boolean", groups=groups, depends=depends)
+
+
+_PREROLLING = ("prerolling_model", "prerolling_stiffness", "prerolling_exponent")
+_PREROLLING_VARIABLES = (
+    Var(
+        name="prerolling_model",
+        type="Integer",
+        causality="parameter",
+        description="Pre-rolling friction: 0 = none (the regularised sign of friction_torque), "
+        "1 = Dahl (friction_torque follows Dahl's state over the rings' relative angle)",
+        start=prerolling.NONE,
+        min=0,
+        max=len(prerolling.MODELS) - 1,
+        source="assumed: off by default, so that earlier results stay",
+    ),
+    real_parameter(
+        "prerolling_stiffness",
+        "Dahl's rest slope sigma0 (0: derived from the contacts, Mindlin's no-slip stiffness "
+        "8 G* sqrt(ab) of each ball's inner and outer contact in series times the inner contact "
+        "radius squared, summed over the balls of both bearings)",
+        start=0.0,
+        unit="N.m/rad",
+        min=prerolling.STIFFNESS_RANGE[0],
+        max=prerolling.STIFFNESS_RANGE[1],
+        source="0: derived (Mindlin 1949; Johnson 1985 §7.2); a value: measured (Dahl 1976)",
+    ),
+    real_parameter(
+        "prerolling_exponent",
+        "Dahl's exponent i (1: the exponential loop)",
+        start=1.0,
+        unit="1",
+        min=prerolling.EXPONENT_RANGE[0],
+        max=prerolling.EXPONENT_RANGE[1],
+        source="paper: Dahl 1976 (i = 1 fits ball bearings)",
+    ),
+    output(
+        "prerolling_angle",
+        "Relative angle of the rings integrated from speed over the steps (0 at "
+        "initialization; 0 with prerolling_model = 0)",
+        unit="rad",
+        depends=(),
+        initial_depends=(),
+        field="prerolling_angle",
+    ),
+    _out(
+        "prerolling_torque",
+        "Dahl's pre-rolling torque, signed like friction_torque, which equals it with "
+        "prerolling_model = 1 (0 with prerolling_model = 0)",
+        "N.m",
+        "N.mm",
+        depends=_ALL,
+        groups=(*_TORQUE, "lubricant", "breakaway", "grease_start", "regularisation"),
+        also=_PREROLLING,
+    ),
+)
 
 
 class BearingFriction(ServoSlave):
@@ -154,6 +214,7 @@ class BearingFriction(ServoSlave):
         "servofmu.physics.equilibrium",
         "servofmu.physics.hertz",
         "servofmu.physics.viscosity",
+        "servofmu.physics.prerolling",
     )
     VARIABLES = (
         real_input(
@@ -198,6 +259,7 @@ class BearingFriction(ServoSlave):
             "N.mm",
             depends=_ALL,
             groups=(*_TORQUE, "lubricant", "breakaway", "grease_start", "regularisation"),
+            also=_PREROLLING,
         ),
         _out(
             "running_torque",
@@ -289,6 +351,7 @@ class BearingFriction(ServoSlave):
             "W",
             depends=_ALL,
             groups=(*_TORQUE, "lubricant", "breakaway", "grease_start", "regularisation"),
+            also=_PREROLLING,
         ),
         _out("max_contact_pressure", "Largest Hertz contact pressure", "Pa", "MPa"),
         _out(
@@ -354,6 +417,7 @@ class BearingFriction(ServoSlave):
             (),
         ),
         *(spec_parameter(p) for p in PARAMETERS if p.name in LATER_PARAMETERS),
+        *_PREROLLING_VARIABLES,
     )
     _SPEED_OUTPUTS = _outputs_of(_SPEED_FIELDS, VARIABLES)  # those that move with speed alone
     _set_speed = staticmethod(ServoSlave.output_setter(_SPEED_OUTPUTS))
@@ -376,26 +440,40 @@ class BearingFriction(ServoSlave):
         self._below_flow_told = False  # the warning below the flow limit: once
         # the outputs that do not move with speed: copied from the model's PointState
         self._copy_state = self.output_copier(PointState.__dataclass_fields__)
+        # pre-rolling (physics/prerolling.py): Dahl's state (rings' angle [rad], torque [N·m])
+        # from zero stress; with prerolling_model = 0 nothing of it runs (_carry None)
+        self._pr_angle = self._pr_torque = 0.0
+        self._sigma0 = self.prerolling_stiffness  # 0: derived at each operating point
+        self._excess = 0.0  # the breakaway excess of the operating point [N·m]
+        self._carry = self._advance_prerolling if self.prerolling_model == prerolling.DAHL else None
 
     def hidden_state(self):
         # the continuation of the thermal and load state (physics/continuation.py): a restored
         # instance continues bit for bit
-        return {"continuation": self.model.state() if self._configured else None}
+        return {
+            "continuation": self.model.state() if self._configured else None,
+            "prerolling": [self._pr_angle, self._pr_torque] if self._configured else [0.0, 0.0],
+        }
 
     def restore_hidden_state(self, state):
         # the restored outputs need not belong to the model's last operating point: the next
         # compute evaluates every output (found by the state fuzzing of tests/robustness)
         self._point = None
+        angle, torque = _prerolling_state(state.get("prerolling"), self.prerolling_model)
         if self._configured:
             self.model.restore(state.get("continuation"))
+            self._pr_angle, self._pr_torque = angle, torque
 
     def compute(self):
         temps = temperatures(self)
         point = (temps, self.axial_load, self.radial_load)
         if point != self._point:  # else only the speed changed: the speed terms alone
             was_outside, was_reversed = self.outside_lubricant_range, self.reverse_loaded
-            self._copy_state(self, self.model.update(temps, self.axial_load, self.radial_load))
+            state = self.model.update(temps, self.axial_load, self.radial_load)
+            self._copy_state(self, state)
             self._point = point
+            if self._carry is not None:
+                self._prerolling_point(state, temps)
             if self.outside_lubricant_range and not was_outside:
                 self._warn_lubricant_range(temps)
             elif self.outside_lubricant_range and not self._below_flow_told:
@@ -403,6 +481,45 @@ class BearingFriction(ServoSlave):
             if self.reverse_loaded and not was_reversed:
                 self._warn_reverse_loaded()
         self._set_speed(self, self.model.speed_outputs(self.speed))
+        if self._carry is not None:
+            self._prerolling_outputs()
+
+    # ------------------------------------------------------------------ pre-rolling
+    def _prerolling_point(self, state, temps):
+        """At a new operating point: its breakaway excess and, derived, its rest stiffness."""
+        self._excess = state.breakaway_excess
+        if self.prerolling_stiffness == 0.0:
+            t4 = (temps,) * 4 if type(temps) is float else temps
+            self._sigma0 = prerolling.contact_rest_stiffness(
+                self.model.pair, t4, self.axial_load, self.radial_load
+            )
+
+    def _prerolling_outputs(self):
+        """friction_torque, prerolling_torque and power_loss from Dahl's state, within T_c of
+        the current inputs (a rest stiffness of 0, no ball loaded: the regularised sign)."""
+        tc = float(
+            prerolling.coulomb_torque(
+                self.running_torque, self._excess, self.speed, self.model.pair.stribeck_speed
+            )
+        )
+        self._coulomb = tc
+        self.prerolling_angle = self._pr_angle
+        if self._sigma0 > 0.0:
+            t = min(max(self._pr_torque, -tc), tc)
+            self.prerolling_torque = self.friction_torque = t
+            self.power_loss = t * self.speed
+        else:
+            self.prerolling_torque = 0.0
+
+    def _advance_prerolling(self, step_size: float) -> bool:
+        """Dahl's state over a step, speed and T_c held (exact: physics/prerolling.py)."""
+        dtheta = self.speed * step_size
+        self._pr_angle += dtheta
+        self._pr_torque = prerolling.dahl_torque_step(
+            self._pr_torque, self._coulomb, self._sigma0, self.prerolling_exponent, dtheta
+        )
+        self._prerolling_outputs()
+        return True
 
     def _warn_reverse_loaded(self):
         """One warning each time a bearing's balls go onto the other flanks of its grooves."""
@@ -473,12 +590,32 @@ class BearingFriction(ServoSlave):
             self._warn_below_flow_limit(t)
 
 
+def _prerolling_state(state, model: int) -> tuple[float, float]:
+    """The (angle [rad], torque [N·m]) of a restored hidden state, checked: two finite
+    numbers, both 0 with prerolling_model = 0 (nothing else is ever saved); ValueError
+    naming what is wrong. A torque beyond T_c is taken to ±T_c when used, as a step does."""
+    if not (isinstance(state, list) and len(state) == 2):
+        raise ValueError(f"prerolling = {state!r} is not [angle, torque]")
+    angle, torque = state
+    for name, x in (("prerolling angle", angle), ("prerolling torque", torque)):
+        if type(x) is not float or not math.isfinite(x):
+            raise ValueError(f"{name} = {x!r} is not a finite number")
+    if model != prerolling.DAHL and (angle, torque) != (0.0, 0.0):
+        raise ValueError(
+            f"prerolling = {state!r} with prerolling_model = {model!r}: without pre-rolling "
+            "the state is [0.0, 0.0]"
+        )
+    return angle, torque
+
+
 # every output is in the model's PointState, moves with speed (compute copies those) or is a
 # property of the configuration (configure sets it)
 _UNCOPIED = {v.field for v in BearingFriction.VARIABLES if v.causality == "output"} - {
     *PointState.__dataclass_fields__,
     *_SPEED_FIELDS,
     "breakaway_lower_bound",
+    "prerolling_angle",  # with prerolling_model = 1 from Dahl's state (_prerolling_outputs)
+    "prerolling_torque",
 }
 if _UNCOPIED:
     raise TypeError(f"BearingFriction outputs without a source in compute(): {sorted(_UNCOPIED)}")
