@@ -22,6 +22,7 @@ SCENARIOS = (
     "low_speed_tracking",
     "thermal_cycle",
     "chamber_transient",
+    "pointing_reversal",
 )
 
 
