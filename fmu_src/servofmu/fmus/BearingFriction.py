@@ -55,6 +55,32 @@ unloaded pair, ``reverse_loaded`` says a bearing is loaded on the other flanks o
 (:func:`servofmu.physics.pair_state.preload_force`, :func:`~servofmu.physics.pair_state.axial_play`,
 :func:`~servofmu.physics.pair_state.state_flags`).
 
+``prerolling_model`` = 1 turns on pre-rolling friction (:mod:`servofmu.physics.prerolling`):
+over the rings' relative angle θ, integrated from ``speed`` (``prerolling_angle``), the
+friction torque T follows Dahl's model (Dahl 1976, AIAA J. 14:1675, eq. 1)
+
+.. math::
+
+   \frac{dT}{d\theta} = \sigma_0\,\Bigl|1 - \frac{T}{T_c}\,\mathrm{sgn}\,\omega\Bigr|^{i}
+   \,\mathrm{sgn}\Bigl(1 - \frac{T}{T_c}\,\mathrm{sgn}\,\omega\Bigr),
+
+from T = 0 at initialization, with T_c the torque without pre-rolling at that speed and
+temperature (its regularised sign taken away), σ₀ ``prerolling_stiffness`` and i
+``prerolling_exponent``. Each step advances T in closed form with the speed and T_c held, exact
+for every i; ``friction_torque`` = ``prerolling_torque`` = T, signed as without pre-rolling
+(it opposes the motion that built it), and ``power_loss`` = T·ω. With
+``prerolling_stiffness`` = 0 the rest slope is derived from the contacts at each operating
+point (Mindlin 1949; Johnson 1985 §7.2 and §4.2):
+
+.. math::
+
+   \sigma_0 = \sum_{\text{bearings}} \sum_{\text{balls}}
+   \frac{k_{t,i}\,k_{t,o}}{k_{t,i} + k_{t,o}}\, r_i^2, \qquad k_t = 8\,G^*\sqrt{a\,b},
+   \qquad r_i = \tfrac12\,(d_m - D_w\cos\alpha);
+
+a pair without a loaded ball (σ₀ = 0) keeps the regularised sign. With
+``prerolling_model`` = 0 (the default) none of this runs and every output is as before.
+
 The range its physics holds for: the balls on the designed flanks of their grooves
 (``contact_angle`` ≥ 0 for bearing A). A pair pulled far apart (a 473 K housing around a 173 K
 shaft: ``contact_angle`` = −0.64 rad) puts them on the other flanks, where an angular-contact
