@@ -471,6 +471,7 @@ class BearingFriction(ServoSlave):
         self._pr_angle = self._pr_torque = 0.0
         self._sigma0 = self.prerolling_stiffness  # 0: derived at each operating point
         self._excess = 0.0  # the breakaway excess of the operating point [N·m]
+        self._stribeck = self.model.pair.stribeck_speed  # ω_s [rad/s] of T_c
         self._carry = self._advance_prerolling if self.prerolling_model == prerolling.DAHL else None
 
     def hidden_state(self):
@@ -523,12 +524,9 @@ class BearingFriction(ServoSlave):
     def _prerolling_outputs(self):
         """friction_torque, prerolling_torque and power_loss from Dahl's state, within T_c of
         the current inputs (a rest stiffness of 0, no ball loaded: the regularised sign)."""
-        tc = float(
-            prerolling.coulomb_torque(
-                self.running_torque, self._excess, self.speed, self.model.pair.stribeck_speed
-            )
+        self._coulomb = tc = prerolling.coulomb_torque(
+            self.running_torque, self._excess, self.speed, self._stribeck
         )
-        self._coulomb = tc
         self.prerolling_angle = self._pr_angle
         if self._sigma0 > 0.0:
             t = min(max(self._pr_torque, -tc), tc)
@@ -541,9 +539,13 @@ class BearingFriction(ServoSlave):
         """Dahl's state over a step, speed and T_c held (exact: physics/prerolling.py)."""
         dtheta = self.speed * step_size
         self._pr_angle += dtheta
-        self._pr_torque = prerolling.dahl_torque_step(
-            self._pr_torque, self._coulomb, self._sigma0, self.prerolling_exponent, dtheta
-        )
+        self._pr_torque = (
+            prerolling.dahl_torque_step(
+                self._pr_torque, self._coulomb, self._sigma0, self.prerolling_exponent, dtheta
+            )
+            if self._sigma0 > 0.0
+            else 0.0
+        )  # no ball loaded: no stress held
         self._prerolling_outputs()
         return True
 

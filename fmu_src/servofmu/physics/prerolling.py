@@ -92,9 +92,11 @@ def coulomb_torque(running_torque, breakaway_excess, speed, stribeck_speed):
 
     Examples
     --------
-    >>> float(coulomb_torque(1e-3, 5e-4, 0.0, 1e-2))  # N·m: the breakaway at rest
+    >>> coulomb_torque(1e-3, 5e-4, 0.0, 1e-2)  # N·m: the breakaway at rest
     0.0015
     """
+    if type(speed) is float:  # the per-step path: floats
+        return running_torque + breakaway_excess * math.exp(-abs(speed) / stribeck_speed)
     return running_torque + breakaway_excess * np.exp(-np.abs(speed) / stribeck_speed)
 
 
