@@ -194,7 +194,7 @@ _PREROLLING_VARIABLES = (
         unit="1",
         min=prerolling.EXPONENT_RANGE[0],
         max=prerolling.EXPONENT_RANGE[1],
-        source="paper: Dahl 1976 (i = 1 fits ball bearings)",
+        source="assumed: i = 1, the exponential loop of Dahl 1976; not fitted",
     ),
     output(
         "prerolling_angle",

@@ -60,7 +60,7 @@ import math
 
 import numpy as np
 
-from ._checks import check_finite, check_nonnegative, check_positive, check_range
+from ._checks import check_finite, check_nonnegative, check_positive
 
 #: prerolling_model: the pre-rolling models by number (0: none, the regularised sign).
 MODELS = ("none", "dahl")
@@ -198,32 +198,6 @@ def dahl_resonance_frequency(sigma0, inertia):
     check_nonnegative("sigma0", sigma0, "N·m/rad")
     check_positive("inertia", inertia, "kg·m²")
     return np.sqrt(sigma0 / inertia) / (2.0 * np.pi)
-
-
-def check_prerolling(model: int, stiffness: float, exponent: float) -> None:
-    """ValueError naming a pre-rolling parameter outside its range: ``model`` [-] one of
-    :data:`MODELS` by number, ``stiffness`` σ₀ [N·m/rad] in :data:`STIFFNESS_RANGE`,
-    ``exponent`` i [-] in :data:`EXPONENT_RANGE`.
-
-    Returns
-    -------
-    None
-
-    Examples
-    --------
-    >>> try:
-    ...     check_prerolling(1, 1.0, -1.0)
-    ... except ValueError as exc:
-    ...     print("prerolling_exponent" in str(exc))
-    True
-    """
-    if model not in range(len(MODELS)):
-        raise ValueError(
-            f"prerolling_model = {model!r} is not one of 0…{len(MODELS) - 1} "
-            f"({', '.join(f'{i} = {m}' for i, m in enumerate(MODELS))})"
-        )
-    check_range("prerolling_stiffness", stiffness, *STIFFNESS_RANGE, unit="N·m/rad")
-    check_range("prerolling_exponent", exponent, *EXPONENT_RANGE, unit="-")
 
 
 # ------------------------------------------------------------------ the rest stiffness
