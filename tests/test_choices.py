@@ -195,8 +195,7 @@ def test_variable_table_checks_name_what_is_wrong():
 
 def test_speed_path_refreshes_exactly_the_outputs_that_depend_on_speed():
     speed = {v.name for v in BearingFriction.VARIABLES if "speed" in v.depends}
-    # prerolling_torque: set at every compute from Dahl's state (_prerolling_outputs)
-    assert set(BearingFriction._SPEED_OUTPUTS) | {"prerolling_torque"} == speed
+    assert set(BearingFriction._SPEED_OUTPUTS) == speed
 
 
 def test_physics_does_not_import_the_fmu_layer():

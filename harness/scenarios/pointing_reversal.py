@@ -39,7 +39,18 @@ SYSTEMS = (("Dahl", "seeker_gimbal_prerolling"), ("none", "seeker_gimbal_positio
 
 def reversal_times(shape: str, stop: float, period: float = PERIOD) -> np.ndarray:
     """Times [s] at which a :class:`~..signals.Cycle` command of ``shape`` reverses, up to
-    ``stop`` [s]: a sine at (k + 1/4)·P and (k + 3/4)·P, a triangle at P/2, P, …"""
+    about ``stop`` [s]: a sine at (k + 1/4)·P and (k + 3/4)·P, a triangle at P/2, P, …
+
+    Returns
+    -------
+    numpy.ndarray
+        The times [s], one reversal beyond ``stop`` included.
+
+    Examples
+    --------
+    >>> reversal_times("sine", 0.5).tolist(), reversal_times("triangle", 0.5).tolist()
+    ([0.125, 0.375, 0.625], [0.25, 0.5, 0.75])
+    """
     first = 0.25 if shape == "sine" else 0.5
     return (first + 0.5 * np.arange(int(2.0 * stop / period) + 1)) * period
 
@@ -47,7 +58,21 @@ def reversal_times(shape: str, stop: float, period: float = PERIOD) -> np.ndarra
 def reversal_metrics(time, reference, angle, speed, shape: str) -> dict:
     """Tracking figures of one run (arrays over time [s], reference/angle [rad], speed
     [rad/s]): the error over the run and near each reversal of the command (within a tenth of
-    a period after it)."""
+    a period after it).
+
+    Returns
+    -------
+    dict
+        Errors [µrad] and reversal counts, keyed by column name (units in the names).
+
+    Examples
+    --------
+    >>> t = np.linspace(0.0, PERIOD, 501)
+    >>> ref = AMPLITUDE * np.sin(2.0 * np.pi * t / PERIOD)
+    >>> m = reversal_metrics(t, ref, ref - 1e-6, np.gradient(ref, t), "sine")
+    >>> round(m["max error after reversal [urad]"], 6), m["speed reversals"]
+    (1.0, 2)
+    """
     error = reference - angle
     at = reversal_times(shape, time[-1])
     at = at[at + 0.1 * PERIOD <= time[-1]]
@@ -64,8 +89,25 @@ def reversal_metrics(time, reference, angle, speed, shape: str) -> dict:
 
 
 def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
-    """The scenario on the standard mechanism; ``coarse``: one period of each command (else
-    three)."""
+    """The scenario on the standard mechanism, its systems from ``fmu_dir`` (default: the
+    build folder, built when missing or stale), its files in ``out_dir``; ``coarse``: one
+    period of each command (else three).
+
+    Returns
+    -------
+    ScenarioResult
+        One row per system, temperature and command; the files: each run's CSV, the table's
+        CSV and the figure.
+
+    Examples
+    --------
+    The runs (each at the step :data:`STEP` [s]):
+
+    >>> [name for _, name in SYSTEMS]
+    ['seeker_gimbal_prerolling', 'seeker_gimbal_position']
+    >>> [label for label, _ in TEMPERATURES], SHAPES, STEP
+    (['-40 °C', '20 °C', '60 °C'], ('sine', 'triangle'), 2e-05)
+    """
     out = Path(out_dir)
     stop = PERIOD if coarse else 3.0 * PERIOD
     rows, files, traces = [], [], {}

@@ -67,8 +67,9 @@ friction torque T follows Dahl's model (Dahl 1976, AIAA J. 14:1675, eq. 1)
 from T = 0 at initialization, with T_c the torque without pre-rolling at that speed and
 temperature (its regularised sign taken away), σ₀ ``prerolling_stiffness`` and i
 ``prerolling_exponent``. Each step advances T in closed form with the speed and T_c held, exact
-for every i; ``friction_torque`` = ``prerolling_torque`` = T, signed as without pre-rolling
-(it opposes the motion that built it), and ``power_loss`` = T·ω. With
+for every i; ``prerolling_torque`` is T at the end of the last step and ``friction_torque``
+is T held within ±T_c of the current inputs, signed as without pre-rolling (it opposes the
+motion that built it); ``power_loss`` = T·ω. With
 ``prerolling_stiffness`` = 0 the rest slope is derived from the contacts at each operating
 point (Mindlin 1949; Johnson 1985 §7.2 and §4.2):
 
@@ -205,15 +206,16 @@ _PREROLLING_VARIABLES = (
         initial_depends=(),
         field="prerolling_angle",
     ),
-    _out(
+    output(
         "prerolling_torque",
-        "Dahl's pre-rolling torque, signed like friction_torque, which equals it with "
-        "prerolling_model = 1 (0 with prerolling_model = 0)",
-        "N.m",
-        "N.mm",
-        depends=_ALL,
-        groups=(*_TORQUE, "lubricant", "breakaway", "grease_start", "regularisation"),
-        also=_PREROLLING,
+        "Dahl's pre-rolling torque at the end of the last step (0 at initialization; 0 with "
+        "prerolling_model = 0), signed like friction_torque, which is it held within the "
+        "sliding torque of the current inputs",
+        unit="N.m",
+        display_unit="N.mm",
+        depends=(),  # the state of the last step: no input moves it directly
+        initial_depends=(),  # zero stress at initialization, whatever the parameters
+        field="prerolling_torque",
     ),
 )
 
@@ -522,18 +524,17 @@ class BearingFriction(ServoSlave):
             )
 
     def _prerolling_outputs(self):
-        """friction_torque, prerolling_torque and power_loss from Dahl's state, within T_c of
-        the current inputs (a rest stiffness of 0, no ball loaded: the regularised sign)."""
+        """prerolling_angle and prerolling_torque: Dahl's state; friction_torque and power_loss
+        from it, within T_c of the current inputs (a rest stiffness of 0, no ball loaded: the
+        regularised sign)."""
         self._coulomb = tc = prerolling.coulomb_torque(
             self.running_torque, self._excess, self.speed, self._stribeck
         )
         self.prerolling_angle = self._pr_angle
+        self.prerolling_torque = self._pr_torque
         if self._sigma0 > 0.0:
-            t = min(max(self._pr_torque, -tc), tc)
-            self.prerolling_torque = self.friction_torque = t
+            self.friction_torque = t = min(max(self._pr_torque, -tc), tc)
             self.power_loss = t * self.speed
-        else:
-            self.prerolling_torque = 0.0
 
     def _advance_prerolling(self, step_size: float) -> bool:
         """Dahl's state over a step, speed and T_c held (exact: physics/prerolling.py)."""
