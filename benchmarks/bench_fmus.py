@@ -126,17 +126,34 @@ LOOPS = {
 }
 
 
+#: Pre-rolling on (Dahl) with a given rest stiffness (--models); one derived from the contacts
+#: costs an exact equilibrium at each new temperature or load, which a ramp makes every step.
+PREROLLING = {"prerolling_model": 1, "prerolling_stiffness": 2.0}
+
+
 def _model_loops() -> dict:
-    """BearingFriction's loops under the other friction models (``--models``)."""
+    """BearingFriction's loops under the other friction models and with pre-rolling on
+    (``--models``)."""
     return {
-        f"BearingFriction {model} ({what})": (
-            _BEARING_INPUTS,
-            values,
-            "friction_torque",
-            {"friction_model": item},
-        )
-        for model, item in OTHER_MODELS.items()
-        for what, values in BEARING_LOOPS.items()
+        **{
+            f"BearingFriction {model} ({what})": (
+                _BEARING_INPUTS,
+                values,
+                "friction_torque",
+                {"friction_model": item},
+            )
+            for model, item in OTHER_MODELS.items()
+            for what, values in BEARING_LOOPS.items()
+        },
+        **{
+            f"BearingFriction prerolling ({what})": (
+                _BEARING_INPUTS,
+                values,
+                "friction_torque",
+                PREROLLING,
+            )
+            for what, values in BEARING_LOOPS.items()
+        },
     }
 
 

@@ -119,6 +119,8 @@ def test_the_checksum_is_of_the_bytes_themselves(fmus):
         ("ServoController", "values", "command", math.inf),
         ("ThermalNetwork", "values", "shaft_temperature", -5.0),
         ("ThermalNetwork", "values", "housing_temperature", math.inf),
+        ("BearingFriction", "hidden", "prerolling", [math.nan, 0.0]),
+        ("BearingFriction", "hidden", "prerolling", [0.0, 1e-3]),  # without pre-rolling
     ],
 )
 def test_a_restored_value_that_the_fmu_could_not_hold_is_refused(fmus, name, where, field, value):

@@ -311,3 +311,23 @@ def test_space_bearing_friction_models_at_minus_40(results):
     assert rows["skf2004"]["breakaway [N.mm]"] == pytest.approx(
         rows["skf2004"]["running [N.mm]"], rel=1e-6
     )
+
+
+def test_pointing_reversal_loops_close_onto_the_running_torque(results):
+    rows = results["pointing_reversal"].rows
+    by = {(r["pre-rolling"], r["temperature"], r["command"]): r for r in rows}
+    for label in ("-40 °C", "20 °C", "60 °C"):
+        for shape in ("sine", "triangle"):
+            dahl, none = by[("Dahl", label, shape)], by[("none", label, shape)]
+            # the loop of a swing far beyond T_c/σ₀ closes onto ±T_c: the same swing
+            assert dahl["torque swing [N.mm]"] == pytest.approx(
+                none["torque swing [N.mm]"], rel=0.1
+            )
+            # without pre-rolling the rotor reverses as the command does (no hunting)
+            assert none["speed reversals"] <= none["command reversals"] + 1, none
+    # with the contacts' rest stiffness the rotor rings at the Dahl resonance near each
+    # reversal (lightly damped, excited by the controller's samples; the same count at a
+    # quarter of the step); at 60 °C the preload is lost, σ₀ = 0, no ringing
+    for label in ("-40 °C", "20 °C"):
+        assert by[("Dahl", label, "sine")]["speed reversals"] > 20
+    assert by[("Dahl", "60 °C", "sine")]["speed reversals"] <= 3

@@ -141,8 +141,8 @@ def test_cli_runs_the_report(tmp_path, capsys):
     assert data["paper"] == "validation"
     # 12 + 12 rig rows, 1 second-source row, 2 SKF, 2 calibrated, 1 grease prediction; 33
     # recorded viscosities of 14 fluid lubricants (28 ν40/ν100 less Krytox 143AA's two, derived
-    # from Yu's constants, and 7 further points), 6 of Yu's eq 18
-    assert len(data["rows"]) == 30 + 33 + 6
+    # from Yu's constants, and 7 further points), 6 of Yu's eq 18; 2 pre-rolling rest slopes
+    assert len(data["rows"]) == 30 + 33 + 6 + 2
 
 
 def test_the_viscosity_section_lists_every_recorded_point_within_3_percent(rep):
@@ -184,3 +184,11 @@ def test_the_viscosity_section_lists_every_recorded_point_within_3_percent(rep):
     assert flow["pennzane_2000.flow_limit"].value == pytest.approx(-55.0)  # its pour point
     assert "pour point" in flow["pennzane_2000.flow_limit"].provenance
     assert flow["krytox_143aa.flow_limit"].value == "none"
+
+
+def test_the_rest_slope_rows_say_that_no_published_value_was_found(rep):
+    r = rows(rep)
+    for key in ("dahl1976", "lovell1997"):
+        row = r[f"validation.prerolling.rest_slope_{key}"]
+        assert row.status == "not-reproduced" and "no published value found" in row.note
+        assert "9653 N·m/rad" in row.computed  # the hand-checked value (test_prerolling.py)

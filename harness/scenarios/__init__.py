@@ -9,7 +9,10 @@
 - ``thermal_cycle``: Ning's space bearing through −60…+80 °C at constant speed;
 - ``chamber_transient``: the part temperatures of a ThermalNetwork in the loop: Yu's gimbal
   through chamber steps and ramps −40 ↔ +60 °C, Ning's bearing through thermal-vacuum (and
-  chamber-air) cycles, against the quasi-static curve.
+  chamber-air) cycles, against the quasi-static curve;
+- ``pointing_reversal``: the gimbal's position loop through small-angle reversals (±0.02°)
+  at −40, 20 and 60 °C, with pre-rolling friction (Dahl) and without: torque–angle loops,
+  tracking error at reversals, hunting.
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ SCENARIOS = (
     "low_speed_tracking",
     "thermal_cycle",
     "chamber_transient",
+    "pointing_reversal",
 )
 
 

@@ -55,6 +55,34 @@ unloaded pair, ``reverse_loaded`` says a bearing is loaded on the other flanks o
 (:func:`servofmu.physics.pair.state.preload_force`, :func:`~servofmu.physics.pair.state.axial_play`,
 :func:`~servofmu.physics.pair.state.state_flags`).
 
+``prerolling_model`` = 1 turns on pre-rolling friction
+(:mod:`servofmu.physics.friction.prerolling`): over the rings' relative angle θ, integrated
+from ``speed`` (``prerolling_angle``), the friction torque T follows Dahl's model (Dahl 1976,
+AIAA J. 14:1675, eq. 1)
+
+.. math::
+
+   \frac{dT}{d\theta} = \sigma_0\,\Bigl|1 - \frac{T}{T_c}\,\mathrm{sgn}\,\omega\Bigr|^{i}
+   \,\mathrm{sgn}\Bigl(1 - \frac{T}{T_c}\,\mathrm{sgn}\,\omega\Bigr),
+
+from T = 0 at initialization, with T_c the torque without pre-rolling at that speed and
+temperature (its regularised sign taken away), σ₀ ``prerolling_stiffness`` and i
+``prerolling_exponent``. Each step advances T in closed form with the speed and T_c held, exact
+for every i; ``prerolling_torque`` is T at the end of the last step and ``friction_torque``
+is T held within ±T_c of the current inputs, signed as without pre-rolling (it opposes the
+motion that built it); ``power_loss`` = T·ω. With
+``prerolling_stiffness`` = 0 the rest slope is derived from the contacts at each operating
+point (Mindlin 1949; Johnson 1985 §7.2 and §4.2):
+
+.. math::
+
+   \sigma_0 = \sum_{\text{bearings}} \sum_{\text{balls}}
+   \frac{k_{t,i}\,k_{t,o}}{k_{t,i} + k_{t,o}}\, r_i^2, \qquad k_t = 8\,G^*\sqrt{a\,b},
+   \qquad r_i = \tfrac12\,(d_m - D_w\cos\alpha);
+
+a pair without a loaded ball (σ₀ = 0) keeps the regularised sign. With
+``prerolling_model`` = 0 (the default) none of this runs and every output is as before.
+
 The range its physics holds for: the balls on the designed flanks of their grooves
 (``contact_angle`` ≥ 0 for bearing A). A pair pulled far apart (a 473 K housing around a 173 K
 shaft: ``contact_angle`` = −0.64 rad) puts them on the other flanks, where an angular-contact
@@ -75,7 +103,7 @@ import math  # noqa: E402
 
 from pythonfmu.enums import Fmi2Status  # noqa: E402
 
-from servofmu.fmus.declarations import output, real_input, spec_parameter  # noqa: E402
+from servofmu.fmus.declarations import Var, output, real_input, real_parameter, spec_parameter  # noqa: E402
 from servofmu.fmus.part_temperatures import (  # noqa: E402
     TEMPERATURE_INPUTS,
     part_inputs,
@@ -87,6 +115,7 @@ from servofmu.parameters.bearing import PARAMETERS, pair_from_parameters, parame
 from servofmu.parameters.table import LATER_PARAMETERS  # noqa: E402
 from servofmu.physics import compiled as continuation  # noqa: E402
 from servofmu.physics.bearing import BearingModel  # noqa: E402
+from servofmu.physics.friction import prerolling  # noqa: E402
 from servofmu.physics.pair.state import PointState  # noqa: E402
 
 _TEMPS = TEMPERATURE_INPUTS
@@ -117,7 +146,12 @@ def _out(name, description, unit, display=None, *, depends=_LOADS, groups=_STATE
         display_unit=display,
         type=kw.pop("kind", "Real"),
         depends=depends,
-        initial_depends=(*depends, "temperature_mode", *parameters_in(*groups)),
+        initial_depends=(
+            *depends,
+            "temperature_mode",
+            *parameters_in(*groups),
+            *kw.pop("also", ()),  # parameters outside bearing_parameters.GROUPS
+        ),
         field=kw.pop("field", name),
         **kw,
     )
@@ -130,6 +164,62 @@ def _outputs_of(fields, variables) -> tuple[str, ...]:
 
 def _flag(name, description, groups=_STATE, depends=_LOADS):
     return _out(name, description, None, kind="Boolean", groups=groups, depends=depends)
+
+
+_PREROLLING = ("prerolling_model", "prerolling_stiffness", "prerolling_exponent")
+_PREROLLING_VARIABLES = (
+    Var(
+        name="prerolling_model",
+        type="Integer",
+        causality="parameter",
+        description="Pre-rolling friction: 0 = none (the regularised sign of friction_torque), "
+        "1 = Dahl (friction_torque follows Dahl's state over the rings' relative angle)",
+        start=prerolling.NONE,
+        min=0,
+        max=len(prerolling.MODELS) - 1,
+        source="assumed: off by default, so that earlier results stay",
+    ),
+    real_parameter(
+        "prerolling_stiffness",
+        "Dahl's rest slope sigma0 (0: derived from the contacts, Mindlin's no-slip stiffness "
+        "8 G* sqrt(ab) of each ball's inner and outer contact in series times the inner contact "
+        "radius squared, summed over the balls of both bearings)",
+        start=0.0,
+        unit="N.m/rad",
+        min=prerolling.STIFFNESS_RANGE[0],
+        max=prerolling.STIFFNESS_RANGE[1],
+        source="0: derived (Mindlin 1949; Johnson 1985 §7.2); a value: measured (Dahl 1976)",
+    ),
+    real_parameter(
+        "prerolling_exponent",
+        "Dahl's exponent i (1: the exponential loop)",
+        start=1.0,
+        unit="1",
+        min=prerolling.EXPONENT_RANGE[0],
+        max=prerolling.EXPONENT_RANGE[1],
+        source="assumed: i = 1, the exponential loop of Dahl 1976; not fitted",
+    ),
+    output(
+        "prerolling_angle",
+        "Relative angle of the rings integrated from speed over the steps (0 at "
+        "initialization; 0 with prerolling_model = 0)",
+        unit="rad",
+        depends=(),
+        initial_depends=(),
+        field="prerolling_angle",
+    ),
+    output(
+        "prerolling_torque",
+        "Dahl's pre-rolling torque at the end of the last step (0 at initialization; 0 with "
+        "prerolling_model = 0), signed like friction_torque, which is it held within the "
+        "sliding torque of the current inputs",
+        unit="N.m",
+        display_unit="N.mm",
+        depends=(),  # the state of the last step: no input moves it directly
+        initial_depends=(),  # zero stress at initialization, whatever the parameters
+        field="prerolling_torque",
+    ),
+)
 
 
 class BearingFriction(ServoSlave):
@@ -154,6 +244,7 @@ class BearingFriction(ServoSlave):
         "servofmu.physics.contact.equilibrium",
         "servofmu.physics.contact.hertz",
         "servofmu.physics.lubrication.viscosity",
+        "servofmu.physics.friction.prerolling",
     )
     VARIABLES = (
         real_input(
@@ -198,6 +289,7 @@ class BearingFriction(ServoSlave):
             "N.mm",
             depends=_ALL,
             groups=(*_TORQUE, "lubricant", "breakaway", "grease_start", "regularisation"),
+            also=_PREROLLING,
         ),
         _out(
             "running_torque",
@@ -289,6 +381,7 @@ class BearingFriction(ServoSlave):
             "W",
             depends=_ALL,
             groups=(*_TORQUE, "lubricant", "breakaway", "grease_start", "regularisation"),
+            also=_PREROLLING,
         ),
         _out("max_contact_pressure", "Largest Hertz contact pressure", "Pa", "MPa"),
         _out(
@@ -354,6 +447,7 @@ class BearingFriction(ServoSlave):
             (),
         ),
         *(spec_parameter(p) for p in PARAMETERS if p.name in LATER_PARAMETERS),
+        *_PREROLLING_VARIABLES,
     )
     _SPEED_OUTPUTS = _outputs_of(_SPEED_FIELDS, VARIABLES)  # those that move with speed alone
     _set_speed = staticmethod(ServoSlave.output_setter(_SPEED_OUTPUTS))
@@ -376,26 +470,41 @@ class BearingFriction(ServoSlave):
         self._below_flow_told = False  # the warning below the flow limit: once
         # the outputs that do not move with speed: copied from the model's PointState
         self._copy_state = self.output_copier(PointState.__dataclass_fields__)
+        # pre-rolling (physics/friction/prerolling.py): Dahl's state (rings' angle [rad],
+        # torque [N·m]) from zero stress; with prerolling_model = 0 nothing of it runs (_carry None)
+        self._pr_angle = self._pr_torque = 0.0
+        self._sigma0 = self.prerolling_stiffness  # 0: derived at each operating point
+        self._excess = 0.0  # the breakaway excess of the operating point [N·m]
+        self._stribeck = self.model.pair.stribeck_speed  # ω_s [rad/s] of T_c
+        self._carry = self._advance_prerolling if self.prerolling_model == prerolling.DAHL else None
 
     def hidden_state(self):
         # the continuation of the thermal and load state (physics/pair/continuation.py): a
         # restored instance continues bit for bit
-        return {"continuation": self.model.state() if self._configured else None}
+        return {
+            "continuation": self.model.state() if self._configured else None,
+            "prerolling": [self._pr_angle, self._pr_torque] if self._configured else [0.0, 0.0],
+        }
 
     def restore_hidden_state(self, state):
         # the restored outputs need not belong to the model's last operating point: the next
         # compute evaluates every output (found by the state fuzzing of tests/robustness)
         self._point = None
+        angle, torque = _prerolling_state(state.get("prerolling"), self.prerolling_model)
         if self._configured:
             self.model.restore(state.get("continuation"))
+            self._pr_angle, self._pr_torque = angle, torque
 
     def compute(self):
         temps = temperatures(self)
         point = (temps, self.axial_load, self.radial_load)
         if point != self._point:  # else only the speed changed: the speed terms alone
             was_outside, was_reversed = self.outside_lubricant_range, self.reverse_loaded
-            self._copy_state(self, self.model.update(temps, self.axial_load, self.radial_load))
+            state = self.model.update(temps, self.axial_load, self.radial_load)
+            self._copy_state(self, state)
             self._point = point
+            if self._carry is not None:
+                self._prerolling_point(state, temps)
             if self.outside_lubricant_range and not was_outside:
                 self._warn_lubricant_range(temps)
             elif self.outside_lubricant_range and not self._below_flow_told:
@@ -403,6 +512,45 @@ class BearingFriction(ServoSlave):
             if self.reverse_loaded and not was_reversed:
                 self._warn_reverse_loaded()
         self._set_speed(self, self.model.speed_outputs(self.speed))
+        if self._carry is not None:
+            self._prerolling_outputs()
+
+    # ------------------------------------------------------------------ pre-rolling
+    def _prerolling_point(self, state, temps):
+        """At a new operating point: its breakaway excess and, derived, its rest stiffness."""
+        self._excess = state.breakaway_excess
+        if self.prerolling_stiffness == 0.0:
+            t4 = (temps,) * 4 if type(temps) is float else temps
+            self._sigma0 = prerolling.contact_rest_stiffness(
+                self.model.pair, t4, self.axial_load, self.radial_load
+            )
+
+    def _prerolling_outputs(self):
+        """prerolling_angle and prerolling_torque: Dahl's state; friction_torque and power_loss
+        from it, within T_c of the current inputs (a rest stiffness of 0, no ball loaded: the
+        regularised sign)."""
+        self._coulomb = tc = prerolling.coulomb_torque(
+            self.running_torque, self._excess, self.speed, self._stribeck
+        )
+        self.prerolling_angle = self._pr_angle
+        self.prerolling_torque = self._pr_torque
+        if self._sigma0 > 0.0:
+            self.friction_torque = t = min(max(self._pr_torque, -tc), tc)
+            self.power_loss = t * self.speed
+
+    def _advance_prerolling(self, step_size: float) -> bool:
+        """Dahl's state over a step, speed and T_c held (exact: physics/friction/prerolling.py)."""
+        dtheta = self.speed * step_size
+        self._pr_angle += dtheta
+        self._pr_torque = (
+            prerolling.dahl_torque_step(
+                self._pr_torque, self._coulomb, self._sigma0, self.prerolling_exponent, dtheta
+            )
+            if self._sigma0 > 0.0
+            else 0.0
+        )  # no ball loaded: no stress held
+        self._prerolling_outputs()
+        return True
 
     def _warn_reverse_loaded(self):
         """One warning each time a bearing's balls go onto the other flanks of its grooves."""
@@ -473,12 +621,32 @@ class BearingFriction(ServoSlave):
             self._warn_below_flow_limit(t)
 
 
+def _prerolling_state(state, model: int) -> tuple[float, float]:
+    """The (angle [rad], torque [N·m]) of a restored hidden state, checked: two finite
+    numbers, both 0 with prerolling_model = 0 (nothing else is ever saved); ValueError
+    naming what is wrong. A torque beyond T_c is taken to ±T_c when used, as a step does."""
+    if not (isinstance(state, list) and len(state) == 2):
+        raise ValueError(f"prerolling = {state!r} is not [angle, torque]")
+    angle, torque = state
+    for name, x in (("prerolling angle", angle), ("prerolling torque", torque)):
+        if type(x) is not float or not math.isfinite(x):
+            raise ValueError(f"{name} = {x!r} is not a finite number")
+    if model != prerolling.DAHL and (angle, torque) != (0.0, 0.0):
+        raise ValueError(
+            f"prerolling = {state!r} with prerolling_model = {model!r}: without pre-rolling "
+            "the state is [0.0, 0.0]"
+        )
+    return angle, torque
+
+
 # every output is in the model's PointState, moves with speed (compute copies those) or is a
 # property of the configuration (configure sets it)
 _UNCOPIED = {v.field for v in BearingFriction.VARIABLES if v.causality == "output"} - {
     *PointState.__dataclass_fields__,
     *_SPEED_FIELDS,
     "breakaway_lower_bound",
+    "prerolling_angle",  # with prerolling_model = 1 from Dahl's state (_prerolling_outputs)
+    "prerolling_torque",
 }
 if _UNCOPIED:
     raise TypeError(f"BearingFriction outputs without a source in compute(): {sorted(_UNCOPIED)}")

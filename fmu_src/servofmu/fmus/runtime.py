@@ -209,6 +209,10 @@ class ServoSlave(Fmi2Slave):
         self._configured = False  # parameters turned into model objects
         self._error = ""  # why the FMU cannot compute, or why it refused a call
         self._phase = INSTANTIATED  # the FMI 2.0 state (calls.py)
+        #: an algebraic FMU with a state that moves over a step (BearingFriction's
+        #: pre-rolling): called with the step size after its outputs are current, it advances
+        #: that state and sets the outputs at the step's end; None (the rule): nothing to carry
+        self._carry = None
         self._start_time: float | None = None  # fmi2SetupExperiment's startTime
         self._time: float | None = None  # where the next fmi2DoStep must start
         for v in self.variables:
@@ -587,6 +591,11 @@ class ServoSlave(Fmi2Slave):
             self._start_time = self._time = current_time
         if self.FEEDTHROUGH:
             ok = self._refresh() if self._dirty else True
+            if ok and self._carry is not None:  # a state carried over the step (see _carry)
+                ok = self._carry(step_size)
+                if ok:  # its outputs checked again (and the checked ones shared)
+                    self._error = self._bad_output()
+                    ok = not self._error
         else:  # a model failure mid-step (or a step beyond its bound): discarded
             ok = self.advance(current_time, step_size)
             if ok:

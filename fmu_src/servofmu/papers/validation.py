@@ -22,6 +22,9 @@ Sources (data with provenance in ``papers/data/friction_measurements.toml`` and
    (:mod:`physics.lubrication.viscosity`: the ASTM D341 line through two points, Vogel's law
    through three or more), with the range of each lubricant's data; Yu's Krytox 143AA
    against his eq 18.
+4. The rest slope of pre-rolling friction from the contacts against the published rest slopes
+   of ball bearings (Dahl 1976; Lovell, Khonsari & Marangoni 1997): no number found, the rows
+   say so.
 
 The validation wants at least two independent oil-lubricated sources. The candidates searched for a
 second one, and why none could be used, are data (``[[searched]]`` in
@@ -552,6 +555,48 @@ def _second_source_row() -> Row:
     )
 
 
+def _prerolling_rows() -> list[Row]:
+    """The rest slope σ₀ from the contacts
+    (:func:`..physics.friction.prerolling.contact_rest_stiffness`, Mindlin's no-slip
+    stiffness) of Yu's 71803 pair at 20 °C against the published rest slopes of ball bearings:
+    Dahl (1976), AIAA J. 14(12):1675, and Lovell, Khonsari & Marangoni (1997), J. Tribol.
+    119(3):462. No number of either could be read in the stored copies (the searched text holds
+    Lovell et al.'s abstract only, which names no value), so the rows say so and test nothing."""
+    from ..physics.friction.prerolling import contact_rest_stiffness
+    from ..physics.pair import BearingPair
+
+    pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    sigma0 = contact_rest_stiffness(pair, (293.15,) * 4)
+    computed = (
+        f"σ₀ = {sigma0:.4g} N·m/rad for Yu's 71803 pair at 20 °C, 0 external load (Mindlin "
+        "contacts in series, balls not rolling: an upper bound)"
+    )
+    missing = (
+        "Untested: no published value found. The rest slope measured on a ball bearing, its "
+        "size, load and lubricant, could not be read in any stored copy; the comparison waits "
+        "for the paper's tables."
+    )
+    return [
+        trend(
+            "validation.prerolling.rest_slope_dahl1976",
+            "rest slope σ₀ of a preloaded ball-bearing pair",
+            "Dahl 1976 (AIAA J. 14:1675): σ₀ measured on instrument ball bearings",
+            False,
+            computed,
+            miss_note=missing,
+        ),
+        trend(
+            "validation.prerolling.rest_slope_lovell1997",
+            "rest slope σ₀ against load and ball size",
+            "Lovell, Khonsari & Marangoni 1997 (J. Tribol. 119:462): an empirical expression "
+            "for σ₀ of ball bearings in load and ball diameter, from a three-ball rig",
+            False,
+            computed,
+            miss_note=missing,
+        ),
+    ]
+
+
 def reproduce(out_dir) -> Report:
     """Build the validation report.
 
@@ -576,7 +621,7 @@ def reproduce(out_dir) -> Report:
     rows, params, files = _balan_rows(out_dir)
     g_rows, g_params = _grease_rows()
     v_rows, v_params, v_files = _viscosity_rows(out_dir)
-    rep.rows = [*rows, _second_source_row(), *g_rows, *v_rows]
+    rep.rows = [*rows, _second_source_row(), *g_rows, *v_rows, *_prerolling_rows()]
     rep.parameters = params + g_params + v_params
     rep.files = files + v_files
     return rep
