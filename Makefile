@@ -5,7 +5,7 @@ BIN     = $(VENV)/bin
 STAMP   = $(VENV)/.installed-stamp
 OUT    ?= out
 
-.PHONY: run test test-long bench lint docs clean system-deps dist
+.PHONY: run test test-fast test-long bench lint docs clean system-deps dist
 
 # setup.py compiles the FMU export library (build/export/) and the modules of
 # physics/compiled.py's MODULES (each X.py with its X.pxd) at install: an edit there reinstalls
@@ -38,6 +38,11 @@ system-deps:
 test: $(STAMP) system-deps lint docs
 	$(BIN)/python -m pytest
 
+## the fast loop while working: lint and the tests not marked slow (a few minutes; make test is
+## the full suite)
+test-fast: $(STAMP) lint
+	$(BIN)/python -m pytest -m "not slow" -q
+
 ## documentation site into docs/_build/html, offline, warnings as errors; the examples gallery
 ## runs its scripts (SERVOFMU_GALLERY=coarse: a few points per curve; full: as a user runs them)
 SERVOFMU_GALLERY ?= coarse
@@ -46,7 +51,7 @@ docs: $(STAMP)
 
 ## long mode: full-size fuzzing (10,000 cases per FMU) and soaks (1,000,000 steps); ~1 h
 test-long: $(STAMP) system-deps lint
-	$(BIN)/python -m pytest --long tests/test_robustness.py tests/test_archives.py
+	$(BIN)/python -m pytest --long tests/fmus/test_robustness.py tests/build/test_archives.py
 
 ## release: the sdist from the checkout, then the wheel from the sdist, into dist/ (the PyPA
 ## frontend runs outside the checkout: the project's own build/ folder would shadow its package)

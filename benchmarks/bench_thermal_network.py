@@ -1,5 +1,5 @@
 """Accuracy and cost of the ThermalNetwork stepping (on demand: ``make bench``; not part of
-the tests, which assert the bounds in tests/test_thermal_network.py).
+the tests, which assert the bounds in tests/physics/test_thermal_network.py).
 
 Each preset starts soaked at −60 °C; at t = 0 the ambient and the sink jump to +80 °C with
 0.05 W of bearing loss, and the network is stepped for 3 h with communication steps h. The

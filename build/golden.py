@@ -1,6 +1,6 @@
 """Golden modelDescription.xml files: each FMU's public interface (variables, units, items,
 dependencies) committed in ``build/model_descriptions/``, so that a change of the API shows in
-a diff. ``tests/test_golden.py`` checks that a fresh build gives the same text.
+a diff. ``tests/fmus/test_golden.py`` checks that a fresh build gives the same text.
 
 Regenerate them after a deliberate change with::
 

@@ -1,5 +1,5 @@
 """Property-based fuzzing of the servofmu FMUs through fmpy (hypothesis), run in a child
-process by ``tests/test_robustness.py`` so that a crash of the host would show as a failed
+process by ``tests/fmus/test_robustness.py`` so that a crash of the host would show as a failed
 test, not as a dead test run.
 
 Two properties per FMU:

@@ -1,5 +1,5 @@
 """What a new user does with plain fmpy, in a fresh interpreter that has only fmpy, numpy and
-scipy (``tests/test_plain_fmpy.py`` runs it in such a virtual environment):
+scipy (``tests/fmus/test_plain_fmpy.py`` runs it in such a virtual environment):
 
     python plain_fmpy.py sequence FMU_A FMU_B      # simulate_fmu(A), then simulate_fmu(B)
     python plain_fmpy.py side_by_side FMU_A FMU_B  # both instantiated, A's folder deleted

@@ -51,14 +51,14 @@ else:
 
 #: Relative change of a contact's ellipticity from its anchor beyond which the anchor is
 #: renewed for the next step (the second-order expansion's error is below 2e-12 there:
-#: measured 1.8e-12 for k, K and E at F = 0.85…0.97, tests/test_continuation.py).
+#: measured 1.8e-12 for k, K and E at F = 0.85…0.97, tests/physics/test_continuation.py).
 ANCHOR_DRIFT = 1e-4
 #: Relative change beyond which the step is solved again with the renewed anchors (error of
-#: the expansion below 2e-11 up to there, tests/test_continuation.py).
+#: the expansion below 2e-11 up to there, tests/physics/test_continuation.py).
 ANCHOR_REDO = 2e-4
 #: Largest |Δγ| (γ = Dw·cos α/dm) and |Δ(1/f)| from a ball's base within which its Hertz
 #: constants are taken to second order in γ and first order in 1/f (relative error below 2e-12
-#: on the catalogue bearings, tests/test_continuation.py).
+#: on the catalogue bearings, tests/physics/test_continuation.py).
 GAMMA_SPAN = 5e-5
 INV_F_SPAN = 3e-9
 # the same numbers as C doubles for the compiled path (module globals are Python objects)
@@ -591,7 +591,7 @@ def ring_sums(th: Thermal, c: PairConstants, balls: list, ehl: object = None) ->
     The torques are those of :func:`friction.ball_torque_terms` (Yu 2017 eq 1–3, 5–7; Ning)
     at the race radii (dm ∓ Dw·cos α)/2: each term is a product of powers of the load, the
     semi-axes and E(e), so its coefficient is the friction kernel at unit arguments
-    (:func:`set_coefficients`) and a ball costs a few products (tests/test_continuation.py
+    (:func:`set_coefficients`) and a ball costs a few products (tests/physics/test_continuation.py
     checks the two agree).
 
     Every anchor whose contact's ellipticity moved more than :data:`ANCHOR_DRIFT` from it is

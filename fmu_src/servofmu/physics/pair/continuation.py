@@ -47,7 +47,7 @@ so :class:`PairSolver` solves the same equations from the previous step's soluti
   keeps a *base*: the Hertz constants with their first and second derivatives in γ and first
   in 1/f at one (γ0, 1/f0) (:func:`contact_terms`); within :data:`GAMMA_SPAN` and
   :data:`INV_F_SPAN` of it they follow to second order in γ and first order in 1/f (relative
-  error below 2e-12, tests/test_continuation.py), at any temperature: on a ramp a ball
+  error below 2e-12, tests/physics/test_continuation.py), at any temperature: on a ramp a ball
   evaluates the Hertz relation again every ten to twenty steps, not every step (1/f is
   constant while balls and rings share their temperature and expansion).
 

@@ -266,8 +266,8 @@ class PreloadLoop:
 #: pair and lowers that of a back-to-back pair (SKF, "Angular contact ball bearings: bearing
 #: arrangements"; Harris & Kotzalas 2007, *Advanced Concepts*, ch. 1 on preloading): with the
 #: same parts and temperatures the thermal terms of the shaft and the housing change sign
-#: between the two (tests/test_preload.py). In a tandem pair it leaves the thrust alone and
-#: shifts it between the bearings (tests/test_tandem.py). The radial effects (fits, ring
+#: between the two (tests/physics/test_preload.py). In a tandem pair it leaves the thrust alone and
+#: shifts it between the bearings (tests/physics/test_tandem.py). The radial effects (fits, ring
 #: growth) are the same in all three.
 ARRANGEMENTS = {
     "face_to_face": {"housing": "opening", "shaft": "closing", "spacer": "closing",
