@@ -352,7 +352,8 @@ def test_without_temperatures_the_mountings_operating_range_is_studied(tmp_path,
     inputs = load_inputs(_write(tmp_path, text))
     # yu2017_gimbal declares Yu's chamber range, -40…60 °C: in steps of 10 K
     assert inputs.temperatures == pytest.approx([233.15 + 10 * k for k in range(11)])
-    assert any("operating range mounting yu2017_gimbal declares" in n for n in inputs.notes)
+    (note,) = [n for n in inputs.notes if "operating range mounting yu2017_gimbal declares" in n]
+    assert note.count("Yu 2017 §3") == 1  # both ends cite the same test: cited once
     out = tmp_path / "out"
     assert main(["margin", str(_write(tmp_path, text)), "--mounting", "ning_space_shaft",
                  "--out", str(out)]) == 2  # fmt: skip
