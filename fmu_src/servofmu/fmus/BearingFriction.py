@@ -529,9 +529,14 @@ class BearingFriction(ServoSlave):
         """prerolling_angle and prerolling_torque: Dahl's state; friction_torque and power_loss
         from it, within T_c of the current inputs (a rest stiffness of 0, no ball loaded: the
         regularised sign)."""
-        self._coulomb = tc = prerolling.coulomb_torque(
+        self._coulomb = prerolling.coulomb_torque(
             self.running_torque, self._excess, self.speed, self._stribeck
         )
+        self._dahl_outputs()
+
+    def _dahl_outputs(self):
+        """The outputs of Dahl's state within T_c of the current inputs (as computed)."""
+        tc = self._coulomb
         self.prerolling_angle = self._pr_angle
         self.prerolling_torque = self._pr_torque
         if self._sigma0 > 0.0:
@@ -549,7 +554,7 @@ class BearingFriction(ServoSlave):
             if self._sigma0 > 0.0
             else 0.0
         )  # no ball loaded: no stress held
-        self._prerolling_outputs()
+        self._dahl_outputs()  # T_c: this step's inputs, computed before the step
         return True
 
     def _warn_reverse_loaded(self):

@@ -513,8 +513,9 @@ class ServoSlave(Fmi2Slave):
         self._error = ""
         return True
 
-    def _refresh(self) -> bool:
-        """Recompute the outputs of an algebraic FMU from the current inputs."""
+    def _refresh(self, check: bool = True) -> bool:
+        """Recompute the outputs of an algebraic FMU from the current inputs (``check``: and
+        check them; a caller that changes them further checks them itself)."""
         if not (self._configured or self._ensure_configured()):
             return False
         bad = self._bad_input()
@@ -526,7 +527,7 @@ class ServoSlave(Fmi2Slave):
         except Exception as exc:  # an output read calls this: no exception may leave it
             self._error = f"{type(exc).__name__}: {exc}"
             return False
-        bad = self._bad_output()
+        bad = self._bad_output() if check else ""
         if bad:
             self._error = bad
             return False
@@ -589,13 +590,15 @@ class ServoSlave(Fmi2Slave):
             return self._refuse(call, problem, False)
         if self._time is None:  # no fmi2SetupExperiment: the first step starts the run
             self._start_time = self._time = current_time
-        if self.FEEDTHROUGH:
+        if self.FEEDTHROUGH and self._carry is None:
             ok = self._refresh() if self._dirty else True
-            if ok and self._carry is not None:  # a state carried over the step (see _carry)
-                ok = self._carry(step_size)
-                if ok:  # its outputs checked again (and the checked ones shared)
-                    self._error = self._bad_output()
-                    ok = not self._error
+        elif self.FEEDTHROUGH:  # a state carried over the step (see _carry): the outputs
+            # checked once, after it (and the checked ones shared)
+            ok = (self._refresh(check=False) if self._dirty else True) and self._carry(step_size)
+            if ok:
+                self._error = self._bad_output()
+                ok = not self._error
+                self._dirty = not ok  # a bad output is recomputed (and reported) when read
         else:  # a model failure mid-step (or a step beyond its bound): discarded
             ok = self.advance(current_time, step_size)
             if ok:
