@@ -13,7 +13,9 @@ none of them.
 :func:`catalogue_problems` lists every problem of a user catalogue as read from TOML, each
 naming the file, the table, the entry, the key, what was given and what is allowed, with the
 closest allowed key or item ("did you mean"). The work is linear in the number of entries:
-one compiled check per table, each entry checked once.
+one compiled check per table, each entry checked once. :func:`data_problems` checks the
+package's other data files (:data:`DATA_SCHEMAS`: the bearing rules, the grease torques, the
+friction measurements) with the same messages.
 """
 
 from __future__ import annotations
@@ -509,6 +511,136 @@ ENTRY_SCHEMAS = {
 USER_TABLES = ("materials", "lubricants", "bearings", "mountings", "coefficients", "tolerances")
 
 
+# ----------------------------------------------------------------------------- the data files
+def _keyed(entry: dict) -> dict:
+    """A table of entries by key, each fitting ``entry`` (``[table.KEY]``)."""
+    return {"type": "object", "additionalProperties": entry}
+
+
+def _bearing_rules() -> dict:
+    """``parameters/data/bearing_rules.toml``: the ball-set design rule and the radial
+    clearance groups (rows: the bore in mm, over < d <= incl; each group's [min, max] in the
+    table's unit, which :func:`servofmu.physics.contact.geometry.clearance_from_group` reads as
+    µm, so that unit only)."""
+    ratio = _quantity("-")
+    band = {"type": "array", "items": {"type": "number"}, "minItems": 2, "maxItems": 2}
+    row = _entry(
+        {"over": {"type": "number"}, "incl": {"type": "number"},
+         **{group: band for group in ("C2", "N", "C3", "C4")}},
+        ("over", "incl"),
+    )  # fmt: skip
+    ball_set = _entry(
+        {
+            "name": TEXT,
+            "calibration_bearings": _array_of(TEXT),
+            "section_ratio": ratio,
+            "fill": ratio,
+            "ball_diameter_error": ratio,
+            "ball_count_error": _quantity("-", count=True),
+            "pitch_diameter_error": ratio,
+        },
+        ("name", "calibration_bearings", "section_ratio", "fill", "ball_diameter_error",
+         "ball_count_error", "pitch_diameter_error"),
+    )  # fmt: skip
+    radial_clearance = _entry(
+        {
+            "name": TEXT,
+            "unit": {"enum": ["um"]},
+            "kind": _choice(KINDS),
+            "ref": TEXT,
+            "rows": _array_of(row),
+        },
+        ("name", "unit", "kind", "ref", "rows"),
+    )
+    return _entry({"ball_set": ball_set, "radial_clearance": radial_clearance}, ())
+
+
+def _grease_torques() -> dict:
+    """``parameters/data/grease_torques.toml``: the test standards (``[tests.KEY]``) and the
+    published torque points of greases (``[greases.KEY]``, keyed by lubricant)."""
+    length, torque = _quantity("m"), _quantity("N.m")
+    test = _entry(
+        {
+            "name": TEXT,
+            "bore": length,
+            "outer_diameter": length,
+            "speed": _quantity("rpm"),
+            "housing_mass": _quantity("kg"),
+            "fill": TEXT,
+            "hold": TEXT,
+            "torques": TEXT,
+        },
+        ("name", "bore", "outer_diameter", "speed", "housing_mass"),
+    )
+    point = _entry(
+        {
+            "test": TEXT,
+            "temperature": _quantity("K"),
+            "starting_torque": torque,
+            "running_torque": torque,
+        },
+        ("test", "temperature", "starting_torque", "running_torque"),
+    )
+    grease = _entry({"name": TEXT, "points": _array_of(point)})
+    return _entry({"tests": _keyed(test), "greases": _keyed(grease)}, ())
+
+
+def _friction_measurements() -> dict:
+    """``papers/data/friction_measurements.toml``: one table per source of measured torques
+    (its rig, its series and their points) and the candidates searched (``[[searched]]``)."""
+    length = _quantity("m")
+    point = _entry(
+        {"speed": _quantity("rpm"), "k_star": _quantity("N.m"), "exponent": _quantity("-")},
+        ("speed", "k_star", "exponent"),
+    )
+    series = _entry(
+        {
+            "id": TEXT,
+            "table": TEXT,
+            "ball_diameter": length,
+            "ball_load": _quantity("N"),
+            "dynamic_viscosity": _quantity("Pa.s"),
+            "lambda_range": TEXT,
+            "points": _array_of(point),
+        },
+        ("id", "table", "ball_diameter", "ball_load", "dynamic_viscosity", "points"),
+    )
+    source = _entry(
+        {
+            "title": TEXT,
+            "ref": TEXT,
+            "rig": TEXT,
+            "lubrication": TEXT,
+            "measured": TEXT,
+            "race_radius": length,
+            "groove_radius": length,
+            "reduced_modulus": _quantity("Pa"),
+            "n_balls": _quantity("-", count=True),
+            "temperature": _quantity("K"),
+            "series": _array_of(series),
+        },
+        ("title", "ref", "series"),
+    )
+    searched = _entry(
+        {"cite": TEXT, "source": TEXT, "stored": TEXT, "why": TEXT, "details": TEXT},
+        ("cite", "source", "stored", "why"),
+    )
+    return {
+        "type": "object",
+        "properties": {"searched": _array_of(searched)},
+        "additionalProperties": source,
+    }
+
+
+#: The schema of each of the package's other data files (the whole file), by its path under
+#: the package ``servofmu``.
+DATA_SCHEMAS = {
+    "parameters/data/bearing_rules.toml": _bearing_rules,
+    "parameters/data/grease_torques.toml": _grease_torques,
+    "papers/data/friction_measurements.toml": _friction_measurements,
+}
+
+
 @functools.cache
 def entry_schema(table: str) -> dict:
     """The JSON Schema of one entry of catalogue table ``table`` (or of ``defaults``).
@@ -625,6 +757,8 @@ def message(error, where: str) -> str:
         allowed = error.validator_value
         given = error.instance
         given_dim = f" (a unit of {dimension_name(given)})" if given in ALL_UNITS else ""
+        if given in ALL_UNITS and given in units_of(allowed[0]):  # the dimension, not the unit
+            return f"{at} = {given!r} is not the unit this value is read in: one of {allowed}"
         return (
             f"{at} = {given!r}{given_dim} is not a unit of {dimension_name(allowed[0])}: "
             f"one of {allowed}{suggest(given, allowed)}"
@@ -669,6 +803,55 @@ def entry_problems(table: str, key: str, value, where: str) -> list[str]:
         key=lambda e: (e.validator == "required", list(e.absolute_path), e.validator),
     )
     return [message(e, f"{where} [{table}.{key}]") for e in errors]
+
+
+@functools.cache
+def _data_validator(name: str):
+    """:mod:`jsonschema`'s validator of the data file ``name`` (a key of
+    :data:`DATA_SCHEMAS`)."""
+    import jsonschema
+
+    schema = DATA_SCHEMAS[name]()
+    jsonschema.Draft202012Validator.check_schema(schema)
+    return jsonschema.Draft202012Validator(schema)
+
+
+def data_problems(name: str, data: Mapping, file: str | None = None) -> list[str]:
+    """Every problem of the package's data file ``name`` as read from TOML (``data``): an
+    unknown key, a wrong type, a unit of another dimension, a missing key; each line names the
+    file, the table and key (as a dotted path), what was given and what is allowed.
+
+    Parameters
+    ----------
+    name : str
+        A key of :data:`DATA_SCHEMAS`.
+    data : mapping
+        The file as read.
+    file : str, optional
+        The file's name in the messages (``name`` when None).
+
+    Returns
+    -------
+    list of str
+        Empty when the file fits its schema.
+
+    Examples
+    --------
+    >>> q = {"value": 1.0, "unit": "N.mm", "kind": "handbook", "ref": "demo"}
+    >>> data = {"tests": {"t": {"name": "t", "bore": q}}, "greases": {"g": {"nmae": "g"}}}
+    >>> for line in data_problems("parameters/data/grease_torques.toml", data, "g.toml"):
+    ...     print(line[:72])
+    g.toml: greases.g.nmae: unknown key 'nmae' (did you mean 'name'?); allow
+    g.toml: tests.t.bore.unit = 'N.mm' (a unit of torque) is not a unit of l
+    g.toml: greases.g.name: missing (required keys: ['name'])
+    g.toml: tests.t.outer_diameter: missing (required keys: ['name', 'bore',
+    """
+    errors = sorted(
+        _data_validator(name).iter_errors(data),
+        key=lambda e: (e.validator == "required", list(map(str, e.absolute_path)), e.validator),
+    )
+    # one line per entry missing keys (the required keys listed), not one per key missing
+    return list(dict.fromkeys(message(e, f"{file or name}:") for e in errors))
 
 
 def catalogue_problems(data: Mapping, file: str, limit: int = 20) -> list[str]:

@@ -152,6 +152,106 @@ def test_the_schema_finds_a_misspelt_key_in_the_packages_table():
     assert schema.entry_problems("mountings", "ning_space_shaft", entry, "x:")
 
 
+RULES = "parameters/data/bearing_rules.toml"
+GREASES = "parameters/data/grease_torques.toml"
+MEASURED = "papers/data/friction_measurements.toml"
+
+
+def _data_file(name: str) -> str:
+    return resources.files("servofmu").joinpath(name).read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("name", sorted(schema.DATA_SCHEMAS))
+def test_the_packages_data_files_fit_their_schemas(name):
+    """A key the schema does not know fails here: add it to build/schema.py with its unit."""
+    assert schema.data_problems(name, tomllib.loads(_data_file(name))) == []
+
+
+# (package file, text in it, its replacement in a copy, what the copy's message must say)
+DATA_CASES = {
+    "rules: misspelt key": (
+        RULES,
+        "fill = {",
+        "fil = {",
+        "copy.toml: ball_set.fil: unknown key 'fil' (did you mean 'fill'?)",
+    ),
+    "rules: a Boolean for a number": (
+        RULES,
+        "section_ratio = { value = 0.2859,",
+        "section_ratio = { value = true,",
+        "copy.toml: ball_set.section_ratio.value = true is a Boolean, not a number",
+    ),
+    "rules: a length for a ratio": (
+        RULES,
+        'fill = { value = 0.570, unit = "-"',
+        'fill = { value = 0.570, unit = "mm"',
+        "copy.toml: ball_set.fill.unit = 'mm' (a unit of length) is not a unit of ratio",
+    ),
+    "rules: the clearances in mm, read as um": (
+        RULES,
+        'unit = "um"',
+        'unit = "mm"',
+        "copy.toml: radial_clearance.unit = 'mm' is not the unit this value is read in: "
+        "one of ['um']",
+    ),
+    "greases: misspelt key": (
+        GREASES,
+        'hold = "2 h',
+        'hlod = "2 h',
+        "copy.toml: tests.jis_k2220.hlod: unknown key 'hlod' (did you mean 'hold'?)",
+    ),
+    "greases: a Boolean for a number": (
+        GREASES,
+        "starting_torque = { value = 99,",
+        "starting_torque = { value = true,",
+        "copy.toml: greases.molykote_g1074.points[0].starting_torque.value = true is a "
+        "Boolean, not a number",
+    ),
+    "greases: a force for a mass": (
+        GREASES,
+        'housing_mass = { value = 454, unit = "g"',
+        'housing_mass = { value = 454, unit = "N"',
+        "copy.toml: tests.astm_d1478.housing_mass.unit = 'N' (a unit of force) is not a unit "
+        "of mass",
+    ),
+    "measurements: misspelt key": (
+        MEASURED,
+        "groove_radius = {",
+        "grove_radius = {",
+        "copy.toml: balan2015.grove_radius: unknown key 'grove_radius' (did you mean "
+        "'groove_radius'?)",
+    ),
+    "measurements: misspelt key of a searched record": (
+        MEASURED,
+        'details = "outside',
+        'detials = "outside',
+        "copy.toml: searched[1].detials: unknown key 'detials' (did you mean 'details'?)",
+    ),
+    "measurements: a Boolean for a count": (
+        MEASURED,
+        "n_balls = { value = 3,",
+        "n_balls = { value = true,",
+        "copy.toml: balan2015.n_balls.value = true is a Boolean, not a whole number",
+    ),
+    "measurements: a force for a torque": (
+        MEASURED,
+        'k_star = { value = 4.001e-05, unit = "N.m"',
+        'k_star = { value = 4.001e-05, unit = "N"',
+        "copy.toml: balan2015.series[0].points[0].k_star.unit = 'N' (a unit of force) is not "
+        "a unit of torque",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", DATA_CASES)
+def test_a_copy_of_a_data_file_off_its_schema_is_refused_naming_the_key(case):
+    name, old, new, expected = DATA_CASES[case]
+    text = _data_file(name)
+    assert old in text, old
+    problems = schema.data_problems(name, tomllib.loads(text.replace(old, new, 1)), "copy.toml")
+    assert any(expected in p for p in problems), problems
+
+
 @pytest.mark.parametrize("unit", [*TO_SI, "degC"])
 def test_pint_agrees_with_every_conversion_factor(unit):
     """The factors servofmu converts catalogue units with (physics/kernels/units.py), against
