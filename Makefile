@@ -51,7 +51,7 @@ docs: $(STAMP)
 
 ## long mode: full-size fuzzing (10,000 cases per FMU) and soaks (1,000,000 steps); ~1 h
 test-long: $(STAMP) system-deps lint
-	$(BIN)/python -m pytest --long tests/fmus/test_robustness.py tests/build/test_archives.py
+	$(BIN)/python -m pytest --long tests/fmus/test_robustness.py tests/packaging/test_archives.py
 
 ## release: the sdist from the checkout, then the wheel from the sdist, into dist/ (the PyPA
 ## frontend runs outside the checkout: the project's own build/ folder would shadow its package)
