@@ -69,3 +69,29 @@ def test_bad_input_is_named(g):
     for call, match in cases(g):
         with pytest.raises(ValueError, match=re.escape(match)):
             call()
+
+
+def test_a_temperature_is_checked_once_on_its_way_to_the_solver(monkeypatch):
+    # thermal_state checks each part once (not again in the fits and the loop closure); the
+    # per-step model checks its floats itself, so its exact path checks none again
+    from servofmu.physics import bearing
+    from servofmu.physics.thermal import temperatures
+
+    pair = bearing.BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    bearing.thermal_state(pair, 293.15)  # the pair's own data at assembly, once per pair
+    calls = []
+    check = temperatures.check_operating_temperature
+
+    def counted(name, value):
+        calls.append(name)
+        return check(name, value)
+
+    monkeypatch.setattr(temperatures, "check_operating_temperature", counted)
+    bearing.thermal_state(pair, bearing.PartTemperatures(250.0, 260.0, 270.0, 280.0))
+    assert sorted(calls) == sorted(f"{p}_temperature" for p in temperatures.PARTS)
+    calls.clear()
+    model = bearing.BearingModel(pair)
+    model.thermal((250.0, 260.0, 270.0, 280.0))
+    assert calls == []
+    with pytest.raises(ValueError, match=r"shaft_temperature = -10.0 K .* looks like °C"):
+        model.thermal((250.0, -10.0, 270.0, 280.0))

@@ -57,7 +57,7 @@ def test_speed_change_does_not_resolve_state(yu_pair, monkeypatch):
     m = BearingModel(yu_pair)
     m.evaluate(293.15, 0.1, 10.0)
     calls = []
-    for name in ("thermal_state", "load_state"):
+    for name in ("thermal_state_at", "load_state"):
         monkeypatch.setattr(bm, name, lambda *a, _n=name, **k: calls.append(_n))
     solved = m.steps
     for w in np.linspace(-1, 1, 11):
@@ -67,14 +67,14 @@ def test_speed_change_does_not_resolve_state(yu_pair, monkeypatch):
 
 def test_no_step_of_a_ramp_is_solved_exactly(yu_pair, monkeypatch):
     m = BearingModel(yu_pair)
-    real = bm.thermal_state
+    real = bm.thermal_state_at
     calls = []
 
-    def counting(pair, t):
+    def counting(pair, *t):
         calls.append(t)
-        return real(pair, t)
+        return real(pair, *t)
 
-    monkeypatch.setattr(bm, "thermal_state", counting)
+    monkeypatch.setattr(bm, "thermal_state_at", counting)
     for t in np.linspace(253.15, 263.15, 50):
         m.evaluate(float(t), 0.1, 5.0)
     assert not calls and m.steps == 50 and m.exact_steps == 0 and m.cold_starts == 1

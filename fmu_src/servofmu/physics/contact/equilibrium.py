@@ -70,6 +70,7 @@ from scipy.optimize import root
 from scipy.optimize.elementwise import bracket_root, find_root
 
 from .._checks import check_choice, check_finite
+from ..kernels import contact as kernels
 from .geometry import RaceGeometry
 from .hertz import ContactConstants, _constants, _curvature, ellipticity
 
@@ -119,7 +120,7 @@ def contact_constants_at(geom: RaceGeometry, alpha, expand: bool = False):
     alpha = check_finite("alpha", alpha, "rad")
     inner = _groove_constants(geom, alpha, "inner", expand)
     outer = _groove_constants(geom, alpha, "outer", expand)
-    k_n = (inner.stiffness ** (-2.0 / 3.0) + outer.stiffness ** (-2.0 / 3.0)) ** -1.5
+    k_n = kernels.series_stiffness(inner.stiffness ** (-2.0 / 3.0), outer.stiffness ** (-2.0 / 3.0))
     return inner, outer, k_n
 
 
@@ -237,12 +238,12 @@ def _ball_loads(geom: RaceGeometry, a, dr, th, tilt_arm: str = "groove") -> Ball
     arm = np.asarray(tilt_arm_radius(geom, tilt_arm))[..., None]
     a1 = a + th * arm * cos_psi
     a2 = np.asarray(geom.radial_centre_distance)[..., None] + dr * cos_psi
-    s = np.hypot(a1, a2)
+    _, sin_a, cos_a, delta = kernels.ball_contact(
+        a1, a2, np.asarray(geom.curvature_distance)[..., None]
+    )
     alpha = np.arctan2(a1, a2)
-    delta = s - np.asarray(geom.curvature_distance)[..., None]
     inner, outer, k_n = contact_constants_at(geom, alpha, expand=True)
-    q = k_n * np.maximum(delta, 0.0) ** 1.5
-    sin_a, cos_a = a1 / s, a2 / s
+    q = kernels.hertz_load(k_n, delta)
     return BallLoads(
         azimuth=psi,
         contact_angle=alpha,
@@ -267,12 +268,8 @@ def _ring_stiffness(geom: RaceGeometry, loads: BallLoads):
     n1, n2 = np.sin(loads.contact_angle), np.cos(loads.contact_angle)
     contact = loads.deflection > 0
     k_n = np.where(contact, loads.load / np.where(contact, loads.deflection, 1.0) ** 1.5, 0.0)
-    dq_ds = 1.5 * k_n * np.sqrt(np.maximum(loads.deflection, 0.0))
-    q_s = np.where(contact, loads.load / s, 0.0)
-    # d(force vector)/d(A1, A2) = dQ/ds·n·nᵀ + Q/s·(I − n·nᵀ)
-    k11 = dq_ds * n1 * n1 + q_s * (1 - n1 * n1)
-    k12 = dq_ds * n1 * n2 - q_s * n1 * n2
-    k22 = dq_ds * n2 * n2 + q_s * (1 - n2 * n2)
+    # d(force vector)/d(A1, A2) = dQ/ds·n·nᵀ + Q/s·(I − n·nᵀ), K_n held (slope 0)
+    k11, k12, _, k22, _ = kernels.ball_stiffness(loads.load, s, loads.deflection, k_n, 0.0, n1, n2)
     # (A1, A2) = (a + θ·R·cosψ, … + δr·cosψ);  (Fa, Fr, M) = (f1, f2·cosψ, f1·R·cosψ)
     rc = loads.arm * cos_psi
     jac = np.empty((*np.shape(loads.axial_force), 3, 3))
@@ -348,16 +345,14 @@ def axial_state(geom: RaceGeometry, offset) -> AxialState:
 
 def _axial_state(geom: RaceGeometry, a) -> AxialState:
     a2 = geom.radial_centre_distance
-    s = np.hypot(a, a2)
+    s, sin_a, cos_a, delta = kernels.ball_contact(a, a2, geom.curvature_distance)
     alpha = np.arctan2(a, a2)
-    delta = s - geom.curvature_distance
     inner, outer, k_n = contact_constants_at(geom, alpha)
-    dpos = np.maximum(delta, 0.0)
-    q = k_n * dpos**1.5
-    sin_a = a / s
+    q = kernels.hertz_load(k_n, delta)
     z = geom.n_balls
     force = z * q * sin_a
-    stiffness = z * (1.5 * k_n * np.sqrt(dpos) * sin_a**2 + q / s * (1.0 - sin_a**2))
+    held = kernels.ball_stiffness(q, s, delta, k_n, 0.0, sin_a, cos_a)[4]  # K_n held
+    stiffness = z * held
     return AxialState(a, alpha, delta, q, force, stiffness, inner, outer)
 
 

@@ -59,10 +59,8 @@ def curvature_sum_difference(ball_diameter, pitch_diameter, groove_curvature, co
 
 
 def _curvature(dw, dm, f, alpha, race):
-    gamma = dw * np.cos(alpha) / dm
-    race_term = 2.0 * gamma / (1.0 - gamma) if race == "inner" else -2.0 * gamma / (1.0 + gamma)
-    denom = 4.0 - 1.0 / f + race_term
-    return denom / dw, (1.0 / f + race_term) / denom
+    total, difference = kernels.race_curvature(dw * np.cos(alpha) / dm, 1.0 / f, race == "inner")
+    return total / dw, difference
 
 
 def curvature_difference_of_ellipticity(k):
@@ -239,7 +237,7 @@ class ContactConstants:
         """Maximum Hertz pressure p0 = 3Q/(2πab) [Pa] (0 where the load is 0)."""
         a, b = self.semi_axes(load)
         with np.errstate(invalid="ignore", divide="ignore"):
-            p = 1.5 * load / (np.pi * a * b)
+            p = kernels.hertz_pressure(load, a * b)
         return np.where(load > 0, p, 0.0)
 
 
@@ -348,7 +346,7 @@ def combined_stiffness(k_inner, k_outer):
     """
     check_positive("k_inner", k_inner, "N/m^1.5")
     check_positive("k_outer", k_outer, "N/m^1.5")
-    return (k_inner ** (-2.0 / 3.0) + k_outer ** (-2.0 / 3.0)) ** -1.5
+    return kernels.series_stiffness(k_inner ** (-2.0 / 3.0), k_outer ** (-2.0 / 3.0))
 
 
 def hertz_load(stiffness, deflection):

@@ -350,10 +350,8 @@ def exact_contact_k(th: Thermal, cos_a: float, inner: bool) -> float:
     """
     from ..contact.hertz import ellipticity
 
-    g = th.gamma_scale * cos_a
     inv_f = th.inv_f_inner if inner else th.inv_f_outer
-    rt = 2.0 * g / (1.0 - g) if inner else -2.0 * g / (1.0 + g)
-    return float(ellipticity((inv_f + rt) / (4.0 - inv_f + rt)))
+    return float(ellipticity(race_curvature(th.gamma_scale * cos_a, inv_f, inner)[1]))
 
 
 @cython.final

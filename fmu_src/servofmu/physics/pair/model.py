@@ -20,7 +20,7 @@ from .state import (
     load_state,
     operating_outputs,
     point_outputs,
-    thermal_state,
+    thermal_state_at,
     to_floats,
 )
 
@@ -116,7 +116,7 @@ class BearingModel:
     def _exact(self, temps, axial_load: float, radial_load: float):
         """The exact path's state, seeding the continuation at the solver's thermal state."""
         try:
-            th_exact = to_floats(thermal_state(self.pair, PartTemperatures(*temps)))
+            th_exact = to_floats(thermal_state_at(self.pair, *temps))
             ls = to_floats(load_state(self.pair, th_exact, axial_load, radial_load))
         except (ValueError, ArithmeticError) as exc:
             raise ValueError(
@@ -195,7 +195,7 @@ class BearingModel:
     # ---------------------------------------------------------------- exact
     def thermal(self, temperature) -> ThermalState:
         """Exact :func:`thermal_state` at one temperature [K] (fields as floats)."""
-        return to_floats(thermal_state(self.pair, PartTemperatures(*_temperatures(temperature))))
+        return to_floats(thermal_state_at(self.pair, *_temperatures(temperature)))
 
     def load(self, temperature, axial_load: float = 0.0, radial_load: float = 0.0) -> LoadState:
         """Exact :func:`load_state` at one temperature [K] and loads [N] (fields as floats)."""

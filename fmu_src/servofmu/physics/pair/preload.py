@@ -432,9 +432,19 @@ def loop_interference(loop: PreloadLoop, temperature, assembly_temperature: floa
     return loop.shim - growth
 
 
+def _axial_rows(rows: PairRows, p, z, closure, load, geom):
+    """(r1 [N], r4 [m]) of the arrangement's rows (:meth:`PairRows.residuals`) at the mean
+    offset ``p`` and shaft displacement ``z`` [m] without radial load: the residuals of the
+    bracketing solves below (floats or arrays)."""
+    r1, _, _, r4 = rows.residuals(
+        axial_force(p + z, geom), axial_force(p - z, geom), 0.0, 0.0, p, z, closure, load, 0.0
+    )
+    return r1, r4
+
+
 def _pair_residual(p, z, closure, k_loop, geom):
-    f_sum = axial_force(p + z, geom) + axial_force(p - z, geom)
-    return 2.0 * p + (0.0 if np.isinf(k_loop) else f_sum / (2.0 * k_loop)) - closure
+    """The loop's row r4 [m] of a face-to-face or back-to-back pair: 2p + (F_A + F_B)/(2k) − C."""
+    return _axial_rows(PairRows(False, k_loop, 0.0), p, z, closure, 0.0, geom)[1]
 
 
 def mean_offset(z, closure, k_loop, geom: RaceGeometry):
@@ -540,10 +550,11 @@ def pair_offsets(geom: RaceGeometry, closure, loop_stiffness: float, external_lo
     c, f_ext = np.broadcast_to(c, shape), np.broadcast_to(f_ext, shape)
     args = _geometry_args(geom, shape)
 
-    def residual(z, ff, cc, *g):
+    rows = PairRows(False, k, 0.0)
+
+    def residual(z, ff, cc, *g):  # the rows' r1, F_A − F_B − F_ext, at p(z) of the loop's row
         gg = _geometry_from_args(g, geom.n_balls, geom.compliance)
-        p = mean_offset(z, cc, k, gg)
-        return axial_force(p + z, gg) - axial_force(p - z, gg) - ff
+        return _axial_rows(rows, mean_offset(z, cc, k, gg), z, cc, ff, gg)[0]
 
     z = np.zeros(shape)
     loaded = f_ext != 0
@@ -860,9 +871,15 @@ def tandem_offsets(
     target = np.broadcast_to(t + f_ext, shape)
     args = _geometry_args(geom, shape)
 
+    # the rows' r1, F_A + F_B + k_s·a_A − (T + F_ext), at a_A = a, a_B = a + d (p = a, z = 0
+    # stand for the two offsets; the thrust is carried in the load ff = T + F_ext)
+    rows = PairRows(True, ks, 0.0)
+
     def residual(a, dd, ff, *g):
         gg = _geometry_from_args(g, geom.n_balls, geom.compliance)
-        return axial_force(a, gg) + axial_force(a + dd, gg) + ks * a - ff
+        return rows.residuals(
+            axial_force(a, gg), axial_force(a + dd, gg), 0.0, 0.0, a, 0.0, dd, ff, 0.0
+        )[0]
 
     step = 0.01 * np.broadcast_to(geom.curvature_distance, shape)
     lo = np.minimum(0.0, -d) - step

@@ -34,11 +34,11 @@ from ..friction.models import grease_rest_and_start, grease_running
 from ..friction.skf2004 import skf_loads
 from ..friction.terms import BallSetTorques, ball_set_torques
 from ..kernels.friction import coulomb_and_excess, palmgren_torque, regularised_torque
-from ..thermal.fits import mounted_geometry
+from ..thermal.fits import mounted_geometry_at
 from ..thermal.temperatures import PARTS, PartTemperatures, part_temperatures
-from .configuration import BearingPair, is_tandem, loop_closure, pair_rows
+from .configuration import BearingPair, closure_coefficients, is_tandem, pair_rows
 from .preload import axial_offsets, pair_equilibrium
-from .rows import axial_play, pair_flags, preload_force
+from .rows import axial_play, loop_closure_at, pair_flags, preload_force
 
 #: The output record of one operating point (:mod:`.point`): the one class of the process,
 #: compiled when the compiled modules run, whichever path fills it.
@@ -122,14 +122,45 @@ def thermal_state(pair: BearingPair, temperature) -> ThermalState:
     [40947.4, 86.9]
     """
     temps = part_temperatures(temperature)
+    return thermal_state_at(pair, *(getattr(temps, f) for f in PARTS))
+
+
+def thermal_state_at(pair: BearingPair, t_h, t_s, t_o, t_i) -> ThermalState:
+    """:func:`thermal_state` at part temperatures already checked
+    (:func:`~.thermal.temperatures.part_temperatures`, or the per-step model's check): housing
+    ``t_h``, shaft ``t_s``, outer ring ``t_o``, inner ring ``t_i`` [K], floats or arrays that
+    broadcast together, made arrays once here.
+
+    Returns
+    -------
+    ThermalState
+        As :func:`thermal_state`.
+
+    Examples
+    --------
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> th = thermal_state_at(pair, 253.15, 253.15, 253.15, 253.15)
+    >>> float(th.closure) == float(thermal_state(pair, 253.15).closure)
+    True
+    """
     temps = PartTemperatures(
-        *np.broadcast_arrays(*(np.asarray(getattr(temps, f), float) for f in PARTS))
+        *np.broadcast_arrays(*(np.asarray(t, float) for t in (t_h, t_s, t_o, t_i)))
     )
     m = pair.mounting
-    mounted = mounted_geometry(
-        pair.bearing, m.fit, temps, m.assembly_temperature, pair.thermal_coupling
+    t0 = float(m.assembly_temperature)  # checked by the Mounting
+    mounted = mounted_geometry_at(
+        pair.bearing,
+        m.fit,
+        temps.housing,
+        temps.shaft,
+        temps.outer_ring,
+        temps.inner_ring,
+        t0,
+        pair.thermal_coupling,
     )
-    closure = loop_closure(pair, temps)
+    closure = loop_closure_at(
+        *closure_coefficients(pair), t0, temps.housing, temps.shaft, temps.balls
+    )
     rows = pair_rows(pair)
     k = rows.stiffness
     offsets = axial_offsets(mounted.race, rows, closure, 0.0)

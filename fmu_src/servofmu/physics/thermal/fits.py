@@ -266,9 +266,43 @@ def mounted_geometry(
 
     temps = part_temperatures(temperature)
     t0 = check_temperature("assembly_temperature", assembly_temperature)
+    return mounted_geometry_at(
+        bearing,
+        fit,
+        *(np.asarray(t) for t in (temps.housing, temps.shaft, temps.outer_ring, temps.inner_ring)),
+        t0,
+        coupled,
+    )
+
+
+def mounted_geometry_at(
+    bearing: BallBearing, fit: RadialFit, t_h, t_s, t_o, t_i, t0: float, coupled: bool
+) -> MountedGeometry:
+    """:func:`mounted_geometry` at temperatures already checked: housing ``t_h``, shaft
+    ``t_s``, outer ring ``t_o``, inner ring ``t_i`` and assembly ``t0`` [K] (floats or arrays
+    that broadcast together); the path of :func:`~.pair.state.thermal_state`, which checks
+    them once.
+
+    Returns
+    -------
+    MountedGeometry
+        As :func:`mounted_geometry`.
+
+    Examples
+    --------
+    >>> from servofmu.physics.pair.configuration import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> b, fit, t0 = pair.bearing, pair.mounting.fit, pair.mounting.assembly_temperature
+    >>> g = mounted_geometry_at(b, fit, t0, t0, t0, t0, t0, True)
+    >>> float(g.race.clearance) == float(mounted_geometry(b, fit, t0, t0).race.clearance)
+    True
+    """
     ring, ball = bearing.ring_material, bearing.ball_material
     d_i, d_o, dw, r_i, r_o, p_o, p_i, delta_o, delta_i = lame.mounted_races(
-        *(np.asarray(t) for t in (temps.housing, temps.shaft, temps.outer_ring, temps.inner_ring)),
+        t_h,
+        t_s,
+        t_o,
+        t_i,
         t0,
         _elastic(ring),
         ball.expansion,
