@@ -9,9 +9,11 @@ import numpy as np
 import pytest
 from fmpy.fmi1 import FMICallException
 from fmu_helpers import Fmu
+from kernels import implementations
 from scipy.integrate import quad, solve_ivp
 
 from servofmu.parameters import catalog
+from servofmu.physics import compiled
 from servofmu.physics.materials import Material
 from servofmu.physics.thermal import network as tn
 
@@ -173,6 +175,76 @@ def test_linearisation_tolerance_adds_little_and_saves_most_exponentials():
     held, n_held = radiation_error("ning_space_vacuum", 1.0, 0.1, horizon=1200.0)
     assert n_exact == 1200 and n_held < 0.5 * n_exact  # the first 20 min move fastest
     assert exact < 1e-6 and held < 5e-6
+
+
+def _rates_by_hand(net, t, ambient, sink, power):
+    """dT/dt [K/s] of the module docstring's balance, written out with numpy (the oracle)."""
+    t = np.asarray(t)
+    c = np.asarray(net.capacities)
+    q = -tn.conductance_matrix(net) @ t + np.asarray(net.ambient) * ambient
+    q += np.asarray(net.heat_split) * power
+    q -= tn.STEFAN_BOLTZMANN * np.asarray(net.sink_radiation) * (t**4 - sink**4)
+    for i, j, e in net.exchange:
+        flux = tn.STEFAN_BOLTZMANN * e * (t[i] ** 4 - t[j] ** 4)
+        q[i] -= flux
+        q[j] += flux
+    return q / c
+
+
+@pytest.mark.parametrize("key", tn.PRESETS)
+def test_stepping_kernels_agree_bit_for_bit_and_with_the_balance_by_hand(key):
+    # the ThermalNetwork FMU's per-step call (both implementations) against the exact path's
+    # step_unchecked (bit for bit: the same arithmetic in the same order), and the rates and
+    # the step against the balance written out with numpy
+    net = tn.network(tn.preset(key))
+    steppers = {impl: tn.stepper(net, impl) for impl in implementations()}
+    refs = dict.fromkeys(steppers)
+    t = tuple(tn.steady_state(net, 253.15, 233.15, 0.5))
+    exps = 0
+    for k in range(400):
+        ambient, sink = 253.15 + 40.0 * math.sin(k / 30.0), 200.0 + 0.1 * k
+        power, h = 0.1 + 0.05 * (k % 7), (1e-3, 0.5, 10.0)[k % 3]
+        results = {}
+        for impl, s in steppers.items():
+            new, refs[impl], bad, outside = s.advance(
+                t, ambient, sink, power, h, refs[impl], 0.1, 173.15, 473.15
+            )
+            assert bad == -1 and not outside
+            results[impl] = new
+        ref = refs["python"]
+        assert len({tuple(v) for v in results.values()}) == 1  # compiled = Python, bit for bit
+        assert len({r for r in refs.values()}) == 1
+        assert results["python"] == tn.step_unchecked(net, list(t), ambient, sink, power, h, ref)
+        f = compiled.module("thermal.stepping", "python").rates(
+            tn._terms(net), t, ambient, sink, power
+        )
+        scale = float(np.abs(tn._terms(net)[0]).max()) * max(t)  # K/s of the largest term
+        by_hand = _rates_by_hand(net, t, ambient, sink, power)
+        np.testing.assert_allclose(f, by_hand, rtol=0, atol=1e-14 * scale)
+        m = np.array(tn.propagator(net, h, ref))
+        np.testing.assert_allclose(results["python"], np.asarray(t) + m @ f, rtol=1e-15, atol=0)
+        exps += ref is not None and ref is t
+        t = tuple(results["python"])
+    assert (exps > 0) == net.radiating  # the reference was renewed on the way
+
+
+def test_stepper_names_the_first_bad_node_and_flags_the_range():
+    net = tn.ThermalNetwork(
+        (10.0, 1.0), links=((0, 1, 1.0),), ambient=(2.0, 0.0), sink_radiation=(0.0, 0.0),
+        heat_split=(0.0, 1.0), nodes=("a", "b"),
+    )  # fmt: skip
+    for impl in implementations():
+        s = tn.stepper(net, impl)
+        _, _, bad, outside = s.advance(
+            (300.0, 300.0), 300.0, 0.0, 0.0, 1.0, None, 0.1, 250.0, 350.0
+        )
+        assert (bad, outside) == (-1, False)
+        _, _, bad, outside = s.advance(
+            (300.0, 300.0), 300.0, 0.0, 1e3, 1.0, None, 0.1, 250.0, 350.0
+        )
+        assert (bad, outside) == (-1, True)  # node b heats far above 350 K
+        new, _, bad, _ = s.advance((300.0, 300.0), 300.0, 0.0, -1e6, 1e-3, None, 0.1, 250.0, 350.0)
+        assert bad == 1 and new[0] > 0.0 >= new[1]  # the heat drawn takes b below 0 K
 
 
 # ---------------------------------------------------------------------------- heat transfer

@@ -34,6 +34,7 @@ import math  # noqa: E402
 
 from pythonfmu.enums import Fmi2Status  # noqa: E402
 
+from servofmu.fmus import accessors  # noqa: E402
 from servofmu.fmus.declarations import Item, Var  # noqa: E402
 from servofmu.fmus.runtime import ServoSlave  # noqa: E402
 from servofmu.physics.thermal import network as tn  # noqa: E402
@@ -247,6 +248,9 @@ class ThermalNetwork(ServoSlave):
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
+        names = tuple(name for name, _ in _OUTPUTS)
+        self._temperatures = accessors.getter(names)  # the state: the part temperatures
+        self._assign = self.output_setter(names)
         self.reference = None  # temperatures [K] about which radiation is linearised
         self.started = False  # the initial state has been set
 
@@ -259,6 +263,7 @@ class ThermalNetwork(ServoSlave):
         values = {f: getattr(self, f) for f in _PARAMETERS}
         self.params = tn.ThermalParameters(**values, environment=self.item("environment"))
         self.network = tn.network(self.params)
+        self.stepper = tn.stepper(self.network)  # the per-step update, one call
 
     def initialise(self):
         if self.start_steady:
@@ -281,37 +286,28 @@ class ThermalNetwork(ServoSlave):
             except ValueError as exc:
                 self._error = str(exc)
                 return False
-        t = self._state()
-        if self.network.radiating:
-            ref = self.reference
-            if ref is None or max(abs(a - b) for a, b in zip(t, ref, strict=True)) > (
-                self.linearisation_tolerance
-            ):
-                ref = tuple(t)
-        else:
-            ref = None
-        new = tn.step_unchecked(  # inputs checked by the slave
-            self.network,
-            t,
+        new, ref, bad, outside = self.stepper.advance(  # inputs checked by the slave
+            self._temperatures(self),
             self.ambient_temperature,
             self.sink_temperature,
             self.power_loss,
             step_size,
-            ref,
+            self.reference,
+            self.linearisation_tolerance,
+            self.minimum_part_temperature,
+            self.maximum_part_temperature,
         )
-        for (name, _), v in zip(_OUTPUTS, new, strict=True):
-            if not (math.isfinite(v) and v > 0.0):
-                self._error = (
-                    f"{name} = {v!r} K would leave the valid range (finite, > 0 K) over a step "
-                    f"of {step_size!r} s: shorten the step or check the parameters"
-                )
-                return False
+        if bad >= 0:
+            self._error = (
+                f"{_OUTPUTS[bad][0]} = {new[bad]!r} K would leave the valid range (finite, > 0 K) "
+                f"over a step of {step_size!r} s: shorten the step or check the parameters"
+            )
+            return False
         self.reference = ref
-        self._set_state(new)
+        self._assign(self, new)
+        if outside or self.outside_valid_range:
+            self._check_range()
         return True
-
-    def _state(self):
-        return [getattr(self, n) for n, _ in _OUTPUTS]
 
     def state_problem(self):
         # a restored state holds temperatures a step could give (advance's rule)
@@ -322,8 +318,7 @@ class ThermalNetwork(ServoSlave):
         return ""
 
     def _set_state(self, values):
-        for (name, _), v in zip(_OUTPUTS, values, strict=True):
-            setattr(self, name, float(v))
+        self._assign(self, [float(v) for v in values])
         self._check_range()
 
     def _check_range(self):

@@ -39,6 +39,7 @@ MODULES = (
     "pair.constants",
     "pair.balls",
     "pair.continuation",
+    "thermal.stepping",
 )
 
 _HERE = Path(__file__).resolve().parent

@@ -83,13 +83,13 @@ import dataclasses
 import functools
 import math
 from dataclasses import dataclass
-from operator import mul
 
 import numpy as np
 from scipy.linalg import expm
 from scipy.optimize import root
 from scipy.special import ellipk
 
+from .. import compiled
 from .._checks import check_choice, check_finite, check_nonnegative, check_positive, check_range
 from ..contact import hertz
 from ..materials import Material, reduced_compliance
@@ -98,6 +98,8 @@ from .fits import fit_pressure
 NODES = ("housing", "shaft", "outer_ring", "inner_ring")
 HOUSING, SHAFT, OUTER, INNER = range(4)
 STEFAN_BOLTZMANN = 5.670374419e-8  # σ [W/(m²·K⁴)], CODATA 2018 (exact in the 2019 SI)
+#: The per-step arithmetic (rates, exponential step): compiled when the build could compile it.
+stepping = compiled.module("thermal.stepping")
 
 
 # ---------------------------------------------------------------------------- the network
@@ -198,20 +200,7 @@ def _terms(network: ThermalNetwork):
 
 
 def _rates(terms, t, ambient, sink, power):
-    rows, amb, split, sink_k, exch = terms
-    out = [
-        sum(map(mul, row, t)) + g * ambient + s * power
-        for row, g, s in zip(rows, amb, split, strict=True)
-    ]
-    s4 = sink**4
-    for k, coef in enumerate(sink_k):
-        if coef:
-            out[k] -= coef * (t[k] ** 4 - s4)
-    for i, j, ci, cj in exch:
-        q = t[i] ** 4 - t[j] ** 4
-        out[i] -= ci * q
-        out[j] += cj * q
-    return out
+    return stepping.rates(terms, t, ambient, sink, power)
 
 
 def temperature_rates(network: ThermalNetwork, temperatures, ambient, sink, power):
@@ -358,8 +347,32 @@ def step_unchecked(network, t, ambient, sink, power, h, reference):
     [293.678794412]
     """
     m = propagator(network, h, reference)
-    f = _rates(_terms(network), t, ambient, sink, power)
-    return [x + sum(map(mul, row, f)) for x, row in zip(t, m, strict=True)]
+    return stepping.exponential_step(m, t, _rates(_terms(network), t, ambient, sink, power))
+
+
+def stepper(network: ThermalNetwork, implementation: str | None = None):
+    """The per-step update of ``network`` in one call (:class:`.stepping.NetworkStepper`:
+    the arithmetic of :func:`step_unchecked`, with the propagator kept while the step size and
+    the reference stay), of ``implementation`` ("compiled", "python"; None: the one
+    :mod:`servofmu.physics.compiled` chose).
+
+    Returns
+    -------
+    NetworkStepper
+
+    Examples
+    --------
+    >>> net = ThermalNetwork((10.0,), ambient=(2.0,), sink_radiation=(0.0,), heat_split=(1.0,),
+    ...                      nodes=("part",))
+    >>> new, ref, bad, outside = stepper(net).advance((300.0,), 290.0, 0.0, 0.0, 5.0, None, 0.1,
+    ...                                               200.0, 400.0)
+    >>> [round(t, 9) for t in new], ref, bad, outside  # 290 + 10·e^(−1)
+    ([293.678794412], None, -1, False)
+    """
+    kernel = compiled.module("thermal.stepping", implementation)
+    return kernel.NetworkStepper(
+        _terms(network), network.radiating, functools.partial(propagator, network)
+    )
 
 
 def steady_state(network: ThermalNetwork, ambient: float, sink: float, power: float):
