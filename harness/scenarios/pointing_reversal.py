@@ -37,9 +37,27 @@ SHAPES = ("sine", "triangle")
 SYSTEMS = (("Dahl", "seeker_gimbal_prerolling"), ("none", "seeker_gimbal_position"))
 
 
+def command(shape: str) -> Cycle:
+    """The position command [rad]: ±:data:`AMPLITUDE` of ``shape`` with period :data:`PERIOD`,
+    starting at 0 and rising, as the gimbal starts (a triangle a quarter period in: no step
+    at the start).
+
+    Returns
+    -------
+    Cycle
+
+    Examples
+    --------
+    >>> [round(command(s)(t) / AMPLITUDE, 12) for s in SHAPES for t in (0.0, PERIOD / 4)]
+    [0.0, 1.0, 0.0, 1.0]
+    """
+    start = -PERIOD / 4 if shape == "triangle" else 0.0
+    return Cycle(-AMPLITUDE, AMPLITUDE, PERIOD, shape, start=start)
+
+
 def reversal_times(shape: str, stop: float, period: float = PERIOD) -> np.ndarray:
-    """Times [s] at which a :class:`~..signals.Cycle` command of ``shape`` reverses, up to
-    about ``stop`` [s]: a sine at (k + 1/4)·P and (k + 3/4)·P, a triangle at P/2, P, …
+    """Times [s] at which :func:`command` of ``shape`` reverses, up to about ``stop`` [s]:
+    (k + 1/4)·P and (k + 3/4)·P for both shapes.
 
     Returns
     -------
@@ -49,10 +67,11 @@ def reversal_times(shape: str, stop: float, period: float = PERIOD) -> np.ndarra
     Examples
     --------
     >>> reversal_times("sine", 0.5).tolist(), reversal_times("triangle", 0.5).tolist()
-    ([0.125, 0.375, 0.625], [0.25, 0.5, 0.75])
+    ([0.125, 0.375, 0.625], [0.125, 0.375, 0.625])
     """
-    first = 0.25 if shape == "sine" else 0.5
-    return (first + 0.5 * np.arange(int(2.0 * stop / period) + 1)) * period
+    if shape not in SHAPES:
+        raise ValueError(f"shape = {shape!r} is not one of {list(SHAPES)}")
+    return (0.25 + 0.5 * np.arange(int(2.0 * stop / period) + 1)) * period
 
 
 def reversal_metrics(time, reference, angle, speed, shape: str) -> dict:
@@ -120,9 +139,7 @@ def run(out_dir, fmu_dir=None, coarse: bool = False) -> ScenarioResult:
                     res = run_system(
                         system,
                         parameters=variant,
-                        signals={
-                            "controller.reference": Cycle(-AMPLITUDE, AMPLITUDE, PERIOD, shape)
-                        },
+                        signals={"controller.reference": command(shape)},
                         stop=stop,
                         step=STEP,
                         record=["controller.reference", "motor.angle", "motor.speed", torque],
