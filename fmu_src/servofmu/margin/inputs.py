@@ -431,7 +431,7 @@ def _operating_temperatures(r: _Reader, mounting: str, notes: list) -> tuple[flo
     notes.append(
         f"temperatures: the operating range mounting {mounting} declares, "
         f"{lo - ZERO_CELSIUS:g}…{hi - ZERO_CELSIUS:g} °C in steps of {OPERATING_STEP:g} K "
-        f"({lo_src}" + ("" if hi_src == lo_src or hi_src in lo_src else f"; {hi_src}") + ")"
+        f"({lo_src}" + ("" if hi_src in lo_src else f"; {hi_src}") + ")"
     )  # one source given for both ends is cited once
     return _steps(r, lo, hi, OPERATING_STEP)
 
