@@ -129,6 +129,19 @@ LOOPS = {
 #: Pre-rolling on (Dahl) with a given rest stiffness (--models); one derived from the contacts
 #: costs an exact equilibrium at each new temperature or load, which a ramp makes every step.
 PREROLLING = {"prerolling_model": 1, "prerolling_stiffness": 2.0}
+#: Pre-rolling's aim: a loop with it on costs at most this ratio of the same loop with it off.
+PREROLLING_AIM = 1.1
+PREROLLING_LABEL = "BearingFriction prerolling ("
+
+
+def prerolling_overheads(loops: dict) -> dict:
+    """{trajectory: µs per step with pre-rolling on / with it off} of one process's loops."""
+    return {
+        label[len(PREROLLING_LABEL) : -1]: us
+        / loops["BearingFriction (" + label[len(PREROLLING_LABEL) :]]
+        for label, us in loops.items()
+        if label.startswith(PREROLLING_LABEL)
+    }
 
 
 def _model_loops() -> dict:
@@ -146,7 +159,7 @@ def _model_loops() -> dict:
             for what, values in BEARING_LOOPS.items()
         },
         **{
-            f"BearingFriction prerolling ({what})": (
+            f"{PREROLLING_LABEL}{what})": (
                 _BEARING_INPUTS,
                 values,
                 "friction_torque",
@@ -272,7 +285,12 @@ def figures_of(results: dict) -> dict:
         row["aim ×"] = AIMS.get(label, "")
         rows.append(row)
     kernels = {impl: results[impl]["implementation"] for impl in results}
-    return {"kernels": kernels, "loops": rows}
+    overheads = {
+        impl: prerolling_overheads({k: v["us"] for k, v in results[impl]["loops"].items()})
+        for impl in results
+    }
+    prerolling = {"aim ×": PREROLLING_AIM, "on / off ×": overheads} if overheads["python"] else {}
+    return {"kernels": kernels, "loops": rows, "prerolling": prerolling}
 
 
 def main() -> None:
@@ -326,6 +344,11 @@ def main() -> None:
         cells = [f"{row[f'{i} µs']:7.2f} µs {row[f'{i} ×']:5.2f}×" for i in names]
         aim = "" if row["aim ×"] == "" else f"≤ {row['aim ×']}"
         print(f"{row['loop']:62s} " + " ".join(f"{c:>18s}" for c in cells) + f" {aim:>6s}")
+    if table["prerolling"]:
+        print(f"\npre-rolling on / off, same loop (aim ≤ {PREROLLING_AIM}):")
+        for what in table["prerolling"]["on / off ×"]["python"]:
+            cells = [f"{table['prerolling']['on / off ×'][i][what]:5.3f}×" for i in names]
+            print(f"  {what:60s} " + " ".join(f"{c:>18s}" for c in cells))
 
 
 if __name__ == "__main__":

@@ -14,8 +14,10 @@ from fmpy.fmi1 import FMICallException
 from fmu_helpers import Fmu
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
+from kernels import implementations
 from scipy.integrate import solve_ivp
 
+from servofmu.physics import compiled
 from servofmu.physics.friction import prerolling
 from servofmu.physics.pair import BearingPair
 
@@ -66,6 +68,25 @@ def test_steps_compose_exactly_and_rest_holds_the_torque():
     # T_c falls below |T| (the grease thins): the contacts slip to ±T_c at once
     assert prerolling.dahl_torque_step(one, 0.5 * one, 2.0, 1.0, 0.0) == 0.5 * one
     assert prerolling.dahl_torque_step(-one, 0.5 * one, 2.0, 1.0, 1e-6) < 0.0
+
+
+def test_the_fmus_per_step_kernels_agree_bit_for_bit_on_both_paths():
+    # BearingFriction's per-step Dahl step and T_c, compiled and Python, against the library's
+    # (the Python kernels), over exponents either side of 1, reversals, T_c below |T|, rest
+    kernels = {impl: compiled.module("kernels.friction", impl) for impl in implementations()}
+    rng = np.random.default_rng(7)
+    for _ in range(2000):
+        tc = float(rng.uniform(0.0, 2e-3)) * (rng.random() > 0.05)
+        t0 = float(rng.uniform(-1.2, 1.2)) * 1e-3
+        i = float(rng.choice([0.0, 0.5, 1.0, 1.5, 3.0]))
+        dtheta = float(rng.normal(0.0, 1e-3)) * (rng.random() > 0.05)
+        run, excess, speed = (float(v) for v in rng.uniform([0, 0, -1], [1e-3, 1e-3, 1]))
+        want = prerolling.dahl_torque_step(t0, tc, SIGMA0, i, dtheta)
+        want_tc = prerolling.stribeck_torque(run, excess, speed, 1e-2)
+        for impl, k in kernels.items():
+            assert k.dahl_torque_step(t0, tc, SIGMA0, i, dtheta) == want, impl
+            assert k.stribeck_torque(run, excess, speed, 1e-2) == want_tc, impl
+        assert abs(want) <= tc
 
 
 # ------------------------------------------------------------------ the rest stiffness

@@ -476,6 +476,13 @@ class BearingFriction(ServoSlave):
         self._sigma0 = self.prerolling_stiffness  # 0: derived at each operating point
         self._excess = 0.0  # the breakaway excess of the operating point [N·m]
         self._stribeck = self.model.pair.stribeck_speed  # ω_s [rad/s] of T_c
+        self._exponent = self.prerolling_exponent
+        # Dahl's step and T_c: the friction kernels of the model's implementation
+        kernels = continuation.module("kernels.friction", self.model.implementation)
+        self._stribeck_torque, self._dahl_torque_step = (
+            kernels.stribeck_torque,
+            kernels.dahl_torque_step,
+        )
         self._carry = self._advance_prerolling if self.prerolling_model == prerolling.DAHL else None
 
     def hidden_state(self):
@@ -513,7 +520,7 @@ class BearingFriction(ServoSlave):
                 self._warn_reverse_loaded()
         self._set_speed(self, self.model.speed_outputs(self.speed))
         if self._carry is not None:
-            self._prerolling_outputs()
+            self._hold_prerolling()
 
     # ------------------------------------------------------------------ pre-rolling
     def _prerolling_point(self, state, temps):
@@ -525,36 +532,35 @@ class BearingFriction(ServoSlave):
                 self.model.pair, t4, self.axial_load, self.radial_load
             )
 
-    def _prerolling_outputs(self):
-        """prerolling_angle and prerolling_torque: Dahl's state; friction_torque and power_loss
-        from it, within T_c of the current inputs (a rest stiffness of 0, no ball loaded: the
-        regularised sign)."""
-        self._coulomb = prerolling.coulomb_torque(
-            self.running_torque, self._excess, self.speed, self._stribeck
-        )
-        self._dahl_outputs()
-
-    def _dahl_outputs(self):
-        """The outputs of Dahl's state within T_c of the current inputs (as computed)."""
-        tc = self._coulomb
+    def _hold_prerolling(self):
+        """Dahl's state as it is, within T_c of the current inputs: prerolling_angle,
+        prerolling_torque and, from them, friction_torque and power_loss (a rest stiffness of
+        0, no ball loaded: the regularised sign)."""
+        speed = self.speed
+        tc = self._stribeck_torque(self.running_torque, self._excess, speed, self._stribeck)
+        self._coulomb = tc
         self.prerolling_angle = self._pr_angle
-        self.prerolling_torque = self._pr_torque
+        self.prerolling_torque = t = self._pr_torque
         if self._sigma0 > 0.0:
-            self.friction_torque = t = min(max(self._pr_torque, -tc), tc)
-            self.power_loss = t * self.speed
+            t = tc if t > tc else (-tc if t < -tc else t)
+            self.friction_torque = t
+            self.power_loss = t * speed
 
     def _advance_prerolling(self, step_size: float) -> bool:
-        """Dahl's state over a step, speed and T_c held (exact: physics/friction/prerolling.py)."""
-        dtheta = self.speed * step_size
-        self._pr_angle += dtheta
-        self._pr_torque = (
-            prerolling.dahl_torque_step(
-                self._pr_torque, self._coulomb, self._sigma0, self.prerolling_exponent, dtheta
+        """Dahl's state over a step, speed and T_c held (exact for every exponent: the closed
+        form of :func:`~servofmu.physics.kernels.friction.dahl_torque_step`), and its outputs;
+        T_c is this step's, computed from its inputs before the step."""
+        speed = self.speed
+        dtheta = speed * step_size
+        self.prerolling_angle = self._pr_angle = self._pr_angle + dtheta
+        if self._sigma0 > 0.0:  # |T| <= T_c after the step
+            t = self._dahl_torque_step(
+                self._pr_torque, self._coulomb, self._sigma0, self._exponent, dtheta
             )
-            if self._sigma0 > 0.0
-            else 0.0
-        )  # no ball loaded: no stress held
-        self._dahl_outputs()  # T_c: this step's inputs, computed before the step
+            self.prerolling_torque = self.friction_torque = self._pr_torque = t
+            self.power_loss = t * speed
+        else:  # no ball loaded: no stress held
+            self.prerolling_torque = self._pr_torque = 0.0
         return True
 
     def _warn_reverse_loaded(self):
@@ -650,7 +656,7 @@ _UNCOPIED = {v.field for v in BearingFriction.VARIABLES if v.causality == "outpu
     *PointState.__dataclass_fields__,
     *_SPEED_FIELDS,
     "breakaway_lower_bound",
-    "prerolling_angle",  # with prerolling_model = 1 from Dahl's state (_prerolling_outputs)
+    "prerolling_angle",  # with prerolling_model = 1 from Dahl's state (_hold_prerolling)
     "prerolling_torque",
 }
 if _UNCOPIED:

@@ -19,12 +19,12 @@ k = σ₀/T_c, which integrates in closed form (separation of variables, y keeps
    i > 1:&\quad |y| = \bigl(|y_0|^{1-i} + (i-1)\,k\,x\bigr)^{-1/(i-1)},\\
    i < 1:&\quad |y| = \max\bigl(0,\ |y_0|^{1-i} - (1-i)\,k\,x\bigr)^{1/(1-i)}.
 
-:func:`dahl_torque_step` uses these: a step over which the sign of the speed and T_c are held
-is exact for every i (to rounding), not integrated to a tolerance. From rest (T = 0) in one
-direction, i = 1 gives Dahl's loop T = T_c·(1 − e^(−σ₀θ/T_c)) (:func:`dahl_loop_torque`).
-The stress the contacts hold never exceeds what they transmit sliding: |T| ≤ T_c always
-(a T_c that falls below |T|, e.g. as the temperature changes, takes T to ±T_c at once: the
-contacts slip), so y stays in [0, 2].
+:func:`~servofmu.physics.kernels.friction.dahl_torque_step` uses these: a step over which the
+sign of the speed and T_c are held is exact for every i (to rounding), not integrated to a
+tolerance. From rest (T = 0) in one direction, i = 1 gives Dahl's loop
+T = T_c·(1 − e^(−σ₀θ/T_c)) (:func:`dahl_loop_torque`). The stress the contacts hold never
+exceeds what they transmit sliding: |T| ≤ T_c always (a T_c that falls below |T|, e.g. as the
+temperature changes, takes T to ±T_c at once: the contacts slip), so y stays in [0, 2].
 
 **The rest stiffness from the contacts** (:func:`contact_rest_stiffness`): before a ball
 rolls, the rings' relative rotation is taken up by the elastic tangential deflection of its
@@ -56,11 +56,15 @@ compliance of cage, lubricant film and seats.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from .._checks import check_finite, check_nonnegative, check_positive
+from ..kernels.friction import (  # the equations, shared with the per-step path
+    dahl_torque_step as dahl_torque_step,
+)
+from ..kernels.friction import (
+    stribeck_torque as stribeck_torque,
+)
 
 #: prerolling_model: the pre-rolling models by number (0: none, the regularised sign).
 MODELS = ("none", "dahl")
@@ -72,79 +76,6 @@ STIFFNESS_RANGE = (0.0, 1.0e9)
 
 
 # ------------------------------------------------------------------ Dahl's model
-def coulomb_torque(running_torque, breakaway_excess, speed, stribeck_speed):
-    """Dahl's sliding torque T_c [N·m]: the magnitude of the pair's friction torque with
-    pre-rolling off at ``speed``, its regularised sign taken away,
-    T_c = M_run(|ω|) + ΔM·exp(−|ω|/ω_s) (Andersson, Söderberg & Björklund 2007, Tribol. Int.
-    40:580, the Stribeck decay of :func:`.friction.regularised_friction_torque`).
-
-    Parameters
-    ----------
-    running_torque : M_run [N·m] at |speed|, ≥ 0
-    breakaway_excess : ΔM [N·m], ≥ 0
-    speed : ω [rad/s], signed
-    stribeck_speed : ω_s [rad/s], > 0
-
-    Returns
-    -------
-    float or ndarray
-        T_c [N·m].
-
-    Examples
-    --------
-    >>> coulomb_torque(1e-3, 5e-4, 0.0, 1e-2)  # N·m: the breakaway at rest
-    0.0015
-    """
-    if type(speed) is float:  # the per-step path: floats
-        return running_torque + breakaway_excess * math.exp(-abs(speed) / stribeck_speed)
-    return running_torque + breakaway_excess * np.exp(-np.abs(speed) / stribeck_speed)
-
-
-def dahl_torque_step(torque: float, coulomb: float, sigma0: float, exponent: float, dtheta: float):
-    """Dahl's torque [N·m] after the rings turn by ``dtheta`` with the sign of the speed and T_c
-    held: the closed form of the module docstring (Dahl 1976, AIAA J. 14:1675, eq. 1),
-    exact for every exponent.
-
-    Parameters
-    ----------
-    torque : T [N·m] at the start of the step, signed like the speed that built it
-    coulomb : T_c [N·m] ≥ 0 (0: no torque)
-    sigma0 : rest slope σ₀ [N·m/rad] ≥ 0
-    exponent : i [-] ≥ 0
-    dtheta : Δθ [rad], the relative rotation of the rings over the step (0: T held)
-
-    Returns
-    -------
-    float
-        T [N·m] at the end of the step, |T| ≤ T_c.
-
-    Examples
-    --------
-    >>> t = dahl_torque_step(0.0, 1e-3, 2.0, 1.0, 5e-4)  # one T_c/σ₀ from rest
-    >>> round(t / 1e-3, 12) == round(1 - math.exp(-1.0), 12)
-    True
-    >>> dahl_torque_step(2e-3, 1e-3, 2.0, 1.0, 0.0)  # T_c fell below |T|: the contacts slip
-    0.001
-    """
-    if not coulomb > 0.0:
-        return 0.0
-    t = min(max(torque, -coulomb), coulomb)
-    if dtheta == 0.0 or sigma0 == 0.0:
-        return t
-    s = 1.0 if dtheta > 0.0 else -1.0
-    y0 = 1.0 - s * t / coulomb  # in [0, 2]: |T| <= T_c
-    kx = sigma0 / coulomb * abs(dtheta)
-    if y0 == 0.0:
-        return t
-    if exponent == 1.0:
-        y = y0 * math.exp(-kx)
-    elif exponent > 1.0:
-        y = (y0 ** (1.0 - exponent) + (exponent - 1.0) * kx) ** (-1.0 / (exponent - 1.0))
-    else:
-        y = max(0.0, y0 ** (1.0 - exponent) - (1.0 - exponent) * kx) ** (1.0 / (1.0 - exponent))
-    return s * coulomb * (1.0 - y)
-
-
 def dahl_loop_torque(theta, coulomb, sigma0, theta_reversal=None, torque_reversal=0.0):
     """Dahl's loop for i = 1 (Dahl 1976, AIAA J. 14:1675, eq. 1 integrated): from rest,
     T = T_c·(1 − e^(−σ₀θ/T_c)) for θ ≥ 0; after a reversal at (θ_r, T_r) to decreasing θ,

@@ -123,6 +123,25 @@ def exp(x: cython.double) -> cython.double:
 
 
 @cython.ccall
+def power(x: cython.double, y: cython.double) -> cython.double:
+    """xʸ, elementwise (x ≥ 0, or y whole).
+
+    Returns
+    -------
+    float or ndarray
+
+    Examples
+    --------
+    >>> power(4.0, 0.5)
+    2.0
+    """
+    if cython.compiled:
+        return libm.pow(x, y)
+    else:
+        return x**y if _both_floats(x, y) else np.power(x, y)
+
+
+@cython.ccall
 def tanh(x: cython.double) -> cython.double:
     """tanh x, elementwise.
 

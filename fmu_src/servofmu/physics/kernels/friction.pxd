@@ -7,7 +7,11 @@ cpdef double heathcote_force(double load, double semi_major_axis, double ball_di
                              double groove_radius, double friction)
 cpdef double palmgren_torque(double kinematic_viscosity, double speed, double pitch_diameter,
                              double s0)
+cpdef double stribeck_torque(double running_torque, double breakaway_excess, double speed,
+                             double stribeck_speed)
 cpdef double regularised_torque(double speed, double running_torque, double breakaway_excess,
                                 double regularisation_speed, double stribeck_speed)
 cpdef (double, double) coulomb_and_excess(double static_ratio, double hysteresis, double spin,
                                           double sliding)
+cpdef double dahl_torque_step(double torque, double coulomb, double sigma0, double exponent,
+                              double dtheta)

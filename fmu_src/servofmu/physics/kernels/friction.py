@@ -21,9 +21,15 @@ except ImportError:  # no Cython: its pure-Python mode's names as no-ops
     from . import _cython_shadow as cython
 
 if cython.compiled:
-    from cython.cimports.servofmu.physics.kernels._elementary import exp, maximum, tanh
+    from cython.cimports.servofmu.physics.kernels._elementary import (
+        exp,
+        maximum,
+        minimum,
+        power,
+        tanh,
+    )
 else:
-    from .elementary import exp, maximum, tanh
+    from .elementary import exp, maximum, minimum, power, tanh
 
 from .units import CST, MM, NMM, RPM
 
@@ -182,6 +188,35 @@ def palmgren_torque(
 
 
 @cython.ccall
+def stribeck_torque(
+    running_torque: cython.double,
+    breakaway_excess: cython.double,
+    speed: cython.double,
+    stribeck_speed: cython.double,
+) -> cython.double:
+    """Magnitude of the sliding friction torque at speed ω, the Stribeck decay of the breakaway
+    onto the running torque:
+
+        T_c(ω) = M_run(|ω|) + ΔM_break·exp(−|ω|/ω_s)
+
+    (Andersson, Söderberg & Björklund 2007, Tribology International 40:580), from the running
+    torque M_run [N·m] at |ω|, the breakaway excess ΔM_break [N·m] ≥ 0, the speed ω [rad/s]
+    (signed) and the Stribeck speed ω_s [rad/s] > 0. Floats or arrays.
+
+    Returns
+    -------
+    float or ndarray
+        T_c [N·m] ≥ 0.
+
+    Examples
+    --------
+    >>> stribeck_torque(1e-3, 5e-4, 0.0, 1e-2)  # N·m: the breakaway at rest
+    0.0015
+    """
+    return running_torque + breakaway_excess * exp(-abs(speed) / stribeck_speed)
+
+
+@cython.ccall
 def regularised_torque(
     speed: cython.double,
     running_torque: cython.double,
@@ -196,8 +231,8 @@ def regularised_torque(
     from the speed ω [rad/s] (signed), the running torque M_run [N·m] at |ω|, the breakaway
     excess ΔM_break = breakaway − running-at-rest [N·m] ≥ 0, the regularisation speed ω_r
     [rad/s] (width of the smooth sign) and the Stribeck speed ω_s [rad/s] (decay of the
-    static excess). The sign regularisation and Stribeck decay follow Andersson, Söderberg &
-    Björklund (2007), Tribology International 40:580. Floats or arrays.
+    static excess, :func:`stribeck_torque`). The sign regularisation and Stribeck decay follow
+    Andersson, Söderberg & Björklund (2007), Tribology International 40:580. Floats or arrays.
 
     Returns
     -------
@@ -209,8 +244,8 @@ def regularised_torque(
     >>> regularised_torque(0.0, 1e-3, 5e-4, 1e-3, 1e-2)  # N·m: nothing at rest
     0.0
     """
-    return tanh(speed / regularisation_speed) * (
-        running_torque + breakaway_excess * exp(-abs(speed) / stribeck_speed)
+    return tanh(speed / regularisation_speed) * stribeck_torque(
+        running_torque, breakaway_excess, speed, stribeck_speed
     )
 
 
@@ -240,3 +275,63 @@ def coulomb_and_excess(
     (3.0, 1.0)
     """
     return hysteresis + spin + sliding, (static_ratio - 1.0) * (spin + sliding)
+
+
+@cython.ccall
+def dahl_torque_step(
+    torque: cython.double,
+    coulomb: cython.double,
+    sigma0: cython.double,
+    exponent: cython.double,
+    dtheta: cython.double,
+) -> cython.double:
+    """Dahl's pre-rolling torque after the rings turn by Δθ with the sign of the speed and T_c
+    held (Dahl 1976, AIAA J. 14(12):1675, eq. 1, dT/dθ = σ₀·|1 − s·T/T_c|^i·sgn(1 − s·T/T_c),
+    s = sgn Δθ), in closed form: with y = 1 − s·T/T_c and k = σ₀/T_c,
+    y = y₀·e^(−k|Δθ|) for i = 1, |y| = (|y₀|^(1−i) + (i − 1)·k·|Δθ|)^(−1/(i−1)) for i > 1,
+    |y| = max(0, |y₀|^(1−i) − (1 − i)·k·|Δθ|)^(1/(1−i)) for i < 1 (separation of variables:
+    exact for every i, to rounding). A T_c below |T| takes T to ±T_c at once (the contacts
+    slip), so y₀ is in [0, 2]. Floats.
+
+    Parameters
+    ----------
+    torque : T [N·m] at the start of the step, signed like the speed that built it
+    coulomb : T_c [N·m] ≥ 0 (0: no torque; :func:`stribeck_torque`)
+    sigma0 : rest slope σ₀ [N·m/rad] ≥ 0
+    exponent : i [-] ≥ 0
+    dtheta : Δθ [rad], the relative rotation of the rings over the step (0: T held)
+
+    Returns
+    -------
+    float
+        T [N·m] at the end of the step, |T| ≤ T_c.
+
+    Examples
+    --------
+    >>> t = dahl_torque_step(0.0, 1e-3, 2.0, 1.0, 5e-4)  # one T_c/σ₀ from rest
+    >>> round(t / 1e-3, 12) == round(1 - exp(-1.0), 12)
+    True
+    >>> dahl_torque_step(2e-3, 1e-3, 2.0, 1.0, 0.0)  # T_c fell below |T|: the contacts slip
+    0.001
+    """
+    if not coulomb > 0.0:
+        return 0.0
+    t: cython.double = maximum(minimum(torque, coulomb), -coulomb)
+    if dtheta == 0.0 or sigma0 == 0.0:
+        return t
+    s: cython.double = 1.0 if dtheta > 0.0 else -1.0
+    y0: cython.double = 1.0 - s * t / coulomb  # in [0, 2]: |T| <= T_c
+    if y0 == 0.0:
+        return t
+    kx: cython.double = sigma0 / coulomb * abs(dtheta)
+    y: cython.double
+    if exponent == 1.0:
+        y = y0 * exp(-kx)
+    elif exponent > 1.0:
+        y = power(power(y0, 1.0 - exponent) + (exponent - 1.0) * kx, -1.0 / (exponent - 1.0))
+    else:
+        y = power(
+            maximum(0.0, power(y0, 1.0 - exponent) - (1.0 - exponent) * kx),
+            1.0 / (1.0 - exponent),
+        )
+    return s * coulomb * (1.0 - y)
