@@ -321,7 +321,7 @@ def crank_slider(act: Actuator, kernels=stepping) -> stepping.Linkage:
     Examples
     --------
     >>> round(crank_slider(Actuator.from_catalog("liu2014_ema")).l1 * 1e3, 3)  # mm: L1
-    50.0
+    51.806
     """
     return kernels.Linkage(
         float(act.crank_length),

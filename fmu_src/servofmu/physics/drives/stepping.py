@@ -14,10 +14,10 @@ Examples
 --------
 >>> import math
 >>> crank = Linkage(0.05, 0.1, 0.0, 2e11, 1e-4, 1e-4, 0.05, 8e10, 1e-8, 1e-8)
->>> theta = math.pi / 2  # crank square to the slide, Y1 = 0: sin γ = L1/L2 = 0.5
+>>> theta = math.pi / 2  # crank upright, Y1 = 0: sin γ = L1/L2 = 0.5, dx/dθ = −L1
 >>> gamma = math.asin(crank.sin_rod_angle(theta))
 >>> round(crank.nut_position(theta, gamma) * 1e3, 6), round(crank.lever(theta, gamma) * 1e3, 6)
-(86.60254, -78.867513)
+(86.60254, -50.0)
 """
 
 import math
