@@ -76,7 +76,18 @@ _INF: cython.double = math.inf
 
 def reach_error(delta: float, crank_length: float, rod_length: float) -> ValueError:
     """The error of an output angle δ [rad] where the linkage of crank L1 and rod L2 [m]
-    cannot close (Liu 2014 eq 9: |sin γ| ≥ 1)."""
+    cannot close (Liu 2014 eq 9: |sin γ| ≥ 1).
+
+    Returns
+    -------
+    ValueError
+        Naming the angle, the reason and the two lengths.
+
+    Examples
+    --------
+    >>> str(reach_error(1.5, 0.05, 0.03)).split(":")[0]
+    "output_angle = 1.5 rad is outside the linkage's reach"
+    """
     return ValueError(
         f"output_angle = {delta!r} rad is outside the linkage's reach: sin γ = "
         f"(L1·sin θ − Y1)/L2 reaches ±1 (crank {crank_length!r} m, rod "
@@ -85,7 +96,18 @@ def reach_error(delta: float, crank_length: float, rod_length: float) -> ValueEr
 
 
 def dead_centre_error(delta: float) -> ValueError:
-    """The error of an output angle δ [rad] at a dead centre (dx/dθ = 0)."""
+    """The error of an output angle δ [rad] at a dead centre (dx/dθ = 0, Liu 2014 eq 2–3).
+
+    Returns
+    -------
+    ValueError
+        Naming the angle and the reason.
+
+    Examples
+    --------
+    >>> str(dead_centre_error(-1.2)).split(" (")[0]
+    'output_angle = -1.2 rad puts the linkage at a dead centre'
+    """
     return ValueError(
         f"output_angle = {delta!r} rad puts the linkage at a dead centre (crank and rod in "
         "line): no moment can be carried"
