@@ -392,3 +392,25 @@ def test_per_step_update_refuses_the_same_points_with_the_same_messages_on_both_
         zero = 0.0 if "stiffness" in text else None
         got = {impl: _outcome(s, *args) for impl, s in _steppers(act, None, zero).items()}
         assert len(set(got.values())) == 1 and text in got["python"], got
+
+
+def test_per_step_motor_side_inverse_on_both_paths_and_against_the_vectorised_one(act):
+    # the FMU's motor-side angle, compiled and Python side by side: the same bits (libm's
+    # functions on both); against output_angle (numpy's arccos and arctan2, which round
+    # differently from libm's in the last place): 1e-15 rad, a few units in the last place
+    # of angles up to π; the same message beyond the dead centres
+    from kernels import implementations
+
+    models = {impl: A.ActuatorModel(act, implementation=impl) for impl in implementations()}
+    phis = [*np.linspace(-95.0, 95.0, 381).tolist(), -1e-9, -0.0, 0.0, 3e-300]  # floats
+    want = A.output_angle(act, phis)
+    for phi, w in zip(phis, want, strict=True):
+        got = {impl: m.stepper.output_angle(phi) for impl, m in models.items()}
+        assert len(set(got.values())) == 1, (phi, got)
+        assert got["python"] == pytest.approx(float(w), rel=0, abs=1e-15)
+    with pytest.raises(ValueError) as vectorised:
+        A.output_angle(act, 300.0)
+    for m in models.values():
+        with pytest.raises(ValueError) as per_step:
+            m.stepper.output_angle(300.0)
+        assert str(per_step.value) == str(vectorised.value)

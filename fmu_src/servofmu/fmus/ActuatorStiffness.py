@@ -50,7 +50,6 @@ from servofmu.physics.drives.actuator import (  # noqa: E402
     StiffnessBreakdown,
     check_support_pair,
 )
-from servofmu.physics.drives.actuator import output_angle as mechanism_output_angle  # noqa: E402
 
 _A = Actuator.from_catalog("liu2014_ema")
 # the per-step update's result: StiffnessBreakdown's fields in order
@@ -463,7 +462,7 @@ class ActuatorStiffness(ServoSlave):
         """The output angle δ [rad]: the angle input, or the motor angle through the exact
         inverse of the crank-slider (ValueError naming motor_angle beyond a dead centre)."""
         if self.motor_side_inputs:
-            return float(mechanism_output_angle(self.model.act, self.motor_angle))
+            return self.model.stepper.output_angle(self.motor_angle)
         return self.angle
 
     def hidden_state(self):

@@ -101,6 +101,7 @@ from .stepping import (
     SMALLEST_MOMENT,
     SMALLEST_SCREW_FORCE,
     dead_centre_error,
+    motor_reach_error,
     reach_error,
 )
 
@@ -439,25 +440,22 @@ def output_angle(act: Actuator, motor_angle):
     10.0
     """
     phi = np.asarray(check_finite("motor_angle", motor_angle, "rad"), dtype=float)
-    l1, l2, y1 = act.crank_length, act.rod_length, act.slide_offset
-    x0 = kinematics(act, 0.0).nut_position
-    x = x0 + phi / _motor_radians_per_metre(act)
-    r = np.hypot(x, y1)
-    cos_rel = (l1**2 + r**2 - l2**2) / (2.0 * l1 * r)  # cos(θ − ψ)
-    psi = np.arctan2(y1, x)
-    theta0 = act.neutral_crank_angle
-    branch = np.sign(np.angle(np.exp(1j * (theta0 - np.arctan2(y1, x0)))))
-    with np.errstate(invalid="ignore"):
-        theta = psi + branch * np.arccos(cos_rel)
-    cos_rod = (x - l1 * np.cos(theta)) / l2  # cos γ ≥ 0: the rod runs from B towards +x
-    bad = ~(np.abs(cos_rel) < 1.0) | ~(cos_rod > 0.0)
+    crank = crank_slider(act)
+    x = kinematics(act, 0.0).nut_position + phi / _motor_radians_per_metre(act)
+    theta = crank.crank_angle(x, _branch(act))
+    # cos γ > 0: the rod runs from B towards +x
+    bad = ~(np.abs(crank.reach_cosine(x)) < 1.0) | ~(crank.rod_cosine(x, theta) > 0.0)
     if np.any(bad):
-        raise ValueError(
-            f"motor_angle = {float(phi[bad].flat[0])!r} rad is outside the linkage's reach: "
-            "the crank-slider would pass a dead centre (crank and rod in line); valid "
-            f"{_motor_reach_text(act)}"
-        )
-    return np.angle(np.exp(1j * (theta - theta0)))
+        raise motor_reach_error(float(phi[bad].flat[0]), _motor_reach_text(act))
+    return np.angle(np.exp(1j * (theta - act.neutral_crank_angle)))
+
+
+def _branch(act: Actuator) -> float:
+    """±1: the side of the line from the output shaft C to the nut A that the crank pin B lies
+    on at the neutral position (the branch of :func:`output_angle`)."""
+    x0 = kinematics(act, 0.0).nut_position
+    psi0 = np.arctan2(act.slide_offset, x0)
+    return float(np.sign(np.angle(np.exp(1j * (act.neutral_crank_angle - psi0)))))
 
 
 def _motor_reach_text(act: Actuator) -> str:
@@ -772,7 +770,9 @@ class ActuatorModel:
     ----------
     stepper : ActuatorStepper
         The per-step update: ``stepper.evaluate(δ, M, T)`` on checked floats gives the
-        fields of :class:`StiffnessBreakdown` as a tuple.
+        fields of :class:`StiffnessBreakdown` as a tuple; ``stepper.output_angle(φ)`` is
+        :func:`output_angle` on a float (C's ``libm`` where numpy has its own arccos and
+        arctan2: the same δ to a few units in the last place).
     """
 
     def __init__(self, act: Actuator, support_pair=None, implementation: str | None = None):
@@ -798,6 +798,10 @@ class ActuatorModel:
             float(act.housing_stiffness),
             float(act.seat_stiffness),
             None if self._bearings is None else self._bearings.update,
+            float(kinematics(act, 0.0).nut_position),
+            _motor_radians_per_metre(act),
+            _branch(act),
+            _motor_reach_text(act),
         )
 
     @property

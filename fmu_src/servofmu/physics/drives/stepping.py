@@ -6,9 +6,11 @@ them in full), written in Cython's pure-Python mode: :class:`Linkage` on floats 
 the ActuatorStiffness FMU's per-step update in one call. The build compiles this module
 (:mod:`servofmu.physics.compiled`); compiled, every function takes C doubles.
 
-Both implementations give the same bits: the same operations in the same order, the
-elementary functions from C's ``libm`` (as :mod:`math` calls them), and the constants that
-Python's ``**`` makes computed by Python when the objects are built.
+Both implementations give the same bits on floats: the same operations in the same order,
+the elementary functions from C's ``libm`` (as :mod:`math` calls them; ``hypot`` through
+numpy, which calls C's), and the constants that Python's ``**`` makes computed by Python when
+the objects are built. On arrays numpy's functions run, whose arccos and arctan2 may round
+differently in the last place.
 
 Examples
 --------
@@ -35,6 +37,7 @@ if cython.compiled:
         arctan,
         arctan2,
         cos,
+        hypot,
         maximum,
         sign,
         sin,
@@ -50,6 +53,7 @@ else:
         arctan,
         arctan2,
         cos,
+        hypot,
         maximum,
         sign,
         sin,
@@ -114,6 +118,25 @@ def dead_centre_error(delta: float) -> ValueError:
     )
 
 
+def motor_reach_error(motor_angle: float, reach: str) -> ValueError:
+    """The error of a motor angle φ [rad] beyond the dead centres, with the valid ``reach``.
+
+    Returns
+    -------
+    ValueError
+        Naming the motor angle, the reason and the valid range.
+
+    Examples
+    --------
+    >>> str(motor_reach_error(300.0, "(-1, 1) rad")).split(":")[0]
+    "motor_angle = 300.0 rad is outside the linkage's reach"
+    """
+    return ValueError(
+        f"motor_angle = {motor_angle!r} rad is outside the linkage's reach: the crank-slider "
+        f"would pass a dead centre (crank and rod in line); valid {reach}"
+    )
+
+
 @cython.final
 @cython.cclass
 class Linkage:
@@ -154,6 +177,8 @@ class Linkage:
         self.arm_length = arm_length
         self.torsional = shear_modulus * shaft_polar_moment  # G·I1 [N·m²]
         self.arm_squared = arm_length**2  # [m²]
+        self.l1_squared = crank_length**2  # [m²]
+        self.l2_squared = rod_length**2  # [m²]
         self.bending = 3.0 * youngs_modulus * arm_second_moment * crank_length  # 3·E·I·L1
 
     @cython.ccall
@@ -178,6 +203,26 @@ class Linkage:
         """β [rad], between B→C = −(cos θ, sin θ) and B→A = (cos γ, −sin γ) at the crank pin B,
         at crank angle θ and rod angle γ [rad] (Liu 2014 eq 10)."""
         return arccos(sin(theta) * sin(gamma) - cos(theta) * cos(gamma))
+
+    @cython.ccall
+    def reach_cosine(self, x_nut: cython.double) -> cython.double:
+        """cos(θ − ψ) = (L1² + R² − L2²)/(2·L1·R) [-] with the nut at x_A [m], R = |CA| and
+        ψ = atan2(Y1, x_A): the crank pin on both circles |CB| = L1 and |AB| = L2 (the
+        inverse of eq 2–3); |cos| < 1 between the dead centres."""
+        r = hypot(x_nut, self.y1)
+        return (self.l1_squared + r * r - self.l2_squared) / (2.0 * self.l1 * r)
+
+    @cython.ccall
+    def crank_angle(self, x_nut: cython.double, branch: cython.double) -> cython.double:
+        """θ = ψ ± arccos(:meth:`reach_cosine`) [rad] with the nut at x_A [m], on the branch
+        ``branch`` (±1: the side of the line CA the crank pin lies on)."""
+        return arctan2(self.y1, x_nut) + branch * arccos(self.reach_cosine(x_nut))
+
+    @cython.ccall
+    def rod_cosine(self, x_nut: cython.double, theta: cython.double) -> cython.double:
+        """cos γ = (x_A − L1·cos θ)/L2 [-] with the nut at x_A [m] and crank angle θ [rad]
+        (> 0: the rod runs from the crank pin towards +x)."""
+        return (x_nut - self.l1 * cos(theta)) / self.l2
 
     @cython.ccall
     def rotation(
@@ -240,6 +285,10 @@ class ActuatorStepper:
     support : ``support(temperature, screw_force)`` → the support pair's state
         (:meth:`~servofmu.physics.pair.model.BearingModel.update`, its ``axial_displacement``
         [m] and ``axial_stiffness`` [N/m]), or None: a rigid support
+    neutral_nut_position : x_A(θ0) [m] (the motor side, :meth:`output_angle`)
+    motor_per_metre : signed motor angle per nut travel ±i_g·2π/p [rad/m]
+    branch : ±1, the side of the line from the output shaft to the nut the crank pin lies on
+    motor_reach : the valid motor angles, as text for the error
 
     Examples
     --------
@@ -261,6 +310,10 @@ class ActuatorStepper:
         housing_stiffness,
         seat_stiffness,
         support,
+        neutral_nut_position=0.0,
+        motor_per_metre=1.0,
+        branch=1.0,
+        motor_reach="",
     ):
         self.linkage = linkage
         self.theta0 = neutral_crank_angle
@@ -272,6 +325,31 @@ class ActuatorStepper:
         self.housing_stiffness = housing_stiffness
         self.seat_stiffness = seat_stiffness
         self.support = support
+        self.x0 = neutral_nut_position
+        self.motor_per_metre = motor_per_metre
+        self.branch = branch
+        self.motor_reach = motor_reach
+
+    @cython.ccall
+    def output_angle(self, motor_angle: cython.double) -> cython.double:
+        """The output angle δ [rad] of the rigid mechanism at motor angle φ [rad] from the
+        neutral position (the closed-form inverse of the motor side: nut at
+        x_A = x_A(θ0) + φ/(±i_g·2π/p), Liu 2014 eq 1, 4; crank angle on the circles about C
+        and A). ValueError naming φ beyond the dead centres (``motor_reach``).
+
+        Returns
+        -------
+        float
+            δ [rad], wrapped to (−π, π].
+        """
+        k: Linkage = self.linkage
+        x: cython.double = self.x0 + motor_angle / self.motor_per_metre
+        c: cython.double = k.reach_cosine(x)
+        theta: cython.double = k.crank_angle(x, self.branch)
+        if not (fabs(c) < 1.0 and k.rod_cosine(x, theta) > 0.0):
+            raise motor_reach_error(motor_angle, self.motor_reach)
+        d: cython.double = theta - self.theta0
+        return arctan2(sin(d), cos(d))
 
     @cython.ccall
     def evaluate(self, delta: cython.double, m: cython.double, temperature) -> tuple:

@@ -316,3 +316,23 @@ def sign(x: cython.double) -> cython.double:
         return (x > 0.0) - (x < 0.0)
     else:
         return float((x > 0.0) - (x < 0.0)) if type(x) is float else np.sign(x)
+
+
+@cython.ccall
+def hypot(x: cython.double, y: cython.double) -> cython.double:
+    """√(x² + y²) without overflow, elementwise (C's ``hypot``: Python's :func:`math.hypot`
+    rounds differently, so the Python path calls numpy's, which is C's).
+
+    Returns
+    -------
+    float or ndarray
+
+    Examples
+    --------
+    >>> hypot(3.0, 4.0)
+    5.0
+    """
+    if cython.compiled:
+        return libm.hypot(x, y)
+    else:
+        return float(np.hypot(x, y)) if _both_floats(x, y) else np.hypot(x, y)
