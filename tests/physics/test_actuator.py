@@ -1,4 +1,5 @@
 import dataclasses
+import itertools
 import json
 import math
 import re
@@ -294,3 +295,122 @@ def test_a_support_pair_with_play_is_named_where_it_holds_nothing():
     assert model.evaluate(0.17, 100.0, 293.15).total > 0.0
     with pytest.raises(ValueError, match=r"support_bearing_stiffness = 0\.0 N/m.*axial play"):
         model.evaluate(0.17, 0.0, 293.15)
+
+
+def _support_law(temperature, screw_force):
+    """A stand-in for the support pair's state (axial_displacement [m], axial_stiffness
+    [N/m]): Hertzian-like Δz ∝ F^(2/3), softer when warm, and no stiffness at all below 1 N
+    above 400 K (a pair that lost its preload). The same function for both implementations,
+    so that their arithmetic is compared alone."""
+    from types import SimpleNamespace
+
+    soft = 1.0 + 1e-3 * (temperature - 293.15)
+    return SimpleNamespace(
+        axial_displacement=2e-8 * soft * screw_force ** (2.0 / 3.0),
+        axial_stiffness=0.0 if temperature > 400.0 else 3e7 / soft,
+    )
+
+
+def _steppers(act, support, gear_stiffness=None):
+    """{implementation: ActuatorStepper of ``act``} (``gear_stiffness``: one the actuator
+    record would refuse)."""
+    from kernels import implementations
+
+    from servofmu.physics import compiled
+
+    out = {}
+    for impl in implementations():
+        mod = compiled.module("drives.stepping", impl)
+        out[impl] = mod.ActuatorStepper(
+            A.crank_slider(act, mod),
+            act.neutral_crank_angle,
+            act.gear_ratio,
+            act.screw_lead,
+            act.gear_stiffness if gear_stiffness is None else gear_stiffness,
+            act.screw_stiffness,
+            act.housing_stiffness,
+            act.seat_stiffness,
+            support,
+        )
+    return out
+
+
+def _outcome(stepper, *args):
+    try:
+        return stepper.evaluate(*args)
+    except (ValueError, ZeroDivisionError) as exc:
+        return f"{type(exc).__name__}: {exc}"
+
+
+@pytest.mark.parametrize("support", [None, _support_law])
+def test_per_step_update_is_the_same_on_both_kernel_paths_and_the_vectorised_one(bare, support):
+    # the FMU's one call per step, compiled and Python side by side over angles up to the
+    # reach, moments through zero (the secant at SMALLEST_MOMENT, the support's tangent below
+    # SMALLEST_SCREW_FORCE) and temperatures: the same bits (the same operations in the same
+    # order, libm's functions on both paths), and the same errors. Against the vectorised
+    # path (numpy's elementary functions, which may differ from libm's in the last bit):
+    # 1e-12 relative on the lever's elements; the linkage's rotation Δθ = M/K_rod is the
+    # difference of two crank angles of about 1 rad (eq 14-16), so it agrees to a few of
+    # their last bits, 2e-15 rad (at 1e-3 N·m, Δθ ≈ 2e-8 rad: 1e-7 relative)
+    a = dataclasses.replace(bare, seat_stiffness=4e8) if support else bare
+    steppers = _steppers(a, support)
+    angles = [*np.linspace(-1.4, 1.4, 29), 1.5]  # 1.5 rad: a short rod cannot reach it
+    moments = [-900.0, -50.0, -1e-4, -0.0, 0.0, 5e-324, 2e-4, 0.5, 75.0, 1800.0]
+    errors = set()
+    for delta, m, t in itertools.product(angles, moments, (233.15, 353.15, 420.0)):
+        results = {impl: _outcome(s, float(delta), m, t) for impl, s in steppers.items()}
+        assert len(set(results.values())) == 1, (delta, m, t, results)
+        got = results["python"]
+        if isinstance(got, str):
+            errors.add((t, abs(m) < 0.01, got.split(" = ")[0]))
+            continue
+        want = A.stiffness_breakdown(a, delta, m, t, support=lambda f3, t: np.inf)
+        for name, value in zip(_breakdown_fields(), got, strict=True):
+            if name in ("gear", "screw", "housing", "reduction_ratio", "screw_force"):
+                assert value == pytest.approx(float(getattr(want, name)), rel=1e-12, abs=0)
+        probe = m if abs(m) >= A.SMALLEST_MOMENT else math.copysign(A.SMALLEST_MOMENT, m)
+        assert probe / got[2] == pytest.approx(probe / float(want.linkage), rel=0, abs=2e-15)
+    # only where the stand-in pair has no preload (warm) and carries (almost) no force
+    assert errors == (
+        {(420.0, True, "ValueError: support_bearing_stiffness")} if support else set()
+    )
+
+
+def test_per_step_update_refuses_the_same_points_with_the_same_messages_on_both_paths(bare):
+    half_pi = 1.5707963267948966
+    flat = dataclasses.replace(
+        bare,
+        neutral_crank_angle=half_pi,
+        neutral_rod_angle=math.asin(bare.crank_length / bare.rod_length),
+    )  # Y1 = 0: crank and rod in line at θ = 0
+    cases = [
+        (dataclasses.replace(bare, rod_length=0.03), (1.5, 100.0, 293.15), "outside the linkage"),
+        (flat, (-half_pi, 100.0, 293.15), "at a dead centre"),
+        (bare, (0.1, 10.0, 293.15), "stiffness[0] = 0.0 must be > 0"),
+    ]
+    for act, args, text in cases:
+        zero = 0.0 if "stiffness" in text else None
+        got = {impl: _outcome(s, *args) for impl, s in _steppers(act, None, zero).items()}
+        assert len(set(got.values())) == 1 and text in got["python"], got
+
+
+def test_per_step_motor_side_inverse_on_both_paths_and_against_the_vectorised_one(act):
+    # the FMU's motor-side angle, compiled and Python side by side: the same bits (libm's
+    # functions on both); against output_angle (numpy's arccos and arctan2, which round
+    # differently from libm's in the last place): 1e-15 rad, a few units in the last place
+    # of angles up to π; the same message beyond the dead centres
+    from kernels import implementations
+
+    models = {impl: A.ActuatorModel(act, implementation=impl) for impl in implementations()}
+    phis = [*np.linspace(-95.0, 95.0, 381).tolist(), -1e-9, -0.0, 0.0, 3e-300]  # floats
+    want = A.output_angle(act, phis)
+    for phi, w in zip(phis, want, strict=True):
+        got = {impl: m.stepper.output_angle(phi) for impl, m in models.items()}
+        assert len(set(got.values())) == 1, (phi, got)
+        assert got["python"] == pytest.approx(float(w), rel=0, abs=1e-15)
+    with pytest.raises(ValueError) as vectorised:
+        A.output_angle(act, 300.0)
+    for m in models.values():
+        with pytest.raises(ValueError) as per_step:
+            m.stepper.output_angle(300.0)
+        assert str(per_step.value) == str(vectorised.value)

@@ -44,10 +44,17 @@ from servofmu.parameters.bearing import (  # noqa: E402
     pair_from_parameters,
     prefixed_specs,
 )
-from servofmu.physics.drives.actuator import Actuator, ActuatorModel, check_support_pair  # noqa: E402
-from servofmu.physics.drives.actuator import output_angle as mechanism_output_angle  # noqa: E402
+from servofmu.physics.drives.actuator import (  # noqa: E402
+    Actuator,
+    ActuatorModel,
+    StiffnessBreakdown,
+    check_support_pair,
+)
 
 _A = Actuator.from_catalog("liu2014_ema")
+# the per-step update's result: StiffnessBreakdown's fields in order
+_BREAKDOWN = tuple(f.name for f in dataclasses.fields(StiffnessBreakdown))
+_RATIO_INDEX = _BREAKDOWN.index("reduction_ratio")
 _ANGLE = ("angle", "motor_angle")  # the position input: output shaft, or motor shaft
 _LOAD = (*TEMPERATURE_INPUTS, "load_torque", *_ANGLE)
 # with motor_side_inputs, the angle follows from motor_angle through the ratio's parameters
@@ -435,22 +442,27 @@ class ActuatorStiffness(ServoSlave):
                 named = _SUPPORT_NAMES.sub(r"support_\1", str(exc))
                 raise ValueError(f"support pair: {named}") from None
         self.model = ActuatorModel(act, support)
+        self._step = self.model.stepper.evaluate
+        by_field = {v.field: v.name for v in self._outputs if v.field}
+        self._set_breakdown = self.output_setter(tuple(by_field[f] for f in _BREAKDOWN))
 
     def compute(self):
+        # the inputs are checked by the slave: the per-step update in one call, its result
+        # (StiffnessBreakdown's fields in order) into the outputs in one statement
         angle = self._mechanism_angle()
-        b = self.model.evaluate(angle, self.load_torque, temperatures(self))
-        self.copy_outputs(b)
-        self.motor_load_torque = self.load_torque / b.reduction_ratio
+        m = self.load_torque
+        values = self._step(angle, m, temperatures(self))
+        self._set_breakdown(self, values)
+        ratio = values[_RATIO_INDEX]
+        self.motor_load_torque = m / ratio
         self.output_angle = angle
-        self.output_speed = (
-            self.motor_speed / b.reduction_ratio if self.motor_side_inputs else self.speed
-        )
+        self.output_speed = self.motor_speed / ratio if self.motor_side_inputs else self.speed
 
     def _mechanism_angle(self) -> float:
         """The output angle δ [rad]: the angle input, or the motor angle through the exact
         inverse of the crank-slider (ValueError naming motor_angle beyond a dead centre)."""
         if self.motor_side_inputs:
-            return float(mechanism_output_angle(self.model.act, self.motor_angle))
+            return self.model.stepper.output_angle(self.motor_angle)
         return self.angle
 
     def hidden_state(self):

@@ -40,6 +40,7 @@ MODULES = (
     "pair.balls",
     "pair.continuation",
     "thermal.stepping",
+    "drives.stepping",
 )
 
 _HERE = Path(__file__).resolve().parent

@@ -87,6 +87,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import compiled
 from .._checks import (
     check_finite,
     check_operating_temperature,
@@ -95,6 +96,14 @@ from .._checks import (
 )
 from ..kernels.units import DEG
 from ..thermal.temperatures import PartTemperatures
+from . import stepping
+from .stepping import (
+    SMALLEST_MOMENT,
+    SMALLEST_SCREW_FORCE,
+    dead_centre_error,
+    motor_reach_error,
+    reach_error,
+)
 
 
 @dataclass(frozen=True)
@@ -261,65 +270,6 @@ class Kinematics:
     lever: np.ndarray
 
 
-class _Floats:
-    """The functions the crank-slider equations use, on Python floats (math module): the
-    per-step path of :class:`ActuatorModel` runs the same equations as the vectorised
-    functions (which pass numpy), at a fraction of a microsecond per call."""
-
-    sin, cos, tan, sqrt = (
-        staticmethod(math.sin),
-        staticmethod(math.cos),
-        staticmethod(math.tan),
-        staticmethod(math.sqrt),
-    )
-    arcsin, arccos, arctan = (
-        staticmethod(math.asin),
-        staticmethod(math.acos),
-        staticmethod(math.atan),
-    )
-    arctan2, abs, maximum = staticmethod(math.atan2), staticmethod(abs), staticmethod(max)
-
-    @staticmethod
-    def clip(x, lo, hi):
-        return min(max(x, lo), hi)
-
-    @staticmethod
-    def sign(x):
-        return float((x > 0.0) - (x < 0.0))
-
-
-def _sin_rod_angle(act: Actuator, theta):
-    return (act.crank_length * np.sin(theta) - act.slide_offset) / act.rod_length
-
-
-def _crank_slider(theta, l1: float, l2: float, y1: float, sin_gamma, xp):
-    """(γ, β, x_A, dx_A/dθ) at crank angle θ [rad] for crank L1, rod L2 [m], slide height
-    Y1 [m] and sin γ of eq 9 (Liu 2014 eq 2–3, 9), with the functions of ``xp`` (numpy for
-    arrays, :class:`_Floats` for floats)."""
-    gamma = xp.arcsin(sin_gamma)
-    cos_t, sin_t, cos_g = xp.cos(theta), xp.sin(theta), xp.cos(gamma)
-    x = l1 * cos_t + l2 * cos_g
-    lever = -l1 * (sin_t + cos_t * xp.tan(gamma))
-    # β: angle at B between B→C = −(cos θ, sin θ) and B→A = (cos γ, −sin γ)
-    beta = xp.arccos(xp.clip(sin_t * xp.sin(gamma) - cos_t * cos_g, -1.0, 1.0))
-    return gamma, beta, x, lever
-
-
-def _reach_error(act: Actuator, delta: float) -> ValueError:
-    return ValueError(
-        f"output_angle = {delta!r} rad is outside the linkage's reach: sin γ = "
-        f"(L1·sin θ − Y1)/L2 reaches ±1 (crank {act.crank_length!r} m, rod "
-        f"{act.rod_length!r} m)"
-    )
-
-
-def _dead_centre_error(delta: float) -> ValueError:
-    return ValueError(
-        f"output_angle = {delta!r} rad puts the linkage at a dead centre (crank and rod in "
-        "line): no moment can be carried"
-    )
-
-
 def kinematics(act: Actuator, output_angle) -> Kinematics:
     """Exact crank-slider kinematics at output angle δ [rad] (Liu 2014 eq 2–3, 9): rod angle,
     transmission angle, nut position and its derivative. Raises ValueError where the linkage
@@ -346,15 +296,46 @@ def kinematics(act: Actuator, output_angle) -> Kinematics:
     """
     delta = np.asarray(check_finite("output_angle", output_angle, "rad"), dtype=float)
     theta = act.neutral_crank_angle + delta
-    s = _sin_rod_angle(act, theta)
+    crank = crank_slider(act)
+    s = crank.sin_rod_angle(theta)
     if np.any(np.abs(s) >= 1.0):
-        raise _reach_error(act, float(np.asarray(delta)[np.abs(s) >= 1.0].flat[0]))
-    l1 = act.crank_length
-    gamma, beta, x, lever = _crank_slider(theta, l1, act.rod_length, act.slide_offset, s, np)
-    dead = np.abs(lever) < 1e-6 * l1
+        bad = float(np.asarray(delta)[np.abs(s) >= 1.0].flat[0])
+        raise reach_error(bad, act.crank_length, act.rod_length)
+    gamma = np.arcsin(s)
+    beta = crank.transmission_angle(theta, gamma)
+    x = crank.nut_position(theta, gamma)
+    lever = crank.lever(theta, gamma)
+    dead = np.abs(lever) < 1e-6 * act.crank_length
     if np.any(dead):
-        raise _dead_centre_error(float(np.asarray(delta)[dead].flat[0]))
+        raise dead_centre_error(float(np.asarray(delta)[dead].flat[0]))
     return Kinematics(theta, gamma, beta, x, lever)
+
+
+def crank_slider(act: Actuator, kernels=stepping) -> stepping.Linkage:
+    """The crank-slider of ``act`` with its equations (Liu 2014 eq 2–3, 9–19) from the module
+    ``kernels`` (:mod:`.stepping`, floats or arrays; or its compiled twin, floats).
+
+    Returns
+    -------
+    Linkage
+
+    Examples
+    --------
+    >>> round(crank_slider(Actuator.from_catalog("liu2014_ema")).l1 * 1e3, 3)  # mm: L1
+    51.806
+    """
+    return kernels.Linkage(
+        float(act.crank_length),
+        float(act.rod_length),
+        float(act.slide_offset),
+        float(act.youngs_modulus),
+        float(act.crank_area),
+        float(act.rod_area),
+        float(act.arm_length),
+        float(act.shear_modulus),
+        float(act.shaft_polar_moment),
+        float(act.arm_second_moment),
+    )
 
 
 @dataclass(frozen=True)
@@ -459,25 +440,22 @@ def output_angle(act: Actuator, motor_angle):
     10.0
     """
     phi = np.asarray(check_finite("motor_angle", motor_angle, "rad"), dtype=float)
-    l1, l2, y1 = act.crank_length, act.rod_length, act.slide_offset
-    x0 = kinematics(act, 0.0).nut_position
-    x = x0 + phi / _motor_radians_per_metre(act)
-    r = np.hypot(x, y1)
-    cos_rel = (l1**2 + r**2 - l2**2) / (2.0 * l1 * r)  # cos(θ − ψ)
-    psi = np.arctan2(y1, x)
-    theta0 = act.neutral_crank_angle
-    branch = np.sign(np.angle(np.exp(1j * (theta0 - np.arctan2(y1, x0)))))
-    with np.errstate(invalid="ignore"):
-        theta = psi + branch * np.arccos(cos_rel)
-    cos_rod = (x - l1 * np.cos(theta)) / l2  # cos γ ≥ 0: the rod runs from B towards +x
-    bad = ~(np.abs(cos_rel) < 1.0) | ~(cos_rod > 0.0)
+    crank = crank_slider(act)
+    x = kinematics(act, 0.0).nut_position + phi / _motor_radians_per_metre(act)
+    theta = crank.crank_angle(x, _branch(act))
+    # cos γ > 0: the rod runs from B towards +x
+    bad = ~(np.abs(crank.reach_cosine(x)) < 1.0) | ~(crank.rod_cosine(x, theta) > 0.0)
     if np.any(bad):
-        raise ValueError(
-            f"motor_angle = {float(phi[bad].flat[0])!r} rad is outside the linkage's reach: "
-            "the crank-slider would pass a dead centre (crank and rod in line); valid "
-            f"{_motor_reach_text(act)}"
-        )
-    return np.angle(np.exp(1j * (theta - theta0)))
+        raise motor_reach_error(float(phi[bad].flat[0]), _motor_reach_text(act))
+    return np.angle(np.exp(1j * (theta - act.neutral_crank_angle)))
+
+
+def _branch(act: Actuator) -> float:
+    """±1: the side of the line from the output shaft C to the nut A that the crank pin B lies
+    on at the neutral position (the branch of :func:`output_angle`)."""
+    x0 = kinematics(act, 0.0).nut_position
+    psi0 = np.arctan2(act.slide_offset, x0)
+    return float(np.sign(np.angle(np.exp(1j * (act.neutral_crank_angle - psi0)))))
 
 
 def _motor_reach_text(act: Actuator) -> str:
@@ -547,45 +525,7 @@ def linkage_rotation(act: Actuator, output_angle, load_torque) -> np.ndarray:
     """
     m = np.asarray(check_finite("load_torque", load_torque, "N·m"), dtype=float)
     kin = kinematics(act, output_angle)
-    return _rotation(
-        act, kin.crank_angle, kin.transmission_angle, kin.nut_position, act.slide_offset, m, np
-    )
-
-
-def _rotation(act: Actuator, theta, beta, x_nut, y1: float, m, xp):
-    """:func:`linkage_rotation` at crank angle θ, transmission angle β [rad] and nut position
-    x_A [m], with the functions of ``xp`` (numpy, or :class:`_Floats` on floats)."""
-    l1, l2, e = act.crank_length, act.rod_length, act.youngs_modulus
-    sin_b, cos_b = xp.sin(beta), xp.cos(beta)
-    f2 = m / (l1 * sin_b)  # eq 10: rod force (compression for M > 0)
-    # eq 12–13: crank carries F2·cos β along its length, the rod F2 (compression shortens)
-    l1_new = l1 + f2 * cos_b * l1 / (e * act.crank_area)
-    l2_new = l2 - f2 * l2 / (e * act.rod_area)
-    # eq 14–16: close the mechanism again with the nut A fixed: B' is the intersection of the
-    # circles |CB'| = L1', |AB'| = L2' on the side of the undeformed B
-    ax, ay = x_nut, y1
-    d2 = ax * ax + ay * ay
-    d = xp.sqrt(d2)
-    along = (l1_new * l1_new - l2_new * l2_new + d2) / (2.0 * d)
-    across = xp.sqrt(xp.maximum(l1_new * l1_new - along * along, 0.0))
-    ux, uy = ax / d, ay / d
-    bx0, by0 = l1 * xp.cos(theta), l1 * xp.sin(theta)
-    side = xp.sign(ux * by0 - uy * bx0)  # which of the two intersections is B
-    bx = along * ux - side * across * uy
-    by = along * uy + side * across * ux
-    d_theta = xp.arctan2(by, bx) - theta
-    d_theta1 = xp.arctan2(xp.sin(d_theta), xp.cos(d_theta))  # wrapped to (−π, π]
-    torsion = m * act.arm_length / (act.shear_modulus * act.shaft_polar_moment)  # eq 17
-    bending = xp.arctan(
-        m * act.arm_length**2 / (3.0 * e * act.arm_second_moment * l1)
-    )  # eq 18–19, with I
-    return xp.abs(d_theta1) * xp.sign(m) + torsion + bending
-
-
-#: Smallest hinge moment [N·m] whose linkage rotation eq 14–16 resolve: below it the closure
-#: of the two circles loses its digits (at 1e-12 N·m K_rod came out 14× too small, found by the
-#: FMU fuzzing), and the secant at this moment is used; K_rod is linear in M to 1e-5.
-SMALLEST_MOMENT = 1.0e-3
+    return crank_slider(act).rotation(kin.crank_angle, kin.transmission_angle, kin.nut_position, m)
 
 
 def linkage_stiffness(act: Actuator, output_angle, load_torque):
@@ -722,13 +662,6 @@ def stiffness_breakdown(
     )
 
 
-#: Screw force [N] below which the support pair's secant F3/Δz is replaced by its tangent
-#: stiffness (the limit): Δz is solved to 1e-16 m, so a few-pN force has no digits left, and
-#: 5e-324 N·m of hinge moment divided by zero (found by the FMU fuzzing). At 1 N the secant
-#: and the tangent of a 200 N-preloaded pair agree to 1e-3.
-SMALLEST_SCREW_FORCE = 1.0
-
-
 def check_support_pair(pair) -> None:
     """ValueError unless :class:`~.pair.configuration.BearingPair` ``pair`` can support the screw:
     the screw pushes both ways, so its pair must be opposed (a tandem pair carries thrust one way).
@@ -827,14 +760,25 @@ def per_degree(stiffness):
 
 class ActuatorModel:
     """Scalar evaluation of an :class:`Actuator` for the per-step path of the FMU: the
-    equations of :func:`stiffness_breakdown` on Python floats (the shared cores
-    :func:`_crank_slider` and :func:`_rotation` with the math module), and the support-bearing
-    pair solved by :class:`bearing.BearingModel` (continuation from the previous step, exact
-    to 1e-9) instead of the exact nested solve."""
+    equations of :func:`stiffness_breakdown` on floats in one call
+    (:class:`~.stepping.ActuatorStepper`, compiled when the build could compile it:
+    :mod:`servofmu.physics.compiled`), and the support-bearing pair solved by
+    :class:`~.pair.model.BearingModel` (continuation from the previous step, exact to 1e-9)
+    instead of the exact nested solve.
 
-    def __init__(self, act: Actuator, support_pair=None):
+    Attributes
+    ----------
+    stepper : ActuatorStepper
+        The per-step update: ``stepper.evaluate(δ, M, T)`` on checked floats gives the
+        fields of :class:`StiffnessBreakdown` as a tuple; ``stepper.output_angle(φ)`` is
+        :func:`output_angle` on a float (C's ``libm`` where numpy has its own arccos and
+        arctan2: the same δ to a few units in the last place).
+    """
+
+    def __init__(self, act: Actuator, support_pair=None, implementation: str | None = None):
         """``support_pair``: a :class:`bearing.BearingPair` replacing the catalogue pair of
-        ``act.support_mounting`` (e.g. with another bearing or preload)."""
+        ``act.support_mounting`` (e.g. with another bearing or preload); ``implementation``:
+        "compiled", "python" or None (the one :mod:`.compiled` chose)."""
         self.act = act
         self._bearings = None
         if act.support_mounting:
@@ -842,25 +786,28 @@ class ActuatorModel:
 
             pair = support_pair or _support_pair(act.support_mounting)
             check_support_pair(pair)
-            self._bearings = BearingModel(pair)
-        self._y1 = float(act.slide_offset)
-        self._screw_ratio = 2.0 * math.pi * act.crank_length / act.screw_lead  # i_s (eq 1)
+            self._bearings = BearingModel(pair, implementation)
+        self.kernels = compiled.module("drives.stepping", implementation)
+        self.stepper = self.kernels.ActuatorStepper(
+            crank_slider(act, self.kernels),
+            float(act.neutral_crank_angle),
+            float(act.gear_ratio),
+            float(act.screw_lead),
+            float(act.gear_stiffness),
+            float(act.screw_stiffness),
+            float(act.housing_stiffness),
+            float(act.seat_stiffness),
+            None if self._bearings is None else self._bearings.update,
+            float(kinematics(act, 0.0).nut_position),
+            _motor_radians_per_metre(act),
+            _branch(act),
+            _motor_reach_text(act),
+        )
 
-    def _support(self, screw_force: float, temperature) -> float:
-        """:func:`support_axial_stiffness` on floats, the pair by continuation [N/m] at the
-        support pair's temperature [K]: uniform, or its parts' (a 4-tuple)."""
-        if self._bearings is None:
-            return math.inf
-        f3 = screw_force
-        out = self._bearings.update(temperature, f3)
-        secant = f3 >= SMALLEST_SCREW_FORCE and out.axial_displacement > 0
-        bearing = f3 / out.axial_displacement if secant else out.axial_stiffness
-        if not bearing > 0.0:  # an unloaded pair with axial play holds nothing at this force
-            raise ValueError(
-                f"support_bearing_stiffness = {bearing!r} N/m: the support pair has axial play "
-                f"at screw_force = {f3!r} N (preload lost); the actuator has no stiffness there"
-            )
-        return _series_floats(bearing, self.act.seat_stiffness)
+    @property
+    def implementation(self) -> str:
+        """ "compiled" or "python"."""
+        return "compiled" if compiled.is_compiled(self.kernels) else "python"
 
     def state(self) -> dict | None:
         """The support pair's continuation state (JSON-serialisable; None without one)."""
@@ -890,7 +837,6 @@ class ActuatorModel:
         """
         from ..pair.model import _temperatures
 
-        act = self.act
         delta = _finite_float("output_angle", output_angle, "rad")
         m = _finite_float("load_torque", load_torque, "N·m")
         if isinstance(temperature, tuple | PartTemperatures):
@@ -899,27 +845,7 @@ class ActuatorModel:
             t = _finite_float("temperature", temperature, "K")
             if not t > 0.0:
                 raise ValueError(f"temperature = {t!r} K is outside the valid range (0, inf) K")
-        l1 = act.crank_length
-        theta = act.neutral_crank_angle + delta
-        s = (l1 * math.sin(theta) - self._y1) / act.rod_length
-        if not abs(s) < 1.0:
-            raise _reach_error(act, delta)
-        _, beta, x, lever = _crank_slider(theta, l1, act.rod_length, self._y1, s, _Floats)
-        if abs(lever) < 1e-6 * l1:
-            raise _dead_centre_error(delta)
-        lever2 = lever * lever
-        gear = (2.0 * math.pi / act.screw_lead) ** 2 * lever2 * act.gear_stiffness
-        screw = lever2 * act.screw_stiffness
-        housing = lever2 * act.housing_stiffness
-        probe = m if abs(m) >= SMALLEST_MOMENT else math.copysign(SMALLEST_MOMENT, m)
-        linkage = probe / _rotation(act, theta, beta, x, self._y1, probe, _Floats)
-        f3 = abs(m) / abs(lever)
-        support = lever2 * self._support(f3, t)
-        total = _series_floats(gear, screw, linkage, housing, support)
-        ratio = act.gear_ratio * self._screw_ratio * (abs(lever) / l1)
-        return StiffnessBreakdown(
-            gear, screw, linkage, housing, support, total, m / total, ratio, f3
-        )
+        return StiffnessBreakdown(*self.stepper.evaluate(delta, m, t))
 
 
 def _finite_float(name: str, value, unit: str) -> float:
@@ -927,13 +853,3 @@ def _finite_float(name: str, value, unit: str) -> float:
     if not math.isfinite(v):
         raise ValueError(f"{name} = {v!r} {unit} is outside the valid range (-inf, inf)")
     return v
-
-
-def _series_floats(*stiffnesses: float) -> float:
-    """:func:`series_stiffness` on floats."""
-    compliance = 0.0
-    for i, k in enumerate(stiffnesses):
-        if not k > 0.0:
-            raise ValueError(f"stiffness[{i}] = {k!r} must be > 0")
-        compliance += 1.0 / k
-    return 1.0 / compliance

@@ -199,3 +199,159 @@ def arccos(x: cython.double) -> cython.double:
         return libm.acos(c)
     else:
         return math.acos(c) if type(c) is float else np.arccos(c)
+
+
+@cython.ccall
+def sin(x: cython.double) -> cython.double:
+    """sin x, elementwise (x [rad]).
+
+    Returns
+    -------
+    float or ndarray
+
+    Examples
+    --------
+    >>> sin(0.0)
+    0.0
+    """
+    if cython.compiled:
+        return libm.sin(x)
+    else:
+        return math.sin(x) if type(x) is float else np.sin(x)
+
+
+@cython.ccall
+def cos(x: cython.double) -> cython.double:
+    """cos x, elementwise (x [rad]).
+
+    Returns
+    -------
+    float or ndarray
+
+    Examples
+    --------
+    >>> cos(0.0)
+    1.0
+    """
+    if cython.compiled:
+        return libm.cos(x)
+    else:
+        return math.cos(x) if type(x) is float else np.cos(x)
+
+
+@cython.ccall
+def tan(x: cython.double) -> cython.double:
+    """tan x, elementwise (x [rad]).
+
+    Returns
+    -------
+    float or ndarray
+
+    Examples
+    --------
+    >>> tan(0.0)
+    0.0
+    """
+    if cython.compiled:
+        return libm.tan(x)
+    else:
+        return math.tan(x) if type(x) is float else np.tan(x)
+
+
+@cython.ccall
+def arcsin(x: cython.double) -> cython.double:
+    """arcsin x [rad], elementwise (|x| ≤ 1).
+
+    Returns
+    -------
+    float or ndarray
+        [rad].
+
+    Examples
+    --------
+    >>> arcsin(0.0)
+    0.0
+    """
+    if cython.compiled:
+        return libm.asin(x)
+    else:
+        return math.asin(x) if type(x) is float else np.arcsin(x)
+
+
+@cython.ccall
+def arctan(x: cython.double) -> cython.double:
+    """arctan x [rad], elementwise.
+
+    Returns
+    -------
+    float or ndarray
+        [rad].
+
+    Examples
+    --------
+    >>> arctan(0.0)
+    0.0
+    """
+    if cython.compiled:
+        return libm.atan(x)
+    else:
+        return math.atan(x) if type(x) is float else np.arctan(x)
+
+
+@cython.ccall
+def arctan2(y: cython.double, x: cython.double) -> cython.double:
+    """The angle of the point (x, y) [rad], in (−π, π], elementwise.
+
+    Returns
+    -------
+    float or ndarray
+        [rad].
+
+    Examples
+    --------
+    >>> round(arctan2(1.0, -1.0) * 4 / 3, 12)  # rad: 3π/4·4/3 = π
+    3.14159265359
+    """
+    if cython.compiled:
+        return libm.atan2(y, x)
+    else:
+        return math.atan2(y, x) if _both_floats(y, x) else np.arctan2(y, x)
+
+
+@cython.ccall
+def sign(x: cython.double) -> cython.double:
+    """−1, 0 or 1 by the sign of x, elementwise (0 at ±0).
+
+    Returns
+    -------
+    float or ndarray
+
+    Examples
+    --------
+    >>> sign(-2.0), sign(0.0)
+    (-1.0, 0.0)
+    """
+    if cython.compiled:
+        return (x > 0.0) - (x < 0.0)
+    else:
+        return float((x > 0.0) - (x < 0.0)) if type(x) is float else np.sign(x)
+
+
+@cython.ccall
+def hypot(x: cython.double, y: cython.double) -> cython.double:
+    """√(x² + y²) without overflow, elementwise (C's ``hypot``: Python's :func:`math.hypot`
+    rounds differently, so the Python path calls numpy's, which is C's).
+
+    Returns
+    -------
+    float or ndarray
+
+    Examples
+    --------
+    >>> hypot(3.0, 4.0)
+    5.0
+    """
+    if cython.compiled:
+        return libm.hypot(x, y)
+    else:
+        return float(np.hypot(x, y)) if _both_floats(x, y) else np.hypot(x, y)
