@@ -582,8 +582,8 @@ def ring_sums(th: Thermal, c: PairConstants, balls: list, ehl: object = None) ->
     """Weighted sums over one bearing's balls at their last evaluation: (hysteresis, spin,
     sliding, inner ring, outer ring torques [N·m], largest pressure [Pa], Σ w·Q [N],
     Σ w·Q·α [N·rad], Fa [N], redo), with the Hertz constants from the balls' bases. With
-    ``ehl`` five lists (``ehl_per_contact``), the terms of
-    :func:`.friction.ehl_per_contact.contact_rolling_terms` of every loaded contact (inner, then
+    ``ehl`` five lists (a friction model of the contacts' terms, :mod:`.friction.registry`),
+    the terms of the model's ``contact_rolling_terms`` of every loaded contact (inner, then
     outer, ball by ball; the scale times the ball's weight) are appended to them.
 
     The torques are those of :func:`friction.ball_torque_terms` (Yu 2017 eq 1–3, 5–7; Ning)
@@ -753,9 +753,10 @@ def ring_sums(th: Thermal, c: PairConstants, balls: list, ehl: object = None) ->
 
 def _ehl_terms(th: Thermal, c: PairConstants, ehl, q, q3, w, g, a_i, k_i, e_i, a_o, k_o, e_o,
                eta):  # fmt: skip
-    """Append the inner and outer contact's :func:`.friction.ehl_per_contact.contact_rolling_terms`
-    of one ball (load ``q`` [N], weight ``w``) to the five lists of ``ehl``."""
-    terms = c.python.contact_rolling_terms
+    """Append the inner and outer contact's terms of the friction model's
+    ``contact_rolling_terms`` (:mod:`.friction.registry`) of one ball (load ``q`` [N], weight
+    ``w``) to the five lists of ``ehl``."""
+    terms = c.model.contact_rolling_terms
     dw, dm = th.ball_diameter, th.pitch_diameter
     for a, k, e, inv_f, on_inner in (
         (a_i, k_i, e_i, th.inv_f_inner, True),
