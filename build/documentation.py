@@ -105,6 +105,7 @@ def _bearing_curve() -> Curve:
     celsius = np.arange(-60.0, 80.0 + 1e-9, 2.5)
     speed = math.radians(10.0)
     default, *others = registry.names()  # the FMU's enumeration items, numbered from 1
+    loaded = [e.name for e in registry.entries() if e.data]  # torques of the loads or contacts
     fmus = [_Slave("BearingFriction", speed=speed)]
     fmus += [
         _Slave("BearingFriction", {"friction_model": i}, speed=speed)
@@ -131,13 +132,13 @@ def _bearing_curve() -> Curve:
                 for k, name in enumerate(others)
             ),
         ),
-        "Default parameters (friction_model yu2017, no grease term) and the other friction "
+        f"Default parameters (friction_model {default}, no grease term) and the other friction "
         "models' running torque, no external load, shaft speed 10 °/s (logarithmic torque "
         "axis). The thermal coupling of frame, shaft and bearings changes fits and preload with "
         "temperature; the lubricant's viscosity adds the viscous part of the running torque. "
-        "skf2004 and ehl_per_contact see the bearings' loads: once the preload is lost they "
-        "fall below 0.01 N·mm (the axis' end), and SKF's replenishment factor cuts its rolling "
-        "torque as the base oil thickens. Outside the range of the lubricant's data "
+        f"{registry.listed(loaded, 'and')} see the bearings' loads: once the preload is lost "
+        "they fall below 0.01 N·mm (the axis' end), and SKF's replenishment factor cuts its "
+        "rolling torque as the base oil thickens. Outside the range of the lubricant's data "
         "(lubricant_data_minimum_temperature … lubricant_maximum_temperature; the default "
         "Krytox 143AA: −40…+60 °C, Yu's) the output outside_lubricant_range is set and the "
         "viscosity law is extrapolated (the default has no published flow limit, "

@@ -32,7 +32,7 @@ from servofmu.physics.friction.ehl_per_contact import (
     rolling_radii,
 )
 from servofmu.physics.friction.grease import GreaseTorqueTerm
-from servofmu.physics.friction.models import skf_loads
+from servofmu.physics.friction.skf2004 import skf_loads
 from servofmu.physics.kernels.units import RPM
 
 T_COLD, W = 233.15, math.radians(10.0)  # −40 °C, Yu's assumed 10 °/s

@@ -1,14 +1,13 @@
 """The friction-model registry (``servofmu.physics.friction.registry``): a new friction model
 is one module and one registry line (``docs/development.md``, "A new friction model"). A toy
 model, a constant viscous torque, added through it runs on the exact path and on every
-per-step path, and joins the parameter table's enumeration; the built-in models' names live
-in their own modules and the registry only."""
+per-step path, and joins the parameter table's enumeration (that the built-in models' names
+live in their own modules and the registry only: ``tests/project/test_friction_model_names.py``)."""
 
 from __future__ import annotations
 
 import sys
 import types
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -71,34 +70,3 @@ def test_an_unknown_model_is_named_with_the_choices():
 def test_a_name_is_registered_once():
     with pytest.raises(ValueError, match="registered already"):
         registry.register(registry.Entry("skf2004", ".skf2004", "again"))
-
-
-PHYSICS = Path(registry.__file__).resolve().parent.parent
-
-
-@pytest.mark.parametrize("name", registry.names())
-def test_a_model_name_is_in_its_module_and_the_registry_only(name):
-    # as a string in the code of physics/ (docstrings and comments aside): the solvers and
-    # the other models dispatch on the registry's entries, not on names
-    import ast
-
-    found = set()
-    for path in PHYSICS.rglob("*.py"):
-        tree = ast.parse(path.read_text(encoding="utf-8"))
-        docstrings = {
-            id(node.body[0].value)
-            for node in ast.walk(tree)
-            if isinstance(node, ast.Module | ast.ClassDef | ast.FunctionDef)
-            and node.body
-            and isinstance(node.body[0], ast.Expr)
-        }
-        for node in ast.walk(tree):
-            if (
-                isinstance(node, ast.Constant)
-                and isinstance(node.value, str)
-                and id(node) not in docstrings
-                and node.value == name
-            ):
-                found.add(path.relative_to(PHYSICS).as_posix())
-    own = registry.get(name).module.lstrip(".")
-    assert found <= {"friction/registry.py", f"friction/{own}.py"}, found

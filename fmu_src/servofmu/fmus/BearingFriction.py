@@ -11,18 +11,19 @@ loop geometry, the preload and the lubricant's ν40/ν100. The defaults are a ca
 filled in at build time: its mounting, bearing, lubricant and friction coefficients (the FMU's
 documentation names them under "Defaults of this build"; the standard build's is Yu 2017's
 seeker gimbal, a 71803 pair with Krytox 143AA in a cast-aluminium yoke on a 45-steel shaft,
-with the coefficients calibrated in ``servofmu paper yu2017``); the presets the FMU was built
-with are in ``resources/presets/`` as SSP parameter sets. An inconsistent set (a geometry that
-cannot be a bearing, ν100 ≥ ν40, a spring preload without a stiffness, …) is refused at
-fmi2ExitInitializationMode with fmi2Error and a logged error naming the values.
+with the coefficients calibrated in ``servofmu paper``'s reproduction of Yu 2017); the presets the
+FMU was built with are in ``resources/presets/`` as SSP parameter sets. An inconsistent set (a
+geometry that cannot be a bearing, ν100 ≥ ν40, a spring preload without a stiffness, …) is refused
+at fmi2ExitInitializationMode with fmi2Error and a logged error naming the values.
 
-``friction_model`` chooses the torque (:mod:`servofmu.physics.friction.models`):
+``friction_model`` chooses the torque (:mod:`servofmu.physics.friction.models`), one of the
+friction models of :mod:`servofmu.physics.friction.registry` (its enumeration items, numbered
+from 1 in this order):
 
-- ``yu2017`` (default): Yu's hysteresis and spin per contact and Palmgren's viscous term;
-- ``skf2004``: the SKF model per bearing with its own axial and radial load (``skf_*``: its
-  series constants and coefficients);
-- ``ehl_per_contact``: the hydrodynamic rolling torque of every ball–race contact (Biboulet &
-  Houpert 2010, with ``lubricant_density``) and Yu's hysteresis and spin.
+FRICTION_MODEL_ITEMS
+
+The SKF model's series constants and coefficients are the ``skf_*`` parameters, the lubricant's
+density of the per-contact EHL torque ``lubricant_density``.
 
 ``viscous_torque`` is the chosen model's rolling/viscous part; ``grease_torque`` the grease
 term (``grease_f0``, ``grease_starting_ratio``, ``grease_reference_speed``; 0 = off), which
@@ -115,8 +116,17 @@ from servofmu.parameters.bearing import PARAMETERS, pair_from_parameters, parame
 from servofmu.parameters.table import LATER_PARAMETERS  # noqa: E402
 from servofmu.physics import compiled as continuation  # noqa: E402
 from servofmu.physics.bearing import BearingModel  # noqa: E402
-from servofmu.physics.friction import prerolling  # noqa: E402
+from servofmu.physics.friction import prerolling, registry  # noqa: E402
 from servofmu.physics.pair.state import PointState  # noqa: E402
+
+if __doc__:  # the friction models' items, from the registry (absent under python -OO)
+    __doc__ = __doc__.replace(
+        "FRICTION_MODEL_ITEMS",
+        "\n".join(
+            f"- ``{e.name}``{' (default)' if i == 0 else ''}: {e.description}"
+            for i, e in enumerate(registry.entries())
+        ),
+    )
 
 _TEMPS = TEMPERATURE_INPUTS
 _ALL = (*_TEMPS, "speed", "axial_load", "radial_load")
@@ -228,7 +238,7 @@ class BearingFriction(ServoSlave):
     description = (
         "Friction torque of a preloaded pair of angular-contact ball bearings in a frame, with "
         "the thermal coupling of frame, shaft and bearings (Yu 2017; Ning); friction model "
-        "yu2017, skf2004 or ehl_per_contact, and a grease term for the cold"
+        f"{registry.listed()}, and a grease term for the cold"
     )
     FEEDTHROUGH = True
     DEFAULT_EXPERIMENT = (0.0, 1.0, 1.0e-3)
@@ -236,8 +246,7 @@ class BearingFriction(ServoSlave):
         "servofmu.physics.bearing",
         "servofmu.physics.friction.terms",
         "servofmu.physics.friction.models",
-        "servofmu.physics.friction.skf2004",
-        "servofmu.physics.friction.ehl_per_contact",
+        *(e.module_name for e in registry.entries()),
         "servofmu.physics.friction.grease",
         "servofmu.physics.thermal.fits",
         "servofmu.physics.pair.preload",
@@ -308,21 +317,23 @@ class BearingFriction(ServoSlave):
         ),
         _out(
             "hysteresis_torque",
-            "Elastic hysteresis torque (Yu eq 1-3; 0 under skf2004)",
+            "Elastic hysteresis torque (Yu eq 1-3; 0 under a friction model without contact terms)",
             "N.m",
             "N.mm",
             groups=(*_STATE, "hysteresis", "friction_model"),
         ),
         _out(
             "spin_torque",
-            "Ball spin torque (Yu eq 5-7; Ning inner-race spin; 0 under skf2004)",
+            "Ball spin torque (Yu eq 5-7; Ning inner-race spin; 0 under a friction model without "
+            "contact terms)",
             "N.m",
             "N.mm",
             groups=(*_STATE, "lubrication", "sliding", "friction_model"),
         ),
         _out(
             "sliding_torque",
-            "Sliding torque: differential (Heathcote) sliding (Ning); SKF's Msl under skf2004",
+            "Sliding torque: differential (Heathcote) sliding (Ning), or the friction model's own "
+            "(SKF's Msl)",
             "N.m",
             "N.mm",
             depends=_ALL,
@@ -330,8 +341,8 @@ class BearingFriction(ServoSlave):
         ),
         _out(
             "viscous_torque",
-            "Rolling/viscous torque of the friction model: Palmgren (yu2017, Yu eq 8), "
-            "φish·φrs·Mrr (skf2004) or the contacts' EHL rolling torque (ehl_per_contact)",
+            "Rolling/viscous torque of the friction model (friction_model): Palmgren's (Yu eq 8) "
+            "under the default",
             "N.m",
             "N.mm",
             depends=_ALL,

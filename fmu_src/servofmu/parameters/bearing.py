@@ -36,8 +36,7 @@ from collections.abc import Mapping
 
 from ..physics.contact.geometry import BallBearing, bearing_geometry_problems
 from ..physics.friction.grease import GreaseTorqueTerm
-from ..physics.friction.models import FrictionModel
-from ..physics.friction.skf2004 import SkfConstants
+from ..physics.friction.models import FrictionModel, model_numbers
 from ..physics.friction.terms import FrictionCoefficients
 from ..physics.kernels.units import CST
 from ..physics.lubrication.viscosity import T40, T100, viscosity_model
@@ -320,7 +319,8 @@ def _viscosity(p: Mapping[str, object]):
 
 def friction_from_parameters(p: Mapping[str, object]) -> FrictionModel:
     """The :class:`~.friction.models.FrictionModel` of the numbers ``friction_model``,
-    ``skf_*``, ``lubricant_density`` and ``grease_*`` of parameter set ``p`` (checked).
+    ``lubricant_density``, ``grease_*`` and the friction models' own (``skf_*``: their modules'
+    ``parameter_numbers``) of parameter set ``p`` (checked).
 
     Parameters
     ----------
@@ -333,15 +333,11 @@ def friction_from_parameters(p: Mapping[str, object]) -> FrictionModel:
 
     Examples
     --------
+    >>> from servofmu.physics.friction import registry
     >>> fm = friction_from_parameters(default_parameters())
-    >>> fm.model, fm.grease is None
-    ('yu2017', True)
+    >>> fm.model == registry.names()[0], fm.grease is None  # the default model
+    (True, True)
     """
-    skf = SkfConstants(
-        key="parameters",
-        bearing_type="angular_contact",
-        **{f: p[f"skf_{f}"] for f in ("r1", "r2", "r3", "s1", "s2", "s3", "kz")},
-    )
     grease = None
     if p["grease_f0"] > 0 or p["grease_starting_ratio"] > 0:
         grease = GreaseTorqueTerm(
@@ -351,12 +347,9 @@ def friction_from_parameters(p: Mapping[str, object]) -> FrictionModel:
         )
     return FrictionModel(
         model=p["friction_model"],
-        skf=skf,
-        skf_replenishment=p["skf_replenishment"],
-        skf_boundary_friction=p["skf_boundary_friction"],
-        skf_film_friction=p["skf_film_friction"],
         lubricant_density=p["lubricant_density"],
         grease=grease,
+        **model_numbers("parameter_numbers", p),
     )
 
 

@@ -55,8 +55,8 @@ def _material_values(prefix: str, mat: Material, poisson: bool = True) -> tuple[
 def bearing_values(b: BallBearing) -> tuple[dict, dict]:
     """(values, sources) of the bearing numbers of :data:`BEARING_FIELDS` for a
     :class:`BallBearing` (a catalogue bearing: a preset), and the SKF constants of its series
-    (:data:`SKF_SERIES_FIELDS`; :func:`.friction.skf2004.series_constants`, a labelled
-    fallback when the series is not in the table).
+    (:data:`SKF_SERIES_FIELDS`; the SKF model's ``series_constants``, a labelled fallback when
+    the series is not in the table).
 
     Returns
     -------
@@ -455,7 +455,8 @@ def _cached_preset(_generation: int, mounting: str, lubrication: str | None,
 
 @dataclass(frozen=True)
 class CoefficientSet:
-    """What a mounting's friction coefficients (α_r, μ, μ_s/μ, s0 of the ``yu2017`` model) are.
+    """What a mounting's friction coefficients (α_r, μ, μ_s/μ, s0 of the default friction
+    model) are.
 
     Attributes
     ----------
@@ -480,7 +481,8 @@ def coefficient_set(mounting: str) -> CoefficientSet:
     """The friction coefficients mounting ``mounting`` takes, said plainly: the Yu-calibrated
     set, a user's calibration (``servofmu calibrate``), a catalogue set of assumed values, or
     the library's uncalibrated defaults (a new bearing until it is calibrated). The other
-    friction models (``skf2004``, ``ehl_per_contact``) use literature constants besides.
+    friction models (:mod:`~servofmu.physics.friction.registry`) use literature constants
+    besides.
 
     Returns
     -------

@@ -604,11 +604,10 @@ def _friction_model_specs() -> tuple[ParameterSpec, ...]:
     in its order) and the SKF model's numbers."""
     models = registry.entries()
     first, *others = (m.name for m in models)
-    listed = " or ".join(filter(None, (", ".join(others[:-1]), *others[-1:])))
     return (
         _choice(
             "friction_model",
-            f"Friction model: {first} (default), {listed}",
+            f"Friction model: {first} (default), {registry.listed(others)}",
             "friction_model",
             "FrictionModel",
             tuple(Choice(m.name, m.name, m.description) for m in models),

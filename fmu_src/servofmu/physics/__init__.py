@@ -24,8 +24,11 @@ import importlib.abc
 import importlib.util
 import sys
 
+from .friction import registry as _friction_models
+
 #: The former modules of the package, by their former name under ``servofmu.physics``, and
-#: where each lives now: importing the former name gives that module itself.
+#: where each lives now: importing the former name gives that module itself (a friction
+#: model's former name is in its registry entry, :mod:`.friction.registry`).
 MOVED = {
     "units": "servofmu.physics.kernels.units",
     "_cython_shadow": "servofmu.physics.kernels._cython_shadow",
@@ -35,8 +38,6 @@ MOVED = {
     "viscosity": "servofmu.physics.lubrication.viscosity",
     "lubricant": "servofmu.physics.lubrication.lubricant",
     "friction_models": "servofmu.physics.friction.models",
-    "rolling_friction": "servofmu.physics.friction.skf2004",
-    "ehl_rolling": "servofmu.physics.friction.ehl_per_contact",
     "grease_torque": "servofmu.physics.friction.grease",
     "temperatures": "servofmu.physics.thermal.temperatures",
     "fits": "servofmu.physics.thermal.fits",
@@ -52,7 +53,7 @@ MOVED = {
     "parameter_table": "servofmu.parameters.table",
     "presets": "servofmu.parameters.presets",
     "bearing_parameters": "servofmu.parameters.bearing",
-}
+} | {e.former_name: e.module_name for e in _friction_models.entries() if e.former_name}
 
 
 class _Moved(importlib.abc.MetaPathFinder, importlib.abc.Loader):

@@ -86,10 +86,9 @@ def curvature_difference_of_ellipticity(k):
 
 def hertz_relation(k, k_integral, e_integral):
     """F(k) and dF/dk of the Hertz relation F = ((k² + 1)·E − 2·K)/((k² − 1)·E) for the
-    ellipticity k > 1 [-], given K = K(m) and E = E(m) at m = 1 − 1/k² [-] (Harris & Kotzalas
-    2007, ch. 6). dF/dk uses dK/dm = (E − (1 − m)·K)/(2m(1 − m)), dE/dm = (E − K)/(2m)
-    (Byrd & Friedman 1971, 710.00, 710.02) and dm/dk = 2/k³. Floats or arrays; the Newton
-    step of :func:`ellipticity` and of the per-step continuation (:mod:`.compiled`).
+    ellipticity k > 1 [-], given K = K(m) and E = E(m) at m = 1 − 1/k² [-]
+    (:func:`~servofmu.physics.kernels.contact.hertz_relation`, Harris & Kotzalas 2007, ch. 6).
+    Floats or arrays; the Newton step of :func:`ellipticity`.
 
     Parameters
     ----------
@@ -111,16 +110,8 @@ def hertz_relation(k, k_integral, e_integral):
     >>> round(float(f), 6), float(df) > 0  # F rises with k
     (0.923924, True)
     """
-    k2 = k * k
-    m = 1.0 - 1.0 / k2
-    dk_dm = (e_integral - (1.0 - m) * k_integral) / (2.0 * m * (1.0 - m))
-    de_dm = (e_integral - k_integral) / (2.0 * m)
-    dm_dk = 2.0 / (k2 * k)
-    num = (k2 + 1.0) * e_integral - 2.0 * k_integral
-    den = (k2 - 1.0) * e_integral
-    dnum = 2.0 * k * e_integral + ((k2 + 1.0) * de_dm - 2.0 * dk_dm) * dm_dk
-    dden = 2.0 * k * e_integral + (k2 - 1.0) * de_dm * dm_dk
-    return num / den, (dnum * den - num * dden) / (den * den)
+    f, df, _ = kernels.hertz_relation(k, k_integral, e_integral)
+    return f, df
 
 
 # The inverse k(F) has no closed form. F(k) above is explicit and monotonic: it is tabulated

@@ -1,6 +1,6 @@
 """Bearing friction: the terms of one contact and of a ball set (:mod:`.terms`), one module per
-friction model and effect (:mod:`.skf2004`, :mod:`.ehl_per_contact`, :mod:`.grease`) and the
-pair's friction model (:mod:`.models`).
+friction model (listed in :mod:`.registry`) and effect (:mod:`.grease`, :mod:`.prerolling`) and
+the pair's friction model (:mod:`.models`).
 
 The public names of :mod:`.terms` are importable from here as well: this package was the
 module ``servofmu.physics.friction``.

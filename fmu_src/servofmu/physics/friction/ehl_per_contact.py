@@ -47,6 +47,16 @@ Bălan et al. (2015, eq 1–7) print a simplified version of the same fit, with
 :math:`U = \eta_0 v/(E^* R_x)`, v the mean speed, and coefficients 2.9766 and 7.5826 that
 absorb Biboulet's factor 2 in U: with the same :math:`u_m`, the two agree within about 10 %,
 two parameterisations of one fit. This module follows the original.
+
+No thermal (inlet shear) or starvation reduction is applied to the EHL model: Biboulet &
+Houpert's fit is for a fully flooded, isothermal contact, and SKF's factors
+:math:`\phi_\mathrm{ish}` and :math:`\phi_\mathrm{rs}` are empirical for a bearing's total
+rolling moment, not for one contact. For scale, on the gimbal's 71803 at 10 °/s and −40 °C
+(Krytox 143AA, ν = 4.1e4 mm²/s) :math:`\phi_\mathrm{ish}` is 1 − 1.6e-4 (inlet heating is
+negligible at servo speeds), while SKF's replenishment factor for grease is 0.92 there and
+0.0019 at −60 °C (ν extrapolated to 2.9e6 mm²/s): a starved, slowly turning grease-packed
+contact would have less rolling torque than this model gives, by an amount no cited
+per-contact law gives.
 """
 
 from __future__ import annotations

@@ -1,37 +1,7 @@
-r"""The friction model of a bearing pair, one of three (BearingFriction's ``friction_model``),
-and a grease term that any of them can carry. This module composes equations written
-elsewhere; it writes none itself.
-
-- ``yu2017`` (the default; Yu 2017 eq 1–9): per contact the elastic hysteresis, the spin and,
-  for a dry film, the differential sliding (:mod:`.friction.terms`), and Palmgren's viscous torque
-  :math:`M_0 \propto s_0\,(\nu n)^{2/3} d_m^3` per bearing.
-- ``skf2004`` (SKF 2004, :mod:`.friction.skf2004`): each bearing of the pair with its own
-  axial load from the equilibrium (preload included) and its share :math:`F_r/2` of the
-  radial load,
-
-  .. math::
-
-     M = \phi_\mathrm{ish}\,\phi_\mathrm{rs}\,M_\mathrm{rr} + M_\mathrm{sl}
-
-  (:math:`M_\mathrm{seal} = 0`: open bearings; :math:`M_\mathrm{drag} = 0`: no oil bath),
-  starting torque :math:`M_\mathrm{sl}(n \to 0)`. The series constants are numbers (the
-  catalogue's series, or the labelled fallback of :func:`.friction.skf2004.series_constants`).
-  The per-contact terms of Yu are not part of it (hysteresis and spin are 0 in its outputs).
-- ``ehl_per_contact`` (:mod:`.friction.ehl_per_contact`): the hydrodynamic rolling torque of every
-  ball–race contact (Biboulet & Houpert 2010) from that contact's load, contact angle and Hertz
-  ellipse and the lubricant's dynamic viscosity :math:`\eta = \nu(T)\,\rho` at the part
-  temperatures, in place of Palmgren's term, plus Yu's hysteresis and spin (and Ning's sliding
-  for a dry film) per contact.
-
-No thermal (inlet shear) or starvation reduction is applied to the EHL model: Biboulet &
-Houpert's fit is for a fully flooded, isothermal contact, and SKF's factors
-:math:`\phi_\mathrm{ish}` and :math:`\phi_\mathrm{rs}` are empirical for a bearing's total
-rolling moment, not for one contact. For scale, on the gimbal's 71803 at 10 °/s and −40 °C
-(Krytox 143AA, ν = 4.1e4 mm²/s) :math:`\phi_\mathrm{ish}` is 1 − 1.6e-4 (inlet heating is
-negligible at servo speeds), while SKF's replenishment factor for grease is 0.92 there and
-0.0019 at −60 °C (ν extrapolated to 2.9e6 mm²/s): a starved, slowly turning grease-packed
-contact would have less rolling torque than this model gives, by an amount no cited
-per-contact law gives.
+r"""The friction model of a bearing pair, one of those of :mod:`.friction.registry`
+(BearingFriction's ``friction_model``; each model's equations are in its own module), and a
+grease term that any of them can carry. This module composes equations written elsewhere; it
+writes none itself.
 
 The grease term (:mod:`.friction.grease`, 0 = off) adds, per bearing, Palmgren's
 :math:`M_0` with a factor :math:`f_0` calibrated on a grease datasheet's low-temperature
@@ -53,22 +23,40 @@ import numpy as np
 from .._checks import check_choice, check_nonnegative, check_range
 from ..kernels.friction import palmgren_torque
 from . import registry
-from .ehl_per_contact import ehl_torque as ehl_torque
 from .grease import GreaseTorqueTerm
-from .skf2004 import MU_BOUNDARY, MU_EHL, REPLENISHMENT_KRS, SkfConstants
-from .skf2004 import skf_loads as skf_loads
-from .skf2004 import skf_starting as skf_starting
-from .skf2004 import skf_torques as skf_torques
+
+
+def model_numbers(hook: str, *args) -> dict:
+    """The friction models' numbers of one kind, merged in the registry's order: each model
+    module's ``hook`` (:mod:`.friction.registry`), a dict or a function of ``args`` giving one.
+
+    Returns
+    -------
+    dict
+        {field of :class:`FrictionModel`: value, or (value, source)}.
+
+    Examples
+    --------
+    >>> sorted(model_numbers("NUMBERS"))
+    ['skf_boundary_friction', 'skf_replenishment']
+    """
+    numbers = {}
+    for entry in registry.entries():
+        found = getattr(entry.implementation(), hook, None)
+        if found is not None:
+            numbers |= found(*args) if callable(found) else found
+    return numbers
+
 
 #: The built-in friction models (:mod:`.friction.registry`; the first is the default).
 FRICTION_MODELS = registry.names()
 #: Density assumed for a lubricant without a recorded one [kg/m³] (a hydrocarbon oil).
 ASSUMED_DENSITY = 870.0
+#: The models' numbers that depend on neither bearing nor lubricant, and those of an unknown
+#: lubricant: {field: (default, source)} (the modules' ``NUMBERS`` and ``lubricant_numbers``).
+DEFAULT_NUMBERS = model_numbers("NUMBERS") | model_numbers("lubricant_numbers", None)
 #: Provenance of the SKF coefficients that do not depend on bearing or lubricant.
-SKF_SOURCES = {
-    "skf_replenishment": "catalogue: SKF 10000 EN, Krs = 6e-8 for grease and oil-air",
-    "skf_boundary_friction": "catalogue: SKF 10000 EN p. 103, μbl 'generally ≈ 0,15'",
-}
+SKF_SOURCES = {field: source for field, (_, source) in model_numbers("NUMBERS").items()}
 
 
 @dataclass(frozen=True)
@@ -78,21 +66,21 @@ class FrictionModel:
     Attributes
     ----------
     model : one of :data:`FRICTION_MODELS`
-    skf : the SKF series constants (:func:`.friction.skf2004.series_constants`); needed by
-        ``skf2004``
+    skf : the SKF series constants (the SKF model's ``SkfConstants``, its ``bearing_numbers``);
+        needed by the SKF model
     skf_replenishment : Krs of φrs [-] (6e-8 grease or oil-air, 3e-8 oil bath or jet)
     skf_boundary_friction : μbl [-] (SKF: ≈ 0.15)
     skf_film_friction : μEHL [-] (SKF: mineral oil 0.05, synthetic 0.04)
-    lubricant_density : ρ [kg/m³] of the (base) oil, η = ν·ρ (``ehl_per_contact``)
+    lubricant_density : ρ [kg/m³] of the (base) oil, η = ν·ρ (the per-contact EHL model)
     grease : the calibrated grease term, or None (off)
     provenance : ((field, source), ...)
     """
 
     model: str = FRICTION_MODELS[0]
-    skf: SkfConstants | None = None
-    skf_replenishment: float = REPLENISHMENT_KRS["grease"]
-    skf_boundary_friction: float = MU_BOUNDARY
-    skf_film_friction: float = MU_EHL["mineral"]
+    skf: object | None = None
+    skf_replenishment: float = DEFAULT_NUMBERS["skf_replenishment"][0]
+    skf_boundary_friction: float = DEFAULT_NUMBERS["skf_boundary_friction"][0]
+    skf_film_friction: float = DEFAULT_NUMBERS["skf_film_friction"][0]
     lubricant_density: float = ASSUMED_DENSITY
     grease: GreaseTorqueTerm | None = None
     provenance: tuple[tuple[str, str], ...] = ()
@@ -163,7 +151,7 @@ def grease_running(pair, kinematic_viscosity, speed):
     Examples
     --------
     >>> from servofmu.physics.bearing import BearingPair
-    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
     >>> grease_running(pair, 100e-6, 1.0)  # N·m: no grease term in this pair
     0.0
     """
@@ -193,7 +181,7 @@ def grease_rest_and_start(pair, kinematic_viscosity):
     Examples
     --------
     >>> from servofmu.physics.bearing import BearingPair
-    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa", friction_model="skf2004")
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
     >>> grease_rest_and_start(pair, 100e-6)  # N·m: no grease term
     (0.0, 0.0)
     """
@@ -208,10 +196,11 @@ def grease_rest_and_start(pair, kinematic_viscosity):
 
 
 def preset(bearing, lubricant=None, model: str = FRICTION_MODELS[0], grease=None) -> FrictionModel:
-    """The :class:`FrictionModel` of catalogue data, each number with its provenance: the SKF
-    constants of the bearing's series (or the labelled fallback,
-    :func:`.friction.skf2004.series_constants`), Krs for grease, the catalogue's μbl, μEHL of
-    the base oil's class, and the lubricant's recorded density (else assumed).
+    """The :class:`FrictionModel` of catalogue data, each number with its provenance: the
+    models' numbers of the bearing and of the lubricant (their modules' ``bearing_numbers``
+    and ``lubricant_numbers``: the SKF constants of the bearing's series or their labelled
+    fallback, Krs for grease, the catalogue's μbl, μEHL of the base oil's class), and the
+    lubricant's recorded density (else assumed).
 
     Parameters
     ----------
@@ -229,30 +218,48 @@ def preset(bearing, lubricant=None, model: str = FRICTION_MODELS[0], grease=None
     >>> fm.skf.r1, fm.skf_film_friction, fm.lubricant_density
     (5.03e-07, 0.04, 1900.0)
     """
-    from .skf2004 import series_constants
-
-    skf = series_constants(bearing.key, float(bearing.nominal_contact_angle))
-    (film, film_src), (density, density_src) = lubricant_numbers(lubricant)
+    numbers = (
+        model_numbers("NUMBERS")
+        | model_numbers("bearing_numbers", bearing)
+        | model_numbers("lubricant_numbers", lubricant)
+    )
+    density, density_src = lubricant_density(lubricant)
     return FrictionModel(
         model=model,
-        skf=skf,
-        skf_replenishment=REPLENISHMENT_KRS["grease"],
-        skf_boundary_friction=MU_BOUNDARY,
-        skf_film_friction=film,
         lubricant_density=float(density),
         grease=grease,
         provenance=(
-            *SKF_SOURCES.items(),
-            ("skf_film_friction", film_src),
+            *((f, src) for f, (_, src) in numbers.items() if src),
             ("lubricant_density", density_src),
         ),
+        **{f: value for f, (value, _) in numbers.items()},
     )
+
+
+def lubricant_density(lubricant) -> tuple[float, str]:
+    """(density [kg/m³], source) of a lubricant record (or None): its recorded density, else
+    :data:`ASSUMED_DENSITY`, labelled assumed.
+
+    Returns
+    -------
+    tuple
+        (density [kg/m³], source).
+
+    >>> from servofmu.parameters import catalog
+    >>> rho, src = lubricant_density(catalog.lubricant_record("xc_5606j"))
+    >>> rho, src[:7]
+    (870.1, 'derived')
+    """
+    density = getattr(lubricant, "density", None)
+    if density is None:
+        return ASSUMED_DENSITY, "assumed: a hydrocarbon oil (no density recorded)"
+    return float(density), f"{lubricant.source('density')} ({lubricant.key})"
 
 
 def lubricant_numbers(lubricant) -> tuple[tuple[float, str], tuple[float, str]]:
     """((μEHL, source), (density [kg/m³], source)) of a lubricant record (or None): SKF's μEHL
-    of its base oil's ``oil_class`` (mineral when unknown, labelled assumed) and its recorded
-    density (else :data:`ASSUMED_DENSITY`, labelled assumed).
+    of its base oil's ``oil_class`` (mineral when unknown, labelled assumed; the models'
+    ``lubricant_numbers``) and :func:`lubricant_density`.
 
     Returns
     -------
@@ -264,19 +271,5 @@ def lubricant_numbers(lubricant) -> tuple[tuple[float, str], tuple[float, str]]:
     >>> mu, rho, src[:7]
     (0.05, 870.1, 'derived')
     """
-    oil_class = getattr(lubricant, "oil_class", "") or ""
-    if oil_class:
-        film = (
-            MU_EHL[oil_class],
-            f"catalogue: SKF 10000 EN p. 103, μEHL of {oil_class} oils (lubricant "
-            f"{lubricant.key}: {oil_class} base oil)",
-        )
-    else:
-        film = (
-            MU_EHL["mineral"],
-            "catalogue: SKF 10000 EN p. 103, μEHL of mineral oils (assumed: oil class unknown)",
-        )
-    density = getattr(lubricant, "density", None)
-    if density is None:
-        return film, (ASSUMED_DENSITY, "assumed: a hydrocarbon oil (no density recorded)")
-    return film, (float(density), f"{lubricant.source('density')} ({lubricant.key})")
+    film = model_numbers("lubricant_numbers", lubricant)["skf_film_friction"]
+    return film, lubricant_density(lubricant)

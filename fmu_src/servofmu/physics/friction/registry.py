@@ -11,8 +11,19 @@ A model is its module (``servofmu.physics.friction.<name>`` for the built-in one
   (``rolling``, :attr:`Entry.data`); a sliding torque replaces the contacts' own;
 - and, when :attr:`Entry.contact_terms` is False, ``starting_torque(pair, rolling)`` [N·m]:
   its torque at rest, in place of the contacts' Coulomb torque;
+- with :attr:`Entry.data` "loads", ``rolling_loads(force_a, force_b, radial_load)``: its
+  ``rolling`` from the bearings' axial forces and the external radial load [N];
+- with :attr:`Entry.data` "contacts", ``contact_rolling_terms(load, semi_major_axis,
+  ellipticity, e_integral, gamma, ball_diameter, pitch_diameter, inverse_conformity,
+  compliance, dynamic_viscosity, inner)``: one loaded contact's five terms (floats or
+  arrays), which the solvers gather for every loaded contact (the first times the ball's
+  weight) into its ``rolling``;
 - optionally ``check_numbers(friction)``: raise ValueError when the pair's
-  :class:`~.models.FrictionModel` lacks a number the model needs.
+  :class:`~.models.FrictionModel` lacks a number the model needs;
+- optionally its numbers in a :class:`~.models.FrictionModel` and their sources: ``NUMBERS``
+  ({field: (default, source)}), ``bearing_numbers(bearing)`` and
+  ``lubricant_numbers(lubricant)`` ({field: (value, source)} of catalogue records) and
+  ``parameter_numbers(p)`` ({field: value} of a parameter set).
 
 ``docs/development.md`` ("A new friction model") gives the recipe.
 
@@ -27,11 +38,12 @@ Examples
 from __future__ import annotations
 
 import importlib
+import importlib.util
 from dataclasses import dataclass
 
-#: What the per-step solver can gather for a model's speed terms besides ν and dm: nothing,
-#: the bearings' axial and radial loads (Fa,A, Fa,B, Fr) [N] (:func:`.skf2004.skf_loads`), or
-#: the terms of every loaded contact (:func:`.ehl_per_contact.contact_rolling_terms`).
+#: What the solvers can gather for a model's speed terms besides ν and dm: nothing, the
+#: bearings' axial and radial loads (Fa,A, Fa,B, Fr) [N] (the module's ``rolling_loads``), or
+#: the terms of every loaded contact (the module's ``contact_rolling_terms``).
 DATA = ("", "loads", "contacts")
 
 
@@ -48,6 +60,8 @@ class Entry:
     contact_terms : whether Yu's hysteresis and spin (and Ning's sliding) per contact count
     palmgren : whether its viscous torque is Palmgren's (Yu 2017 eq 8) with the pair's s0,
         running and at rest (the compiled per-step path computes it in C)
+    former_name : a name its module was importable by under :mod:`servofmu.physics`, and is
+        still (:data:`servofmu.physics.MOVED`), or ""
     """
 
     name: str
@@ -56,14 +70,20 @@ class Entry:
     data: str = ""
     contact_terms: bool = True
     palmgren: bool = False
+    former_name: str = ""
 
     def __post_init__(self):
         if self.data not in DATA:
             raise ValueError(f"data = {self.data!r} of friction model {self.name!r}: one of {DATA}")
 
+    @property
+    def module_name(self) -> str:
+        """The absolute name of the model's module."""
+        return importlib.util.resolve_name(self.module, __package__)
+
     def implementation(self):
         """The model's module (imported when first asked for)."""
-        return importlib.import_module(self.module, __package__)
+        return importlib.import_module(self.module_name)
 
 
 _MODELS: dict[str, Entry] = {}
@@ -123,6 +143,22 @@ def names() -> tuple[str, ...]:
     return tuple(_MODELS)
 
 
+def listed(models: tuple[str, ...] | None = None, conjunction: str = "or") -> str:
+    """``models`` (default: every model's name) as a phrase: "a, b or c" (or ``conjunction``).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> listed(("a", "b", "c")), listed(("a", "b"), "and"), listed(("a",))
+    ('a, b or c', 'a and b', 'a')
+    """
+    models = names() if models is None else tuple(models)
+    return f" {conjunction} ".join(filter(None, (", ".join(models[:-1]), *models[-1:])))
+
+
 def entries() -> tuple[Entry, ...]:
     """The models, in order.
 
@@ -177,6 +213,7 @@ register(
         "(open, no oil bath)",
         data="loads",
         contact_terms=False,
+        former_name="rolling_friction",
     )
 )
 register(
@@ -186,5 +223,6 @@ register(
         "Biboulet & Houpert 2010 hydrodynamic rolling torque of every ball-race contact + Yu's "
         "hysteresis and spin per contact",
         data="contacts",
+        former_name="ehl_rolling",
     )
 )

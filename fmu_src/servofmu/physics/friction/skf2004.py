@@ -843,6 +843,11 @@ def skf_loads(force_a, force_b, radial_load):
     return np.maximum(force_a, 0.0), np.maximum(force_b, 0.0), 0.5 * abs(radial_load)
 
 
+#: The friction model's gathering of its data (:mod:`.friction.registry`, data "loads"): the
+#: bearings' loads (Fa,A, Fa,B, Fr) [N] of :func:`skf_loads`.
+rolling_loads = skf_loads
+
+
 def skf_torques(pair, loads, kinematic_viscosity, speed):
     """(φish·φrs·ΣMrr, ΣMsl) [N·m] of the pair (:func:`.friction.skf2004.pair_moments`
     without its checks) at the loads of :func:`skf_loads`, viscosity ν [m²/s] and speed ω
@@ -981,3 +986,97 @@ def check_numbers(friction) -> None:
         raise ValueError(
             f"friction_model = {friction.model!r} needs the SKF series constants (skf)"
         )
+
+
+# ------------------------------------------------------------------ the pair's numbers
+
+#: This model's numbers in a pair's :class:`~.friction.models.FrictionModel` that depend on
+#: neither bearing nor lubricant, as {field: (default, source)}.
+NUMBERS = {
+    "skf_replenishment": (
+        REPLENISHMENT_KRS["grease"],
+        "catalogue: SKF 10000 EN, Krs = 6e-8 for grease and oil-air",
+    ),
+    "skf_boundary_friction": (
+        MU_BOUNDARY,
+        "catalogue: SKF 10000 EN p. 103, μbl 'generally ≈ 0,15'",
+    ),
+}
+
+
+def bearing_numbers(bearing) -> dict:
+    """{field: (value, source)} of this model's numbers for a catalogue bearing: the SKF
+    constants of its series (:func:`series_constants`, their sources inside them).
+
+    Parameters
+    ----------
+    bearing : :class:`~.contact.geometry.BallBearing` (its ``key`` is the designation)
+
+    Returns
+    -------
+    dict
+        ``{"skf": (SkfConstants, "")}``.
+
+    Examples
+    --------
+    >>> from servofmu.parameters import catalog
+    >>> bearing_numbers(catalog.bearing("71803"))["skf"][0].r1
+    5.03e-07
+    """
+    return {"skf": (series_constants(bearing.key, float(bearing.nominal_contact_angle)), "")}
+
+
+def lubricant_numbers(lubricant) -> dict:
+    """{field: (value, source)} of this model's numbers for a lubricant record (or None): SKF's
+    μEHL of its base oil's ``oil_class`` (mineral when unknown, labelled assumed).
+
+    Returns
+    -------
+    dict
+        ``{"skf_film_friction": (μEHL [-], source)}``.
+
+    Examples
+    --------
+    >>> lubricant_numbers(None)["skf_film_friction"][0]
+    0.05
+    """
+    oil_class = getattr(lubricant, "oil_class", "") or ""
+    if oil_class:
+        return {
+            "skf_film_friction": (
+                MU_EHL[oil_class],
+                f"catalogue: SKF 10000 EN p. 103, μEHL of {oil_class} oils (lubricant "
+                f"{lubricant.key}: {oil_class} base oil)",
+            )
+        }
+    return {
+        "skf_film_friction": (
+            MU_EHL["mineral"],
+            "catalogue: SKF 10000 EN p. 103, μEHL of mineral oils (assumed: oil class unknown)",
+        )
+    }
+
+
+def parameter_numbers(p) -> dict:
+    """{field: value} of this model's numbers in a full, checked parameter set ``p`` (the
+    parameter table's ``skf_*``; a bearing given by numbers is an angular-contact one).
+
+    Returns
+    -------
+    dict
+        ``skf`` (:class:`SkfConstants`), ``skf_replenishment``, ``skf_boundary_friction``,
+        ``skf_film_friction``.
+
+    Examples
+    --------
+    >>> from servofmu.parameters.presets import default_parameters
+    >>> parameter_numbers(default_parameters())["skf"].key
+    'parameters'
+    """
+    skf = SkfConstants(
+        key="parameters",
+        bearing_type="angular_contact",
+        **{f: p[f"skf_{f}"] for f in ("r1", "r2", "r3", "s1", "s2", "s3", "kz")},
+    )
+    numbers = ("skf_replenishment", "skf_boundary_friction", "skf_film_friction")
+    return {"skf": skf} | {f: p[f] for f in numbers}

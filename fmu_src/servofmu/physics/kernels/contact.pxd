@@ -4,6 +4,9 @@ cpdef double curvature_distance(double inner_radius, double outer_radius, double
 cpdef double pitch_diameter(double inner_groove, double outer_groove)
 cpdef double first_contact_offset(double clearance, double curvature_distance)
 cpdef double free_contact_angle(double clearance, double curvature_distance)
+cpdef (double, double, double, double) elliptic_slopes(double m, double k_integral,
+                                                      double e_integral)
+cpdef (double, double, double) hertz_relation(double k, double k_integral, double e_integral)
 cpdef (double, double) race_curvature(double gamma, double inverse_conformity, bint inner)
 cpdef (double, double, double) hertz_coefficients(double curvature_sum, double ellipticity,
                                                   double k_integral, double e_integral,

@@ -148,6 +148,86 @@ def free_contact_angle(
 
 # ---------------------------------------------------------------- one contact
 @cython.ccall
+def elliptic_slopes(
+    m: cython.double, k_integral: cython.double, e_integral: cython.double
+) -> tuple[cython.double, cython.double, cython.double, cython.double]:
+    """First and second derivatives in m of the complete elliptic integrals K(m), E(m) [-] at
+    the parameter 0 < m < 1 [-], from dK/dm = (E − (1 − m)·K)/(2m(1 − m)) and
+    dE/dm = (E − K)/(2m) (Byrd & Friedman 1971, 710.00, 710.02) and their derivatives. Floats
+    or arrays.
+
+    Returns
+    -------
+    tuple
+        (dK/dm, d²K/dm², dE/dm, d²E/dm²) [-].
+
+    Examples
+    --------
+    At m = 1/2 (K = 1.854075, E = 1.350644; Abramowitz & Stegun 1964, table 17.1):
+
+    >>> k1, k2, e1, e2 = elliptic_slopes(0.5, 1.8540746773013719, 1.3506438810476755)
+    >>> round(k1, 6), round(e1, 6)  # (E − K/2)/(1/2), (E − K)/1
+    (0.847213, -0.503431)
+    """
+    q: cython.double = 1.0 - m
+    k1: cython.double = (e_integral - q * k_integral) / (2.0 * m * q)
+    e1: cython.double = (e_integral - k_integral) / (2.0 * m)
+    # (E − qK)' = E' + K − qK';  (2mq)' = 2(1 − 2m)
+    k2: cython.double = (
+        (e1 + k_integral - q * k1) * 2.0 * m * q
+        - (e_integral - q * k_integral) * 2.0 * (1.0 - 2.0 * m)
+    ) / ((2.0 * m * q) ** 2)
+    e2: cython.double = (e1 - k1) / (2.0 * m) - (e_integral - k_integral) / (2.0 * m * m)
+    return k1, k2, e1, e2
+
+
+@cython.ccall
+def hertz_relation(
+    k: cython.double, k_integral: cython.double, e_integral: cython.double
+) -> tuple[cython.double, cython.double, cython.double]:
+    """The Hertz relation F(k) = ((k² + 1)·E − 2·K)/((k² − 1)·E) between the curvature
+    difference F [-] and the ellipticity k > 1 [-] of a point contact (Harris & Kotzalas
+    2007, ch. 6), and its first and second derivatives in k, given K = K(m) and E = E(m) at
+    m = 1 − 1/k² [-] (dm/dk = 2/k³; :func:`elliptic_slopes`). Floats or arrays.
+
+    Returns
+    -------
+    tuple
+        (F [-], dF/dk [-], d²F/dk² [-]).
+
+    Examples
+    --------
+    >>> from scipy.special import ellipe, ellipk
+    >>> k = 8.0
+    >>> f, df, _ = hertz_relation(k, ellipk(1 - 1 / k**2), ellipe(1 - 1 / k**2))
+    >>> round(float(f), 6), float(df) > 0  # F rises with k
+    (0.923924, True)
+    """
+    m: cython.double = 1.0 - 1.0 / (k * k)
+    k1: cython.double
+    k2: cython.double
+    e1: cython.double
+    e2: cython.double
+    k1, k2, e1, e2 = elliptic_slopes(m, k_integral, e_integral)
+    # F = N/D, N = (k² + 1)E − 2K, D = (k² − 1)E, as functions of k through m = 1 − 1/k²
+    mk: cython.double = 2.0 / (k * k * k)
+    mkk: cython.double = -6.0 / (k * k * k * k)
+    ek: cython.double = e1 * mk
+    ekk: cython.double = e2 * mk * mk + e1 * mkk
+    kk_: cython.double = k1 * mk
+    kkk: cython.double = k2 * mk * mk + k1 * mkk
+    kq: cython.double = k * k
+    n: cython.double = (kq + 1.0) * e_integral - 2.0 * k_integral
+    d: cython.double = (kq - 1.0) * e_integral
+    nk: cython.double = 2.0 * k * e_integral + (kq + 1.0) * ek - 2.0 * kk_
+    dk: cython.double = 2.0 * k * e_integral + (kq - 1.0) * ek
+    nkk: cython.double = 2.0 * e_integral + 4.0 * k * ek + (kq + 1.0) * ekk - 2.0 * kkk
+    dkk: cython.double = 2.0 * e_integral + 4.0 * k * ek + (kq - 1.0) * ekk
+    f1: cython.double = (nk * d - n * dk) / (d * d)
+    return n / d, f1, (nkk * d - n * dkk) / (d * d) - 2.0 * dk * f1 / d
+
+
+@cython.ccall
 def race_curvature(
     gamma: cython.double, inverse_conformity: cython.double, inner: cython.bint
 ) -> tuple[cython.double, cython.double]:

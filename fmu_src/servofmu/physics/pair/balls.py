@@ -24,9 +24,11 @@ if cython.compiled:
     from cython.cimports.servofmu.physics.kernels._contact import (
         ball_contact,
         ball_stiffness,
+        elliptic_slopes,
         hertz_coefficients,
         hertz_load,
         hertz_pressure,
+        hertz_relation,
         race_curvature,
         series_stiffness,
     )
@@ -41,9 +43,11 @@ else:
     from ..kernels.contact import (
         ball_contact,
         ball_stiffness,
+        elliptic_slopes,
         hertz_coefficients,
         hertz_load,
         hertz_pressure,
+        hertz_relation,
         race_curvature,
         series_stiffness,
     )
@@ -142,38 +146,23 @@ class Anchor:
     def set(self, k: cython.double):
         """Anchor at ellipticity ``k`` > 1: K(m), E(m) by scipy.special, derivatives from
         dK/dm = (E − (1 − m)·K)/(2m(1 − m)), dE/dm = (E − K)/(2m) (Byrd & Friedman 1971,
-        710.00, 710.02) and their derivatives, F(k) of :func:`hertz.hertz_relation`."""
+        710.00, 710.02) and their derivatives (:func:`~.kernels.contact.elliptic_slopes`), F(k)
+        and its derivatives (:func:`~.kernels.contact.hertz_relation`)."""
         m: cython.double = 1.0 - 1.0 / (k * k)
         ki: cython.double = float(ellipk(m))
         ei: cython.double = float(ellipe(m))
-        q: cython.double = 1.0 - m
-        k1: cython.double = (ei - q * ki) / (2.0 * m * q)
-        e1: cython.double = (ei - ki) / (2.0 * m)
-        # (E − qK)' = E' + K − qK';  (2mq)' = 2(1 − 2m)
-        k2: cython.double = (
-            (e1 + ki - q * k1) * 2.0 * m * q - (ei - q * ki) * 2.0 * (1.0 - 2.0 * m)
-        ) / ((2.0 * m * q) ** 2)
-        e2: cython.double = (e1 - k1) / (2.0 * m) - (ei - ki) / (2.0 * m * m)
-        # F = N/D, N = (k² + 1)E − 2K, D = (k² − 1)E, as functions of k through m = 1 − 1/k²
-        mk: cython.double = 2.0 / (k * k * k)
-        mkk: cython.double = -6.0 / (k * k * k * k)
-        ek: cython.double = e1 * mk
-        ekk: cython.double = e2 * mk * mk + e1 * mkk
-        kk_: cython.double = k1 * mk
-        kkk: cython.double = k2 * mk * mk + k1 * mkk
-        kq: cython.double = k * k
-        n: cython.double = (kq + 1.0) * ei - 2.0 * ki
-        d: cython.double = (kq - 1.0) * ei
-        nk: cython.double = 2.0 * k * ei + (kq + 1.0) * ek - 2.0 * kk_
-        dk: cython.double = 2.0 * k * ei + (kq - 1.0) * ek
-        nkk: cython.double = 2.0 * ei + 4.0 * k * ek + (kq + 1.0) * ekk - 2.0 * kkk
-        dkk: cython.double = 2.0 * ei + 4.0 * k * ek + (kq - 1.0) * ekk
-        f1: cython.double = (nk * d - n * dk) / (d * d)
+        k1: cython.double
+        k2: cython.double
+        e1: cython.double
+        e2: cython.double
+        f: cython.double
+        f1: cython.double
+        f2: cython.double
+        k1, k2, e1, e2 = elliptic_slopes(m, ki, ei)
+        f, f1, f2 = hertz_relation(k, ki, ei)
         self.k, self.m, self.k_int, self.e_int = k, m, ki, ei
-        self.f = n / d
-        self.f1 = f1
-        self.f2 = (nkk * d - n * dkk) / (d * d) - 2.0 * dk * f1 / d
-        self.inv_f1, self.f2_f1 = 1.0 / f1, self.f2 / f1
+        self.f, self.f1, self.f2 = f, f1, f2
+        self.inv_f1, self.f2_f1 = 1.0 / f1, f2 / f1
         self.k1, self.k2, self.e1, self.e2 = k1, k2, e1, e2
 
 
@@ -582,8 +571,8 @@ def ring_sums(th: Thermal, c: PairConstants, balls: list, ehl: object = None) ->
     """Weighted sums over one bearing's balls at their last evaluation: (hysteresis, spin,
     sliding, inner ring, outer ring torques [N·m], largest pressure [Pa], Σ w·Q [N],
     Σ w·Q·α [N·rad], Fa [N], redo), with the Hertz constants from the balls' bases. With
-    ``ehl`` five lists (``ehl_per_contact``), the terms of
-    :func:`.friction.ehl_per_contact.contact_rolling_terms` of every loaded contact (inner, then
+    ``ehl`` five lists (a friction model of the contacts' terms, :mod:`.friction.registry`),
+    the terms of the model's ``contact_rolling_terms`` of every loaded contact (inner, then
     outer, ball by ball; the scale times the ball's weight) are appended to them.
 
     The torques are those of :func:`friction.ball_torque_terms` (Yu 2017 eq 1–3, 5–7; Ning)
@@ -753,9 +742,10 @@ def ring_sums(th: Thermal, c: PairConstants, balls: list, ehl: object = None) ->
 
 def _ehl_terms(th: Thermal, c: PairConstants, ehl, q, q3, w, g, a_i, k_i, e_i, a_o, k_o, e_o,
                eta):  # fmt: skip
-    """Append the inner and outer contact's :func:`.friction.ehl_per_contact.contact_rolling_terms`
-    of one ball (load ``q`` [N], weight ``w``) to the five lists of ``ehl``."""
-    terms = c.python.contact_rolling_terms
+    """Append the inner and outer contact's terms of the friction model's
+    ``contact_rolling_terms`` (:mod:`.friction.registry`) of one ball (load ``q`` [N], weight
+    ``w``) to the five lists of ``ehl``."""
+    terms = c.model.contact_rolling_terms
     dw, dm = th.ball_diameter, th.pitch_diameter
     for a, k, e, inv_f, on_inner in (
         (a_i, k_i, e_i, th.inv_f_inner, True),

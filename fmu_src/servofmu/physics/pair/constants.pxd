@@ -65,6 +65,7 @@ cdef class PairConstants:
     cdef public double w_reg
     cdef public double w_stribeck
     cdef public object python
+    cdef public object model
 
 
 @cython.final

@@ -138,6 +138,7 @@ class PairConstants:
     w_reg: cython.double
     w_stribeck: cython.double
     python: object
+    model: object
     __slots__ = (
         "alpha_ball",
         "alpha_housing",
@@ -168,6 +169,7 @@ class PairConstants:
         "law_c",
         "lower_limit",
         "lubricated",
+        "model",
         "mu",
         "n_balls",
         "needs_contacts",
@@ -258,6 +260,7 @@ class PairConstants:
         self.pressure_limit = float(pair.pressure_limit)
         fm = pair.friction
         model = registry.get(fm.model)
+        self.model = model.implementation()  # its module: the data its speed terms need
         yu = model.palmgren  # the speed terms computed here (Palmgren's), else in Python
         self.fast = yu and fm.grease is None
         self.needs_loads = model.data == "loads"

@@ -972,8 +972,8 @@ class PairSolver:
         of A [rad], the largest pressure [Pa], flags; and whether an anchor moved so far that
         the step must be solved again. B mirrors A when ``symmetric`` (its anchors follow A's).
         The friction model's data (:func:`~.pair.state.rolling_data`): the bearings' loads
-        under ``skf2004`` (``radial_load`` [N] the external one), the contacts' EHL terms under
-        ``ehl_per_contact``."""
+        (``radial_load`` [N] the external one) or the contacts' terms, as its registry entry
+        asks (:attr:`~.friction.registry.Entry.data`)."""
         c: PairConstants = self.c
         ring_a: list = self.rings[0]
         ring_b: list = self.rings[1]
@@ -997,7 +997,7 @@ class PairSolver:
         if c.needs_contacts:
             rolling = tuple(tuple(v) for v in ehl)
         elif c.needs_loads:
-            rolling = c.python.skf_loads(fa, fb, radial_load)
+            rolling = c.model.rolling_loads(fa, fb, radial_load)
         p_max: cython.double = max(sa[5], sb[5])
         overloaded: cython.bint
         locked: cython.bint

@@ -9,7 +9,7 @@ Ning §1–2):
    stiffness, maximum contact pressure and the flags ``overloaded``, ``locked`` and
    ``unloaded`` (:func:`state_flags`);
 3. :func:`bearing_outputs` — the speed-dependent part: the rolling/viscous torque of the
-   pair's friction model (Palmgren's eq 8 for ``yu2017``; :mod:`.friction.models`), the total
+   pair's friction model (:mod:`.friction.registry`, e.g. Palmgren's eq 8), the total
    (eq 9), breakaway versus running torque, the regularised signed friction torque and the
    power loss.
 
@@ -29,9 +29,7 @@ from .._checks import check_finite
 from ..contact.equilibrium import _axial_state, _ring_stiffness
 from ..contact.geometry import RaceGeometry
 from ..friction import registry
-from ..friction.ehl_per_contact import contact_rolling_terms
 from ..friction.models import grease_rest_and_start, grease_running
-from ..friction.skf2004 import skf_loads
 from ..friction.terms import BallSetTorques, ball_set_torques
 from ..kernels.friction import coulomb_and_excess, palmgren_torque, regularised_torque
 from ..thermal.fits import mounted_geometry_at
@@ -208,8 +206,8 @@ class LoadState:
     ball_cosines : per-ball cos α of A and B over half the ring (ψ = 2πj/Z, j ≤ Z/2) under
         a radial load, else None (the continuation's start after an exact solve)
     rolling : what the friction model's speed terms need besides the viscosity
-        (:func:`rolling_data`): None (``yu2017``), the bearings' loads (``skf2004``) or the
-        contacts' terms (``ehl_per_contact``)
+        (:func:`rolling_data`): None, the bearings' loads or the contacts' terms, as its
+        registry entry asks (:attr:`~.friction.registry.Entry.data`)
     """
 
     force_a: np.ndarray
@@ -299,11 +297,12 @@ def _add(t1: BallSetTorques, t2: BallSetTorques) -> BallSetTorques:
     return BallSetTorques(*(getattr(t1, f.name) + getattr(t2, f.name) for f in fields(t1)))
 
 
-def _ehl_terms(pair: BearingPair, thermal: ThermalState, balls) -> tuple:
-    """The contacts' terms of :func:`.friction.ehl_per_contact.contact_rolling_terms` (arrays, a
-    trailing contact axis: every ball's inner contact, then its outer one, bearing after bearing)
-    from ``balls`` = [(Q, α, inner, outer, weight)] with a trailing ball axis; a contact without
-    load gets a zero scale (and m0 = 1, so that nothing divides 0 by 0)."""
+def _contacts_terms(pair: BearingPair, thermal: ThermalState, balls, terms) -> tuple:
+    """The contacts' terms of the friction model's ``contact_rolling_terms`` ``terms``
+    (:mod:`.friction.registry`; arrays, a trailing contact axis: every ball's inner contact, then
+    its outer one, bearing after bearing) from ``balls`` = [(Q, α, inner, outer, weight)] with a
+    trailing ball axis; a contact without load gets a zero scale (and m0 = 1, so that nothing
+    divides 0 by 0)."""
     geom = thermal.geometry
 
     def g(x):
@@ -321,7 +320,7 @@ def _ehl_terms(pair: BearingPair, thermal: ThermalState, balls) -> tuple:
             (outer, geom.outer_groove_radius, False),
         ):
             a = c.a_coef * np.cbrt(q_safe)
-            t = contact_rolling_terms(
+            t = terms(
                 q_safe, a, c.ellipticity, c.e_integral, gamma, dw, dm, dw / g(r),
                 geom.compliance, eta, is_inner,
             )  # fmt: skip
@@ -335,8 +334,8 @@ def _ehl_terms(pair: BearingPair, thermal: ThermalState, balls) -> tuple:
 def rolling_data(pair: BearingPair, thermal: ThermalState, force_a, force_b, radial_load, balls):
     """What the speed terms of the pair's friction model need besides viscosity and pitch
     diameter (its :attr:`~.friction.registry.Entry.data`): None; the bearings' loads
-    (Fa,A, Fa,B, Fr) [N] (:func:`.friction.skf2004.skf_loads`); or the contacts' terms
-    (:func:`_ehl_terms` of ``balls``).
+    (Fa,A, Fa,B, Fr) [N] (the model's ``rolling_loads``); or the contacts' terms
+    (:func:`_contacts_terms` of ``balls``, the model's ``contact_rolling_terms``).
 
     Returns
     -------
@@ -347,14 +346,14 @@ def rolling_data(pair: BearingPair, thermal: ThermalState, force_a, force_b, rad
     --------
     >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
     >>> th = thermal_state(pair, 293.15)
-    >>> rolling_data(pair, th, 40.0, 40.0, 0.0, []) is None  # Yu's model needs nothing
+    >>> rolling_data(pair, th, 40.0, 40.0, 0.0, []) is None  # the default model needs nothing
     True
     """
-    data = registry.get(pair.friction.model).data
-    if data == "loads":
-        return skf_loads(force_a, force_b, radial_load)
-    if data == "contacts":
-        return _ehl_terms(pair, thermal, balls)
+    entry = registry.get(pair.friction.model)
+    if entry.data == "loads":
+        return entry.implementation().rolling_loads(force_a, force_b, radial_load)
+    if entry.data == "contacts":
+        return _contacts_terms(pair, thermal, balls, entry.implementation().contact_rolling_terms)
     return None
 
 
@@ -530,11 +529,11 @@ class BearingOutputs:
 
     friction_torque [N·m] signed like speed (opposes rotation), running_torque and
     breakaway_torque [N·m], hysteresis/spin/sliding/viscous_torque [N·m] (viscous: the
-    rolling/viscous part of the friction model: Palmgren, SKF's φish·φrs·Mrr or the contacts'
-    EHL rolling torque), grease_torque [N·m] (the grease term's running torque), preload [N],
-    contact_angle [rad], radial_clearance [m], kinematic_viscosity [m²/s], axial_stiffness
-    [N/m], power_loss [W], overloaded, locked, unloaded (see :func:`state_flags`); plus
-    inner_ring_torque/outer_ring_torque [N·m], max_contact_pressure [Pa],
+    rolling/viscous part of the friction model, its ``running_terms``), grease_torque [N·m] (the
+    grease term's running torque), preload [N], contact_angle [rad], radial_clearance [m],
+    kinematic_viscosity [m²/s], axial_stiffness [N/m], power_loss [W], overloaded, locked, unloaded
+    (see :func:`state_flags`); plus inner_ring_torque/outer_ring_torque [N·m], max_contact_pressure
+    [Pa],
     outer/inner_fit_pressure [Pa], outer/inner_interference [m], force_a/force_b [N],
     axial_displacement [m]; axial_play [m] (:func:`axial_play`), reverse_loaded
     (:func:`state_flags`), outside_lubricant_range (the lubricant's temperature outside the
@@ -618,7 +617,7 @@ def _coulomb_excess(pair: BearingPair, hysteresis, spin, sliding):
 def contact_terms(pair: BearingPair, hysteresis, spin, sliding, inner, outer):
     """The per-contact torques (hysteresis, spin, sliding, inner ring, outer ring) [N·m] as the
     friction model counts them: Yu's and Ning's terms, or zeros under a model whose own
-    moments replace them (:attr:`~.friction.registry.Entry.contact_terms` False: SKF 2004).
+    moments replace them (:attr:`~.friction.registry.Entry.contact_terms` False).
 
     Parameters
     ----------
@@ -635,7 +634,7 @@ def contact_terms(pair: BearingPair, hysteresis, spin, sliding, inner, outer):
     Examples
     --------
     >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
-    >>> contact_terms(pair, 1e-4, 2e-4, 0.0, 1e-4, 2e-4)  # yu2017: as they are
+    >>> contact_terms(pair, 1e-4, 2e-4, 0.0, 1e-4, 2e-4)  # the default model: as they are
     (0.0001, 0.0002, 0.0, 0.0001, 0.0002)
     """
     if not registry.get(pair.friction.model).contact_terms:
@@ -647,10 +646,11 @@ def contact_terms(pair: BearingPair, hysteresis, spin, sliding, inner, outer):
 def state_torques(pair: BearingPair, hysteresis, spin, sliding, viscosity, pitch_diameter,
                   rolling, rest=None):  # fmt: skip
     """(Coulomb torque, breakaway excess, breakaway torque) [N·m] of the state: the running
-    torque at rest plus the excess of the starting torque over it. ``yu2017``: hysteresis +
-    spin + sliding, (μ_s/μ − 1)·(spin + sliding), Palmgren at rest (``rest``, :func:`rest_torque`
-    when not given); ``ehl_per_contact``: the same without Palmgren (no hydrodynamic force at
-    rest); ``skf2004``: Msl(n → 0) of both bearings (SKF's starting torque, no excess); plus
+    torque at rest plus the excess of the starting torque over it. A friction model that
+    counts the contacts' terms (:attr:`~.friction.registry.Entry.contact_terms`): hysteresis +
+    spin + sliding, (μ_s/μ − 1)·(spin + sliding), and its viscous torque at rest (``rest``,
+    :func:`rest_torque` when not given: Palmgren's, 0 for a model without it); a model with
+    its own: its ``starting_torque`` (no excess); plus
     the lubricant's cold start (:mod:`.friction.grease`): with a grease term (f0 > 0) its
     starting torque ks·M0 at the test speed (:func:`.friction.models.grease_rest_and_start`),
     without one (ks alone) ks times the friction model's viscous torque at the test speed,
@@ -684,7 +684,7 @@ def state_torques(pair: BearingPair, hysteresis, spin, sliding, viscosity, pitch
     (0.3, 0.559316)
     """
     entry = registry.get(pair.friction.model)
-    own = not entry.contact_terms  # the model's own starting torque, sliding (SKF's Msl)
+    own = not entry.contact_terms  # the model's own starting torque and sliding torque
     if own:
         coulomb = excess = 0.0
         rest = entry.implementation().starting_torque(pair, rolling)
@@ -707,8 +707,9 @@ def state_torques(pair: BearingPair, hysteresis, spin, sliding, viscosity, pitch
 
 
 def rest_torque(pair: BearingPair, viscosity, pitch_diameter):
-    """Viscous torque of the pair at rest (Palmgren's eq 8 below its threshold; ``yu2017``
-    only, 0 for the other friction models) [N·m].
+    """Viscous torque of the pair at rest (Palmgren's eq 8 below its threshold) [N·m] under a
+    friction model whose viscous torque is Palmgren's
+    (:attr:`~.friction.registry.Entry.palmgren`), 0 under the others.
 
     Parameters
     ----------
@@ -947,8 +948,8 @@ def point_outputs(point, speed_outputs, breakaway_lower_bound: bool = False) -> 
 
 
 def _rolling_floats(rolling):
-    """The exact path's :func:`rolling_data` of one operating point as floats: the SKF loads
-    as floats, the EHL terms as tuples of floats of the loaded contacts only."""
+    """The exact path's :func:`rolling_data` of one operating point as floats: the bearings'
+    loads as floats, the contacts' terms as tuples of floats of the loaded contacts only."""
     if rolling is None:
         return None
     if isinstance(rolling[0], np.ndarray) and np.ndim(rolling[0]) == 1:
