@@ -10,8 +10,10 @@ import re
 import numpy as np
 import pytest
 from fmu_helpers import Fmu
+from kernels import implementations
 from scipy.integrate import solve_ivp
 
+from servofmu.physics import compiled
 from servofmu.physics.drives import motor
 
 #: Not the defaults, and k_t ≠ k_e, so that a swapped or scaled constant shows.
@@ -133,3 +135,42 @@ def test_fmu_follows_the_written_ode(fmus, h):
     np.testing.assert_allclose(got, ref, rtol=1e-8, atol=1e-11)
     assert fmu.get("motor_torque") == pytest.approx(P.torque_constant * ref[0], rel=1e-8)
     fmu.close()
+
+
+def _substeps_as_written(phi, gamma, state, voltage, load, n, running, breakaway):
+    """The sub-steps with friction as the equations read, in Python (the reference of the
+    compiled kernel: free step, hold or slide, friction added through Γ's torque column)."""
+    i, w, a = state
+    total = 0.0
+    for _ in range(n):
+        free = [
+            phi[r][0] * i + phi[r][1] * w + phi[r][2] * a + gamma[r][0] * voltage
+            + gamma[r][1] * load
+            for r in range(3)
+        ]  # fmt: skip
+        drop = -gamma[1][1]
+        held = abs(free[1]) <= drop * (breakaway if w == 0.0 else running)
+        friction = free[1] / drop if held else math.copysign(running, free[1])
+        i, w, a = (free[r] + gamma[r][1] * friction for r in range(3))
+        w = 0.0 if held else w
+        total += friction
+    return (i, w, a), total / n
+
+
+def test_friction_substeps_agree_bit_for_bit_on_both_paths():
+    # the DCMotor FMU's sub-steps with friction, compiled and Python, against the loop as
+    # written: through sticking, breakaway, reversals and both signs of the load
+    rng = np.random.default_rng(3)
+    kernels = {i: compiled.module("drives.motor_stepping", i) for i in implementations()}
+    for _ in range(1500):
+        n = int(rng.integers(1, 12))
+        phi, gamma = motor.discretise(P, float(rng.choice([1e-5, 1e-4, 1e-3])))
+        state = tuple(float(v) for v in rng.normal(0.0, [0.5, 2.0, 1.0]))
+        if rng.random() < 0.3:
+            state = (state[0], 0.0, state[2])  # at rest: the breakaway applies
+        u = (float(rng.normal(0.0, 3.0)), float(rng.normal(0.0, 0.02)))
+        running, breakaway = sorted(float(v) for v in rng.uniform(0.0, 0.05, 2))
+        want = _substeps_as_written(phi, gamma, state, *u, n, running, breakaway)
+        for impl, k in kernels.items():
+            got = k.friction_substeps(phi, gamma, *state, *u, n, running, breakaway)
+            assert got == want, impl

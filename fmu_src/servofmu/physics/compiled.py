@@ -41,6 +41,7 @@ MODULES = (
     "pair.continuation",
     "thermal.stepping",
     "drives.stepping",
+    "drives.motor_stepping",
 )
 
 _HERE = Path(__file__).resolve().parent

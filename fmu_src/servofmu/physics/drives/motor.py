@@ -43,7 +43,11 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.linalg import expm
 
+from .. import compiled
 from .._checks import check_finite, check_nonnegative, check_positive
+
+#: The sub-steps with friction (:mod:`.motor_stepping`): compiled when the build could.
+_stepping = compiled.module("drives.motor_stepping")
 
 
 @dataclass(frozen=True)
@@ -272,28 +276,8 @@ def step_with_friction_unchecked(
     True
     """
     n = max(1, math.ceil(h / substep - 1e-9))
-    hs = h / n
-    phi, gamma = discretise(p, hs)
-    g_torque = (gamma[0][1], gamma[1][1], gamma[2][1])  # effect of 1 N·m held over hs
-    drop = -g_torque[1]  # speed lost per N·m of friction (> 0)
+    phi, gamma = discretise(p, h / n)
     i, w, a = state
-    total = 0.0
-    for _ in range(n):
-        free = [
-            phi[r][0] * i
-            + phi[r][1] * w
-            + phi[r][2] * a
-            + gamma[r][0] * voltage
-            + gamma[r][1] * load_torque
-            for r in range(3)
-        ]
-        limit = breakaway_friction if w == 0.0 else running_friction
-        if abs(free[1]) <= drop * limit:
-            friction = free[1] / drop  # holds (or stops) the rotor exactly
-        else:
-            friction = math.copysign(running_friction, free[1])
-        i, w, a = (free[r] + g_torque[r] * friction for r in range(3))
-        if abs(free[1]) <= drop * limit:
-            w = 0.0
-        total += friction
-    return (i, w, a), total / n
+    return _stepping.friction_substeps(
+        phi, gamma, i, w, a, voltage, load_torque, n, running_friction, breakaway_friction
+    )
