@@ -165,3 +165,59 @@ def is_compiled(mod) -> bool:
     False
     """
     return any(mod is twin for twin in (_TWINS or {}).values())
+
+
+#: Names of the former module ``servofmu.physics.continuation``, which is this one now
+#: (:data:`servofmu.physics.MOVED`): the compiled module each lives in (this process's
+#: implementation of it, as that module gave).
+FORMER_NAMES = {
+    "PairSolver": "pair.continuation",
+    "PairConstants": "pair.constants",
+    "Thermal": "pair.constants",
+    "thermal_at": "pair.constants",
+    "PointState": "pair.point",
+}
+
+
+def kernels(implementation: str | None = None):
+    """The per-step pair solver's module of ``implementation`` (as :func:`module`), by the
+    former module ``servofmu.physics.continuation``'s name.
+
+    Returns
+    -------
+    module
+        ``servofmu.physics.pair.continuation`` or its compiled twin.
+
+    Examples
+    --------
+    >>> kernels("python").__name__
+    'servofmu.physics.pair.continuation'
+    """
+    return module("pair.continuation", implementation)
+
+
+def thermal_floats(constants, temperatures):
+    """The pair's thermal state at ``temperatures`` = (housing, shaft, outer ring, inner ring)
+    [K] (:func:`~servofmu.physics.pair.constants.thermal_at` of this process's
+    implementation), by the former module ``servofmu.physics.continuation``'s name.
+
+    Returns
+    -------
+    Thermal
+
+    Examples
+    --------
+    >>> from servofmu.physics.pair import BearingPair
+    >>> pair = BearingPair.from_catalog("yu2017_gimbal", "krytox_143aa")
+    >>> c = module("pair.constants").PairConstants(pair)
+    >>> thermal_floats(c, (293.15,) * 4).t_inner  # K
+    293.15
+    """
+    return module("pair.constants").thermal_at(constants, *temperatures)
+
+
+def __getattr__(name: str):
+    """A name of :data:`FORMER_NAMES`, from its module; AttributeError for any other name."""
+    if name in FORMER_NAMES:
+        return getattr(module(FORMER_NAMES[name]), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

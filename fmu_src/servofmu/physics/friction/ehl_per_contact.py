@@ -412,3 +412,8 @@ def running_terms(pair, kinematic_viscosity, pitch_diameter, rolling, speed):
     (0.0, None)
     """
     return ehl_torque(rolling, speed), None
+
+
+#: Names :mod:`.models` offered before this model had a module of its own: importable from it
+#: still (its ``__getattr__``).
+FORMER_NAMES = ("ehl_torque",)

@@ -273,3 +273,14 @@ def lubricant_numbers(lubricant) -> tuple[tuple[float, str], tuple[float, str]]:
     """
     film = model_numbers("lubricant_numbers", lubricant)["skf_film_friction"]
     return film, lubricant_density(lubricant)
+
+
+def __getattr__(name: str):
+    """A name the module offered before its friction models had modules of their own (e.g.
+    ``skf_loads``): from the model's module that lists it in ``FORMER_NAMES``, found through
+    :mod:`.registry`; AttributeError for any other name."""
+    for entry in registry.entries():
+        module = entry.implementation()
+        if name in getattr(module, "FORMER_NAMES", ()):
+            return getattr(module, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

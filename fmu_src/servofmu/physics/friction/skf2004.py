@@ -1080,3 +1080,8 @@ def parameter_numbers(p) -> dict:
     )
     numbers = ("skf_replenishment", "skf_boundary_friction", "skf_film_friction")
     return {"skf": skf} | {f: p[f] for f in numbers}
+
+
+#: Names :mod:`.models` offered before this model had a module of its own: importable from it
+#: still (its ``__getattr__``).
+FORMER_NAMES = ("skf_loads", "skf_starting", "skf_torques")
