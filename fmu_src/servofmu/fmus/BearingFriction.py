@@ -487,7 +487,6 @@ class BearingFriction(ServoSlave):
         self._sigma0 = self.prerolling_stiffness  # 0: derived at each operating point
         self._excess = 0.0  # the breakaway excess of the operating point [N·m]
         self._stribeck = self.model.pair.stribeck_speed  # ω_s [rad/s] of T_c
-        self._exponent = self.prerolling_exponent
         # Dahl's step and T_c: the friction kernels of the model's implementation
         kernels = continuation.module("kernels.friction", self.model.implementation)
         self._stribeck_torque, self._dahl_torque_step = (
@@ -566,7 +565,7 @@ class BearingFriction(ServoSlave):
         self.prerolling_angle = self._pr_angle = self._pr_angle + dtheta
         if self._sigma0 > 0.0:  # |T| <= T_c after the step
             t = self._dahl_torque_step(
-                self._pr_torque, self._coulomb, self._sigma0, self._exponent, dtheta
+                self._pr_torque, self._coulomb, self._sigma0, self.prerolling_exponent, dtheta
             )
             self.prerolling_torque = self.friction_torque = self._pr_torque = t
             self.power_loss = t * speed
