@@ -8,6 +8,7 @@ counting the calls of its methods shows which FMI calls entered Python."""
 
 from __future__ import annotations
 
+import importlib
 import math
 from collections import Counter
 
@@ -60,6 +61,8 @@ def _start(fmus, name, instance="inst") -> tuple[Fmu, list[int], list[int]]:
 
 @pytest.mark.parametrize("name", NAMES)
 def test_a_step_crosses_into_python_once(fmus, python_calls, name):
+    """One crossing per step: into the slave's do_step, or, for a model with a compiled step
+    on the shared values, into that step, which enters no Python method of the slave."""
     fmu, ins, outs = _start(fmus, name)
     values = list(INPUTS[name][0].values())
     python_calls.clear()
@@ -67,8 +70,14 @@ def test_a_step_crosses_into_python_once(fmus, python_calls, name):
         fmu.slave.setReal(ins, [v * (1 + 1e-3 * k) for v in values])
         fmu.slave.doStep(k * 1e-3, 1e-3)
         assert all(math.isfinite(x) for x in fmu.slave.getReal(outs))
-    assert python_calls == Counter(do_step=20), python_calls
+    compiled_step = getattr(fmus_module(name), name).shared_step is not None
+    assert python_calls == (Counter() if compiled_step else Counter(do_step=20)), python_calls
     fmu.close()
+
+
+def fmus_module(name: str):
+    """The module of FMU ``name``'s slave class."""
+    return importlib.import_module(f"servofmu.fmus.{name}")
 
 
 def test_without_shared_values_every_call_enters_python(fmus, python_calls, monkeypatch):

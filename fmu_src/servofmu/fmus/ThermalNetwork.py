@@ -309,6 +309,28 @@ class ThermalNetwork(ServoSlave):
             self._check_range()
         return True
 
+    shared_step = staticmethod(tn.shared_step)
+
+    def _bind_shared_step(self, step):
+        # a warning or a retried start is the Python path's
+        if not self.started or self.outside_valid_range:
+            return False
+        inputs = ("ambient_temperature", "sink_temperature", "power_loss")
+        slots = self._shared.slots
+        step.bind(
+            self.stepper,
+            self.reference,
+            self.linearisation_tolerance,
+            self.minimum_part_temperature,
+            self.maximum_part_temperature,
+            tuple(slots[name] for name in inputs),
+            tuple(slots[name] for name, _ in _OUTPUTS),
+        )
+        return True
+
+    def _read_shared_step(self, step):
+        self.reference = step.reference
+
     def state_problem(self):
         # a restored state holds temperatures a step could give (advance's rule)
         for name, _ in _OUTPUTS:

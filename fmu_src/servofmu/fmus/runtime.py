@@ -154,6 +154,10 @@ class ServoSlave(Fmi2Slave):
     PHYSICS: tuple[str, ...] = ()  # modules whose equations the documentation shows
     FEEDTHROUGH = False
     DEFAULT_EXPERIMENT = (0.0, 1.0, 1.0e-3)  # start, stop, step [s]
+    #: the model's step in compiled code on the values shared with servofmu's export: a
+    #: function of :class:`~servofmu.physics.shared_step.SharedStep`'s arguments that builds
+    #: the model's subclass (see :meth:`_bind_shared_step`); None: every step in Python
+    shared_step = None
     author = "servofmu"
     license = "MIT"
     version = __version__
@@ -225,6 +229,13 @@ class ServoSlave(Fmi2Slave):
             self._shared.push(self, ALL)
         # the block the export library views (None: every call through Python)
         self._shared_buffer = None if self._shared is None else self._shared.buffer
+        if self._shared is not None and self.shared_step is not None:
+            # the library calls the instance's "do_step": the compiled step, which hands
+            # every step it does not take to the class's own
+            self._shared.attach_step(
+                self.shared_step, not self.FEEDTHROUGH, self.do_step, self._shared_step_failed
+            )
+            self.do_step = self._shared.step.step
         self._announced = False
         if self._reports:  # pythonfmu's binary would free its logger before this message
             self._announce()
@@ -609,6 +620,12 @@ class ServoSlave(Fmi2Slave):
         self._time = current_time + step_size
         return True
 
+    @fmi_call("fmi2DoStep", result=False, failure="_step_failed", changes=OUTPUTS)
+    def _shared_step_failed(self, call, exc: BaseException) -> bool:
+        """The answer to an exception raised by the compiled step on the shared values
+        (:attr:`shared_step`): that of an exception in the middle of :meth:`do_step`."""
+        raise exc
+
     def _step_failed(self, call: str, exc: BaseException, result=False) -> bool:
         """An exception in the middle of a step is the model's failure: discarded."""
         self._error = f"{type(exc).__name__}: {exc}"
@@ -808,6 +825,17 @@ class ServoSlave(Fmi2Slave):
         can hold between steps, beyond finite outputs ("" when they are): what its steps
         guarantee (ranges, relations between the values)."""
         return ""
+
+    def _bind_shared_step(self, step) -> bool:
+        """With :attr:`shared_step`: give ``step`` the model objects, parameters and hidden
+        state its next steps start from, and say whether it may take them (False: the next
+        step in Python, e.g. while a warning is due). Called after every FMI call that entered
+        Python, in step complete, configured, with a known time."""
+        return False
+
+    def _read_shared_step(self, step):
+        """With :attr:`shared_step`: take back the hidden state its steps changed (the
+        inputs, outputs and time are read by the runtime)."""
 
 
 def _experiment_problem(start, stop, tolerance) -> str:

@@ -35,6 +35,13 @@ enters Python first reads the pending inputs (:meth:`SharedValues.pull`) and, be
 returns, writes back what it may have changed (:meth:`SharedValues.push`): the header always,
 and the values of the groups the call can change. fmi2DoStep is then the one crossing per
 step of a host that sets inputs and gets outputs.
+
+A model with a compiled step on the block (:mod:`servofmu.physics.shared_step`, the slave's
+``shared_step``) takes that crossing in compiled code: its step reads the inputs from the
+block and writes the outputs to it, and marks the header ``stale``; the slave's attributes,
+its time and its model's state are read back from it (:meth:`SharedValues.pull`) before any
+later call enters Python. Whatever the slave does in Python then re-arms it or not
+(:meth:`SharedValues.push`).
 """
 
 from __future__ import annotations
@@ -49,7 +56,7 @@ from .calls import INITIALIZATION, PHASES, READABLE, STEP_COMPLETE
 #: Identifies the block's layout (the export library refuses another one).
 MAGIC = 0x53465631  # "SFV1"
 #: The header's 32-bit integers, in order.
-HEADER = ("magic", "n_references", "n_values", "phase", "pending", "dirty", "n_phases", "spare")
+HEADER = ("magic", "n_references", "n_values", "phase", "pending", "dirty", "n_phases", "stale")
 #: Access bits of a value reference in a state.
 SET, GET = 1, 2
 #: Groups of values a call may change (what :meth:`SharedValues.push` writes back).
@@ -61,6 +68,7 @@ ENVIRONMENT = "SERVOFMU_SHARED_VALUES"
 _PHASE = HEADER.index("phase")
 _PENDING = HEADER.index("pending")
 _DIRTY = HEADER.index("dirty")
+_STALE = HEADER.index("stale")
 
 
 def wanted() -> bool:
@@ -135,6 +143,9 @@ class SharedValues:
         order = [*inputs, *outputs, *parameters]
         n_refs, n = len(variables), len(order)
         slot = {vr: k for k, (vr, _) in enumerate(order)}
+        #: {Real variable's name: its position in the value block}
+        self.slots = {v.name: k for k, (_, v) in enumerate(order)}
+        self._sizes = (n, len(inputs))
         ranges = [(v.min, v.max) if v.causality == "input" else (None, None) for _, v in order]
         access = [
             (SET if v.causality == "input" and vr in writable.get(phase, {}) else 0)
@@ -177,6 +188,9 @@ class SharedValues:
                 )
             first += len(names)
         self._inputs = packers.get(INPUTS)
+        self._outputs = packers.get(OUTPUTS)
+        #: the compiled step on the block (:meth:`attach_step`), or None
+        self.step = None
         #: per combination of groups, what push writes: (group, pack_into, offset, values)
         self._pushers = [
             tuple(
@@ -200,6 +214,8 @@ class SharedValues:
         None
         """
         ints = self._ints
+        if ints[_STALE]:
+            self._read_steps(slave)
         if ints[_PENDING]:
             if self._inputs is not None:
                 packer, offset, _, assign = self._inputs
@@ -233,8 +249,52 @@ class SharedValues:
             ints = self._ints
             ints[_DIRTY] = 1 if slave._dirty else 0
             ints[_PHASE] = self._codes.get(slave._phase, -1)
+            if self.step is not None:
+                self._arm(slave)
         except Exception:
             self.stop()
+
+    def attach_step(self, make, stepped: bool, fallback, failed) -> None:
+        """Take fmi2DoStep in compiled code (:mod:`servofmu.physics.shared_step`): ``make``
+        builds the model's :class:`~servofmu.physics.shared_step.SharedStep` from its
+        arguments, ``fallback(t, h)`` is the slave's own step and ``failed(exc)`` its answer
+        to an exception in the compiled one. Armed by :meth:`push` whenever the slave's
+        ``_bind_shared_step`` agrees.
+
+        Returns
+        -------
+        None
+        """
+        n, n_inputs = self._sizes
+        code = self._codes[STEP_COMPLETE]
+        self.step = make(self.buffer, n, n_inputs, code, stepped, fallback, failed)
+
+    def _arm(self, slave) -> None:
+        """Arm the compiled step when the slave, as it is now, would take a step in its
+        state, configured, from a known time, and its model can (``_bind_shared_step``)."""
+        step = self.step
+        if (
+            slave._phase == STEP_COMPLETE
+            and slave._configured
+            and slave._time is not None
+            and slave._bind_shared_step(step)
+        ):
+            step.arm(slave._time)
+        else:
+            step.disarm()
+
+    def _read_steps(self, slave) -> None:
+        """Bring the slave up to the steps taken in compiled code: its inputs and outputs
+        from the block, its time, its dirty flag and its model's state (``_read_shared_step``)."""
+        for packer in (self._inputs, self._outputs):
+            if packer is not None:
+                values, offset, _, assign = packer
+                assign(slave, values.unpack_from(self.buffer, offset))
+        ints = self._ints
+        slave._dirty = bool(ints[_DIRTY])
+        slave._time = self.step.time
+        slave._read_shared_step(self.step)
+        ints[_STALE] = 0
 
     def stop(self) -> None:
         """Send every later call through Python (the state code -1).

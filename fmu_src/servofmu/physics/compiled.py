@@ -39,6 +39,7 @@ MODULES = (
     "pair.constants",
     "pair.balls",
     "pair.continuation",
+    "shared_step",
     "thermal.stepping",
     "drives.stepping",
     "drives.motor_stepping",

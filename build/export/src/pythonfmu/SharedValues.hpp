@@ -25,7 +25,8 @@ class SharedValues
 {
 public:
     static constexpr std::int32_t magic = 0x53465631; // "SFV1", shared_values.MAGIC
-    enum Header { MAGIC, N_REFERENCES, N_VALUES, PHASE, PENDING, DIRTY, N_PHASES, SPARE, HEADER };
+    // STALE: steps the slave took in compiled code and has not read yet (the slave's own flag)
+    enum Header { MAGIC, N_REFERENCES, N_VALUES, PHASE, PENDING, DIRTY, N_PHASES, STALE, HEADER };
     static constexpr std::uint8_t set = 1;
     static constexpr std::uint8_t get = 2;
 

@@ -375,6 +375,19 @@ def stepper(network: ThermalNetwork, implementation: str | None = None):
     )
 
 
+def shared_step(*args, implementation: str | None = None):
+    """The ThermalNetwork FMU's step on the values it shares with servofmu's export
+    (:class:`.stepping.NetworkSharedStep`; ``args``: those of
+    :class:`~servofmu.physics.shared_step.SharedStep`), of ``implementation`` (as
+    :func:`stepper`, whose steppers it runs).
+
+    Returns
+    -------
+    NetworkSharedStep
+    """
+    return compiled.module("thermal.stepping", implementation).NetworkSharedStep(*args)
+
+
 def steady_state(network: ThermalNetwork, ambient: float, sink: float, power: float):
     """Node temperatures [K] where every rate vanishes, for the ambient and sink temperatures
     [K] and the heat input [W] (scipy.optimize.root with the analytic Jacobian, started from

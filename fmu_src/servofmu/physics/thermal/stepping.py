@@ -24,8 +24,11 @@ except ImportError:  # no Cython: its pure-Python mode's names as no-ops
 
 if cython.compiled:
     from cython.cimports.libc.math import isfinite, pow
+    from cython.cimports.servofmu.physics._shared_step import SharedStep
 else:
     from math import isfinite, pow
+
+    from ..shared_step import SharedStep
 
 
 @cython.ccall
@@ -201,3 +204,70 @@ class NetworkStepper:
             if not (lo <= x <= hi):
                 outside = True
         return new, reference, bad, outside
+
+
+@cython.final
+@cython.cclass
+class NetworkSharedStep(SharedStep):
+    """The ThermalNetwork FMU's step on its block of shared values
+    (:class:`~servofmu.physics.shared_step.SharedStep`): :meth:`NetworkStepper.advance` from
+    the part temperatures in the block (its outputs, the network's state), the inputs read
+    from it and the new temperatures written to it; a step that leaves a temperature not
+    finite and > 0 K, or outside the valid range, is declined (the slave's Python path takes
+    it: its message, its warning).
+
+    :meth:`bind` gives it the slave's stepper, parameters and slots before it is armed;
+    ``reference`` is the temperatures [K] about which radiation is linearised (the slave's
+    own, read back when it next enters Python).
+    """
+
+    def bind(
+        self,
+        stepper: NetworkStepper,
+        reference,
+        tolerance: cython.double,
+        lo: cython.double,
+        hi: cython.double,
+        inputs: tuple,
+        parts: tuple,
+    ):
+        """The slave's ``stepper``, radiation's ``reference`` (a tuple [K] or None), the
+        linearisation ``tolerance`` [K], the valid range [``lo``, ``hi``] [K], the slots of the
+        inputs (ambient temperature, sink temperature, power loss) and of the parts."""
+        self.stepper = stepper
+        self.reference = reference
+        self.tolerance, self.lowest, self.highest = tolerance, lo, hi
+        self.ambient, self.sink, self.power = inputs[0], inputs[1], inputs[2]
+        self.parts = parts
+
+    @cython.cfunc
+    def advance(self, t: cython.double, h: cython.double) -> cython.bint:
+        values = self.values
+        k: cython.Py_ssize_t
+        j: cython.Py_ssize_t
+        n: cython.Py_ssize_t = len(self.parts)
+        state: list = [0.0] * n
+        for k in range(n):
+            j = self.parts[k]
+            state[k] = values[j]
+        new: list
+        bad: cython.Py_ssize_t
+        outside: cython.bint
+        new, reference, bad, outside = self.stepper.advance(
+            tuple(state),
+            values[self.ambient],
+            values[self.sink],
+            values[self.power],
+            h,
+            self.reference,
+            self.tolerance,
+            self.lowest,
+            self.highest,
+        )
+        if bad >= 0 or outside:
+            return False
+        self.reference = reference
+        for k in range(n):
+            j = self.parts[k]
+            values[j] = new[k]
+        return True

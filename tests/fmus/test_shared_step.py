@@ -1,0 +1,157 @@
+"""The compiled step on the shared values (``servofmu.physics.shared_step``): a model that has
+one takes its steps there, and a host sees what the slave's Python path gives, bit for bit:
+the same statuses, values, Boolean outputs, states and log messages. The reference is the same
+FMU with every call in Python (``SERVOFMU_SHARED_VALUES=0``), run in this process over the
+same calls; the script of calls visits what the compiled step declines (a warning to give, a
+step that does not continue the last, an input out of range, a restored state) and what it
+must hand back (reads through Python between its steps)."""
+
+from __future__ import annotations
+
+import importlib
+import math
+from collections import Counter
+
+import pytest
+from fmpy.fmi1 import FMICallException
+from fmu_helpers import Fmu
+
+from servofmu.build.exportlib import compiled_export
+from servofmu.fmus import shared_values
+from servofmu.fmus.runtime import ServoSlave
+
+pytestmark = pytest.mark.skipif(
+    compiled_export() is None, reason="servofmu's export was not compiled (no C++17 compiler)"
+)
+
+
+def _steps(inputs, n, h):
+    return [("step", inputs(k), h) for k in range(n)]
+
+
+#: Per FMU with a compiled step: (parameters and inputs at the start, the script of calls).
+#: ("step", {input: value}, h): set the inputs, fmi2DoStep, read every output;
+#: ("save",) / ("restore",): fmi2GetFMUstate / fmi2SetFMUstate; ("at", t): the next step's
+#: point; ("booleans",): read the Boolean outputs.
+SCRIPTS = {
+    "ThermalNetwork": (
+        dict(ambient_temperature=293.15, power_loss=0.05, minimum_part_temperature=260.0),
+        [
+            *_steps(lambda k: {"ambient_temperature": 293.15 - 0.01 * k}, 30, 1e-3),
+            ("booleans",),
+            ("save",),
+            *_steps(lambda k: {"power_loss": 0.05 + 0.01 * k}, 10, 0.5),
+            ("restore",),
+            *_steps(lambda k: {"power_loss": 0.05 + 0.01 * k}, 10, 0.5),
+            # the parts cool below minimum_part_temperature (a warning), and warm up again
+            *_steps(lambda k: {"ambient_temperature": 200.0}, 20, 200.0),
+            ("booleans",),
+            *_steps(lambda k: {"ambient_temperature": 300.0}, 40, 200.0),
+            ("booleans",),
+            ("save",),
+            *_steps(lambda k: {"ambient_temperature": 1e5}, 1, 1.0),  # out of range: error
+            ("restore",),
+            *_steps(lambda k: {"ambient_temperature": 290.0}, 3, 1.0),
+            ("at", 1e6),  # does not continue the last step
+            *_steps(lambda k: {"ambient_temperature": 290.0}, 1, 1.0),
+        ],
+    ),
+}
+
+
+def _call(record, what, f, *args):
+    """Call ``f``; record (what, status, result)."""
+    try:
+        result, status = f(*args), 0
+    except FMICallException as exc:
+        result, status = None, exc.status
+    record.append((what, status, result))
+    return result
+
+
+def _run(fmus, name, shared: bool, monkeypatch) -> tuple[list, list]:
+    """Every answer of the script of ``name`` and the log, with or without shared values."""
+    monkeypatch.setenv(shared_values.ENVIRONMENT, "1" if shared else "0")
+    start, script = SCRIPTS[name]
+    fmu = Fmu(fmus[name], "inst").init(**start)
+    slave, vr = fmu.slave, fmu.vr
+    outputs = [vr[n] for n in fmu.outputs() if fmu.type[n] == "Real"]
+    booleans = [vr[n] for n in fmu.outputs() if fmu.type[n] == "Boolean"]
+    record, t, saved, at = [], 0.0, None, None
+    for op in script:
+        if op[0] == "step":
+            _, inputs, h = op
+            for key, value in inputs.items():
+                _call(record, f"set {key}", slave.setReal, [vr[key]], [value])
+            point = t if at is None else at
+            _call(record, "step", slave.doStep, point, h)
+            t, at = (point + h if record[-1][1] == 0 else t), None
+            _call(record, "outputs", slave.getReal, outputs)
+        elif op[0] == "booleans":
+            _call(record, "booleans", slave.getBoolean, booleans)
+        elif op[0] == "save":
+            saved, saved_t = slave.getFMUstate(), t
+        elif op[0] == "restore":
+            _call(record, "restore", slave.setFMUstate, saved)
+            t = saved_t
+        elif op[0] == "at":
+            at = op[1]
+    log = list(fmu.log)
+    fmu.close()
+    return record, log
+
+
+@pytest.mark.parametrize("name", SCRIPTS)
+def test_the_compiled_step_answers_as_the_python_path_bit_for_bit(fmus, monkeypatch, name):
+    python, python_log = _run(fmus, name, False, monkeypatch)
+    compiled, compiled_log = _run(fmus, name, True, monkeypatch)
+    assert len(compiled) == len(python)
+    for k, (a, b) in enumerate(zip(compiled, python, strict=True)):
+        assert repr(a) == repr(b), f"answer {k}: {a} != {b}"  # repr: every bit of a float
+    assert compiled_log == python_log
+    # the script reaches what the compiled step must decline or hand back
+    assert any(status == 1 for status, _ in python_log)  # a warning
+    assert sum(what == "step" and status == 3 for what, status, _ in python) == 2  # refused
+    assert any(what == "booleans" and any(values) for what, _, values in python)
+    assert [what for what, status, _ in python if what == "restore" and status == 0] == [
+        "restore"
+    ] * sum(op == ("restore",) for op in SCRIPTS[name][1])
+
+
+@pytest.fixture
+def python_steps(monkeypatch):
+    """Counts of the slave's own do_step (the Python path) entered."""
+    calls = Counter()
+    original = ServoSlave.do_step
+
+    def counting(self, *args):
+        calls["do_step"] += 1
+        return original(self, *args)
+
+    monkeypatch.setattr(ServoSlave, "do_step", counting)
+    return calls
+
+
+@pytest.mark.parametrize("name", SCRIPTS)
+def test_the_compiled_step_takes_the_steady_steps(fmus, python_steps, name):
+    """After the start, a run of ordinary steps never enters the slave's own do_step; a step
+    that does not continue the last one does (and is refused there)."""
+    start, script = SCRIPTS[name]
+    fmu = Fmu(fmus[name], "inst").init(**start)
+    steps = [op for op in script if op[0] == "step"][:20]
+    t = 0.0
+    for _, inputs, h in steps:
+        fmu.set(**inputs)
+        fmu.slave.doStep(t, h)
+        t += h
+    assert python_steps == Counter()
+    with pytest.raises(FMICallException):
+        fmu.slave.doStep(t + 1.0, 1e-3)
+    assert python_steps == Counter(do_step=1)
+    fmu.close()
+
+
+def test_a_model_without_a_compiled_step_keeps_its_own(fmus):
+    for name in ("DCMotor", "ServoController"):
+        assert importlib.import_module(f"servofmu.fmus.{name}").__dict__[name].shared_step is None
+    assert math.isfinite(Fmu(fmus["DCMotor"], "inst").init().get("speed"))
