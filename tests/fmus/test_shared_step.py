@@ -18,6 +18,7 @@ from fmu_helpers import Fmu
 
 from servofmu.build.exportlib import compiled_export
 from servofmu.fmus import shared_values
+from servofmu.fmus.part_temperatures import PARTS
 from servofmu.fmus.runtime import ServoSlave
 
 pytestmark = pytest.mark.skipif(
@@ -29,12 +30,48 @@ def _steps(inputs, n, h):
     return [("step", inputs(k), h) for k in range(n)]
 
 
-#: Per FMU with a compiled step: (parameters and inputs at the start, the script of calls).
+def _bearing_script(temperature):
+    """BearingFriction's script; ``temperature(T)``: the temperature inputs at T [K]."""
+
+    def inputs(t, speed, axial=5.0, radial=0.0):
+        return {**temperature(t), "speed": speed, "axial_load": axial, "radial_load": radial}
+
+    return [
+        *_steps(lambda k: inputs(253.15, 0.2 * math.sin(0.3 * k)), 30, 1e-3),  # reversals
+        *_steps(lambda k: {}, 5, 1e-3),  # the inputs kept: nothing to compute
+        ("booleans",),
+        ("save",),
+        # below the lubricant's data (a warning) and back, with the loads changing
+        *_steps(lambda k: inputs(293.15 - 5.0 * k, 0.1, 5.0 + k, k), 20, 1e-3),
+        ("booleans",),
+        ("restore",),
+        *_steps(lambda k: inputs(200.0 + 5.0 * k, -0.1, 10.0, 2.0), 20, 1e-3),
+        *_steps(lambda k: inputs(293.15, 0.05, -30.0), 3, 1e-3),  # the other bearing
+        *_steps(lambda k: inputs(293.15, 0.05 * (k % 2)), 4, 1e-3),
+        ("booleans",),
+        ("save",),
+        *_steps(lambda k: inputs(293.15, 1e5), 1, 1e-3),  # out of range: error
+        ("restore",),
+        *_steps(lambda k: inputs(293.15, 0.05), 3, 1e-3),
+        *_steps(lambda k: inputs(293.15, 0.05), 1, -1e-3),  # not a step size: error
+    ]
+
+
+def _uniform(t):
+    return {"temperature": t}
+
+
+def _parts(t):
+    return {f"{p}_temperature": t + d for p, d in zip(PARTS, (0.0, 2.0, 0.5, 1.5), strict=True)}
+
+
+#: Per case: (FMU, parameters and inputs at the start, the script of calls).
 #: ("step", {input: value}, h): set the inputs, fmi2DoStep, read every output;
 #: ("save",) / ("restore",): fmi2GetFMUstate / fmi2SetFMUstate; ("at", t): the next step's
 #: point; ("booleans",): read the Boolean outputs.
 SCRIPTS = {
     "ThermalNetwork": (
+        "ThermalNetwork",
         dict(ambient_temperature=293.15, power_loss=0.05, minimum_part_temperature=260.0),
         [
             *_steps(lambda k: {"ambient_temperature": 293.15 - 0.01 * k}, 30, 1e-3),
@@ -56,6 +93,22 @@ SCRIPTS = {
             *_steps(lambda k: {"ambient_temperature": 290.0}, 1, 1.0),
         ],
     ),
+    "BearingFriction": ("BearingFriction", {}, _bearing_script(_uniform)),
+    "BearingFriction, pre-rolling": (
+        "BearingFriction",
+        dict(prerolling_model=1),
+        _bearing_script(_uniform),
+    ),
+    "BearingFriction, pre-rolling of a given stiffness, parts": (
+        "BearingFriction",
+        dict(prerolling_model=1, prerolling_stiffness=5.0, temperature_mode="parts"),
+        _bearing_script(_parts),
+    ),
+    "BearingFriction, skf2004, housing and shaft": (
+        "BearingFriction",
+        dict(friction_model="skf2004", temperature_mode="housing_shaft"),
+        _bearing_script(lambda t: {"housing_temperature": t, "shaft_temperature": t + 3.0}),
+    ),
 }
 
 
@@ -72,8 +125,8 @@ def _call(record, what, f, *args):
 def _run(fmus, name, shared: bool, monkeypatch) -> tuple[list, list]:
     """Every answer of the script of ``name`` and the log, with or without shared values."""
     monkeypatch.setenv(shared_values.ENVIRONMENT, "1" if shared else "0")
-    start, script = SCRIPTS[name]
-    fmu = Fmu(fmus[name], "inst").init(**start)
+    model, start, script = SCRIPTS[name]
+    fmu = Fmu(fmus[model], "inst").init(**start)
     slave, vr = fmu.slave, fmu.vr
     outputs = [vr[n] for n in fmu.outputs() if fmu.type[n] == "Real"]
     booleans = [vr[n] for n in fmu.outputs() if fmu.type[n] == "Boolean"]
@@ -115,7 +168,7 @@ def test_the_compiled_step_answers_as_the_python_path_bit_for_bit(fmus, monkeypa
     assert any(what == "booleans" and any(values) for what, _, values in python)
     assert [what for what, status, _ in python if what == "restore" and status == 0] == [
         "restore"
-    ] * sum(op == ("restore",) for op in SCRIPTS[name][1])
+    ] * sum(op == ("restore",) for op in SCRIPTS[name][2])
 
 
 @pytest.fixture
@@ -135,9 +188,9 @@ def python_steps(monkeypatch):
 @pytest.mark.parametrize("name", SCRIPTS)
 def test_the_compiled_step_takes_the_steady_steps(fmus, python_steps, name):
     """After the start, a run of ordinary steps never enters the slave's own do_step; a step
-    that does not continue the last one does (and is refused there)."""
-    start, script = SCRIPTS[name]
-    fmu = Fmu(fmus[name], "inst").init(**start)
+    of a size that is not > 0 does (and is refused there)."""
+    model, start, script = SCRIPTS[name]
+    fmu = Fmu(fmus[model], "inst").init(**start)
     steps = [op for op in script if op[0] == "step"][:20]
     t = 0.0
     for _, inputs, h in steps:
@@ -146,7 +199,7 @@ def test_the_compiled_step_takes_the_steady_steps(fmus, python_steps, name):
         t += h
     assert python_steps == Counter()
     with pytest.raises(FMICallException):
-        fmu.slave.doStep(t + 1.0, 1e-3)
+        fmu.slave.doStep(t, -1e-3)
     assert python_steps == Counter(do_step=1)
     fmu.close()
 

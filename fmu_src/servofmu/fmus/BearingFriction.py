@@ -100,12 +100,14 @@ import servofmu
 
 servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
 
+import functools  # noqa: E402
 import math  # noqa: E402
 
 from pythonfmu.enums import Fmi2Status  # noqa: E402
 
 from servofmu.fmus.declarations import Var, output, real_input, real_parameter, spec_parameter  # noqa: E402
 from servofmu.fmus.part_temperatures import (  # noqa: E402
+    PART_INPUTS,
     TEMPERATURE_INPUTS,
     part_inputs,
     temperature_mode_parameter,
@@ -117,6 +119,7 @@ from servofmu.parameters.table import LATER_PARAMETERS  # noqa: E402
 from servofmu.physics import compiled as continuation  # noqa: E402
 from servofmu.physics.bearing import BearingModel  # noqa: E402
 from servofmu.physics.friction import prerolling, registry  # noqa: E402
+from servofmu.physics.pair import model as pair_model  # noqa: E402
 from servofmu.physics.pair.state import PointState  # noqa: E402
 
 if __doc__:  # the friction models' items, from the registry (absent under python -OO)
@@ -481,6 +484,11 @@ class BearingFriction(ServoSlave):
         self._below_flow_told = False  # the warning below the flow limit: once
         # the outputs that do not move with speed: copied from the model's PointState
         self._copy_state = self.output_copier(PointState.__dataclass_fields__)
+        if self._shared is not None:  # the same outputs, for the compiled step
+            state = [v for v in self._outputs if v.field in PointState.__dataclass_fields__]
+            slots = self._shared.slots
+            self._state_slots = tuple((slots[v.name], v.field) for v in state if v.type == "Real")
+            self._state_flags = tuple(v for v in state if v.type == "Boolean")
         # pre-rolling (physics/friction/prerolling.py): Dahl's state (rings' angle [rad],
         # torque [N·m]) from zero stress; with prerolling_model = 0 nothing of it runs (_carry None)
         self._pr_angle = self._pr_torque = 0.0
@@ -531,6 +539,48 @@ class BearingFriction(ServoSlave):
         self._set_speed(self, self.model.speed_outputs(self.speed))
         if self._carry is not None:
             self._hold_prerolling()
+
+    # ------------------------------------------------------------------ compiled step
+    shared_step = staticmethod(pair_model.shared_step)
+
+    def _bind_shared_step(self, step):
+        coulomb = getattr(self, "_coulomb", None)  # T_c of the last computed outputs
+        if self._carry is not None and coulomb is None:
+            return False
+        slots = self._shared.slots
+        mode = self.temperature_mode
+        temps = ("temperature",) if mode == 1 else PART_INPUTS[:2] if mode == 2 else PART_INPUTS
+        step.bind(
+            self.model,
+            tuple(slots[name] for name in temps),
+            (slots["axial_load"], slots["radial_load"], slots["speed"]),
+            self._state_slots,
+            tuple(slots[name] for name in self._SPEED_OUTPUTS),
+            tuple((v.field, getattr(self, v.name)) for v in self._state_flags),
+            self._point,
+            self._below_flow_told,
+            self.model.pair.lubricant.below_flow,
+        )
+        if self._carry is not None:
+            step.bind_prerolling(
+                (slots["prerolling_angle"], slots["prerolling_torque"]),
+                functools.partial(prerolling.contact_rest_stiffness, self.model.pair),
+                self.prerolling_stiffness,
+                self._sigma0,
+                self._excess,
+                self._stribeck,
+                self.prerolling_exponent,
+                self._pr_angle,
+                self._pr_torque,
+                coulomb,
+            )
+        return True
+
+    def _read_shared_step(self, step):
+        self._point = step.point
+        if self._carry is not None:
+            self._pr_angle, self._pr_torque = step.prerolling_angle, step.prerolling_torque
+            self._sigma0, self._excess, self._coulomb = step.sigma0, step.excess, step.coulomb
 
     # ------------------------------------------------------------------ pre-rolling
     def _prerolling_point(self, state, temps):

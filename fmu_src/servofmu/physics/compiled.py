@@ -40,6 +40,7 @@ MODULES = (
     "pair.balls",
     "pair.continuation",
     "shared_step",
+    "pair.stepping",
     "thermal.stepping",
     "drives.stepping",
     "drives.motor_stepping",

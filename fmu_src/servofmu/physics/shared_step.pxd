@@ -16,4 +16,5 @@ cdef class SharedStep:
     cpdef arm(self, double time)
     cpdef disarm(self)
     cpdef step(self, double t, double h)
+    cdef bint inputs_changed(self)
     cdef bint advance(self, double t, double h)

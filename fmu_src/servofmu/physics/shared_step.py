@@ -6,7 +6,9 @@ outputs through the library (the block's layout: :mod:`servofmu.fmus.shared_valu
 :class:`SharedStep` keeps the rules of the slave's step that do not depend on the model (the
 FMI state, the communication point and step size, the inputs' ranges) and asks its model's
 subclass to :meth:`~SharedStep.advance` on the block: read the inputs, step, and write the
-outputs, or decline before it changes anything. A step it takes is one the slave's Python
+outputs, or decline having changed nothing the slave's own step would not repeat (a model may
+have solved its state at the new inputs: a model that keeps its last answer gives the slave's
+step the same one; the block's outputs it wrote are the slave's to overwrite). A step it takes is one the slave's Python
 path would have taken with fmi2OK and the same values; any other call (the first step, a
 step size that is not finite, an input out of range, a model's warning or failure to come)
 goes to the slave's own ``do_step`` (``fallback``), the one authority on the state machine,
@@ -132,8 +134,15 @@ class SharedStep:
         return True
 
     @cython.cfunc
+    def inputs_changed(self) -> cython.bint:
+        """Whether the inputs changed since the outputs were computed (during
+        :meth:`advance`: before this step)."""
+        return self.header[DIRTY] != 0
+
+    @cython.cfunc
     def advance(self, t: cython.double, h: cython.double) -> cython.bint:
         """The model's step from ``t`` [s] over ``h`` [s] on the block: read the inputs, step,
-        write the outputs and return True; or return False having changed nothing (the
-        slave's Python path then takes the step). The base class declines every step."""
+        write the outputs and return True; or return False having changed nothing that the
+        slave's Python path, which then takes the step, would not repeat (module docstring).
+        The base class declines every step."""
         return False

@@ -205,3 +205,16 @@ class BearingModel:
         """Outputs over an array of temperatures [K] at one speed [rad/s] and axial load [N],
         vectorised and exact (zero radial load)."""
         return operating_outputs(self.pair, temperatures, speed, axial_load)
+
+
+def shared_step(*args, implementation: str | None = None):
+    """The BearingFriction FMU's step on the values it shares with servofmu's export
+    (:class:`.stepping.PairSharedStep`; ``args``: those of
+    :class:`~servofmu.physics.shared_step.SharedStep`), of ``implementation`` ("compiled",
+    "python"; None: the one :mod:`.compiled` chose, as :class:`BearingModel`'s).
+
+    Returns
+    -------
+    PairSharedStep
+    """
+    return compiled.module("pair.stepping", implementation).PairSharedStep(*args)
