@@ -65,6 +65,39 @@ def _parts(t):
     return {f"{p}_temperature": t + d for p, d in zip(PARTS, (0.0, 2.0, 0.5, 1.5), strict=True)}
 
 
+def _actuator_script(position, temperature, beyond=None):
+    """ActuatorStiffness's script; ``position(k)``: the position inputs at step k (angle and
+    speed, or the motor's), ``temperature(T)``: the temperature inputs at T [K]; ``beyond``:
+    a position the linkage cannot reach (its step is discarded), if any."""
+
+    def inputs(k, torque, t=293.15):
+        return {**position(k), **temperature(t), "load_torque": torque}
+
+    return [
+        *_steps(lambda k: inputs(k, 150.0 * math.sin(0.4 * k)), 30, 1e-2),  # moment through 0
+        *_steps(lambda k: {}, 3, 1e-2),  # the inputs kept: nothing to compute
+        ("save",),
+        *_steps(lambda k: inputs(30 + k, 100.0, 293.15 - 6.0 * k), 20, 1e-2),
+        ("restore",),
+        *_steps(lambda k: inputs(k, -80.0, 350.0), 5, 1e-2),
+        ("save",),
+        *([] if beyond is None else [("step", {**beyond, "load_torque": 10.0}, 1e-2)]),
+        *([] if beyond is None else [("restore",)]),
+        *_steps(lambda k: inputs(k, 1e9), 1, 1e-2),  # out of range: error
+        ("restore",),
+        *_steps(lambda k: inputs(k, 50.0), 3, 1e-2),
+        *_steps(lambda k: inputs(k, 50.0), 1, -1e-2),  # not a step size: error
+    ]
+
+
+def _output_side(k):
+    return {"angle": 0.6 * math.sin(0.2 * k), "speed": 0.12 * math.cos(0.2 * k)}
+
+
+def _motor_side(k):
+    return {"motor_angle": 30.0 * math.sin(0.2 * k), "motor_speed": 6.0 * math.cos(0.2 * k)}
+
+
 #: Per case: (FMU, parameters and inputs at the start, the script of calls).
 #: ("step", {input: value}, h): set the inputs, fmi2DoStep, read every output;
 #: ("save",) / ("restore",): fmi2GetFMUstate / fmi2SetFMUstate; ("at", t): the next step's
@@ -94,6 +127,19 @@ SCRIPTS = {
         ],
     ),
     "BearingFriction": ("BearingFriction", {}, _bearing_script(_uniform)),
+    "ActuatorStiffness": ("ActuatorStiffness", {}, _actuator_script(_output_side, _uniform)),
+    "ActuatorStiffness, motor side, parts": (
+        "ActuatorStiffness",
+        dict(motor_side_inputs=True, temperature_mode="parts"),
+        _actuator_script(_motor_side, _parts, beyond={"motor_angle": 9e3}),
+    ),
+    "ActuatorStiffness, no support bearings, housing and shaft": (
+        "ActuatorStiffness",
+        dict(support_bearings=False, temperature_mode="housing_shaft"),
+        _actuator_script(
+            _output_side, lambda t: {"housing_temperature": t, "shaft_temperature": t - 4.0}
+        ),
+    ),
     "BearingFriction, pre-rolling": (
         "BearingFriction",
         dict(prerolling_model=1),
@@ -109,6 +155,17 @@ SCRIPTS = {
         dict(friction_model="skf2004", temperature_mode="housing_shaft"),
         _bearing_script(lambda t: {"housing_temperature": t, "shaft_temperature": t + 3.0}),
     ),
+}
+
+
+#: What each case's script reaches besides its refusals (warnings, Boolean outputs set,
+#: discarded steps), with every call in Python.
+REACHES = {
+    "ThermalNetwork": {"warning", "a Boolean set"},
+    **{
+        name: {"warning", "a Boolean set"} for name in SCRIPTS if name.startswith("BearingFriction")
+    },
+    "ActuatorStiffness, motor side, parts": {"discard"},
 }
 
 
@@ -163,9 +220,13 @@ def test_the_compiled_step_answers_as_the_python_path_bit_for_bit(fmus, monkeypa
         assert repr(a) == repr(b), f"answer {k}: {a} != {b}"  # repr: every bit of a float
     assert compiled_log == python_log
     # the script reaches what the compiled step must decline or hand back
-    assert any(status == 1 for status, _ in python_log)  # a warning
     assert sum(what == "step" and status == 3 for what, status, _ in python) == 2  # refused
-    assert any(what == "booleans" and any(values) for what, _, values in python)
+    reached = {
+        "warning": any(status == 1 for status, _ in python_log),
+        "a Boolean set": any(what == "booleans" and any(values) for what, _, values in python),
+        "discard": any(what == "step" and status == 2 for what, status, _ in python),
+    }
+    assert {k for k, v in reached.items() if v} == REACHES.get(name, set()), reached
     assert [what for what, status, _ in python if what == "restore" and status == 0] == [
         "restore"
     ] * sum(op == ("restore",) for op in SCRIPTS[name][2])

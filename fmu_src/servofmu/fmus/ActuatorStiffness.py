@@ -33,6 +33,7 @@ from servofmu.fmus.declarations import Var, output, real_input, real_parameter, 
 from servofmu.fmus.part_temperatures import (  # noqa: E402
     TEMPERATURE_INPUTS,
     part_inputs,
+    temperature_inputs,
     temperature_mode_parameter,
     temperatures,
 )
@@ -50,6 +51,7 @@ from servofmu.physics.drives.actuator import (  # noqa: E402
     StiffnessBreakdown,
     check_support_pair,
 )
+from servofmu.physics.drives.actuator import shared_step as actuator_shared_step  # noqa: E402
 
 _A = Actuator.from_catalog("liu2014_ema")
 # the per-step update's result: StiffnessBreakdown's fields in order
@@ -457,6 +459,23 @@ class ActuatorStiffness(ServoSlave):
         self.motor_load_torque = m / ratio
         self.output_angle = angle
         self.output_speed = self.motor_speed / ratio if self.motor_side_inputs else self.speed
+
+    shared_step = staticmethod(actuator_shared_step)
+
+    def _bind_shared_step(self, step):
+        slots = self._shared.slots
+        by_field = {v.field: v for v in self._outputs if v.field}
+        step.bind(
+            self.model.stepper,
+            self.motor_side_inputs,
+            tuple(slots[n] for n in (*_ANGLE, "speed", "motor_speed", "load_torque")),
+            tuple(slots[name] for name in temperature_inputs(self.temperature_mode)),
+            tuple(slots[by_field[f].name] for f in _BREAKDOWN),
+            tuple(by_field[f].allow_inf for f in _BREAKDOWN),
+            _RATIO_INDEX,
+            tuple(slots[n] for n in ("motor_load_torque", "output_angle", "output_speed")),
+        )
+        return True
 
     def _mechanism_angle(self) -> float:
         """The output angle δ [rad]: the angle input, or the motor angle through the exact

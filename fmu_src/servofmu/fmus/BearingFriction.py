@@ -107,9 +107,9 @@ from pythonfmu.enums import Fmi2Status  # noqa: E402
 
 from servofmu.fmus.declarations import Var, output, real_input, real_parameter, spec_parameter  # noqa: E402
 from servofmu.fmus.part_temperatures import (  # noqa: E402
-    PART_INPUTS,
     TEMPERATURE_INPUTS,
     part_inputs,
+    temperature_inputs,
     temperature_mode_parameter,
     temperatures,
 )
@@ -548,11 +548,9 @@ class BearingFriction(ServoSlave):
         if self._carry is not None and coulomb is None:
             return False
         slots = self._shared.slots
-        mode = self.temperature_mode
-        temps = ("temperature",) if mode == 1 else PART_INPUTS[:2] if mode == 2 else PART_INPUTS
         step.bind(
             self.model,
-            tuple(slots[name] for name in temps),
+            tuple(slots[name] for name in temperature_inputs(self.temperature_mode)),
             (slots["axial_load"], slots["radial_load"], slots["speed"]),
             self._state_slots,
             tuple(slots[name] for name in self._SPEED_OUTPUTS),

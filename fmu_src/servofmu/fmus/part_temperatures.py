@@ -72,3 +72,16 @@ def temperatures(slave):
         h, s = slave.housing_temperature, slave.shaft_temperature
         return (h, s, h, s)
     return tuple(getattr(slave, name) for name in PART_INPUTS)
+
+
+def temperature_inputs(mode: int) -> tuple[str, ...]:
+    """The inputs :func:`temperatures` reads in ``temperature_mode`` ``mode``: the uniform
+    ``temperature``, the housing's and the shaft's, or the four parts' (a compiled step reads
+    them from the shared values in this order).
+
+    Examples
+    --------
+    >>> temperature_inputs(2)
+    ('housing_temperature', 'shaft_temperature')
+    """
+    return ("temperature",) if mode == 1 else PART_INPUTS[:2] if mode == 2 else PART_INPUTS

@@ -16,5 +16,6 @@ cdef class SharedStep:
     cpdef arm(self, double time)
     cpdef disarm(self)
     cpdef step(self, double t, double h)
+    cdef object temperatures(self, tuple slots)
     cdef bint inputs_changed(self)
     cdef bint advance(self, double t, double h)

@@ -8,12 +8,14 @@ FMI state, the communication point and step size, the inputs' ranges) and asks i
 subclass to :meth:`~SharedStep.advance` on the block: read the inputs, step, and write the
 outputs, or decline having changed nothing the slave's own step would not repeat (a model may
 have solved its state at the new inputs: a model that keeps its last answer gives the slave's
-step the same one; the block's outputs it wrote are the slave's to overwrite). A step it takes is one the slave's Python
-path would have taken with fmi2OK and the same values; any other call (the first step, a
-step size that is not finite, an input out of range, a model's warning or failure to come)
-goes to the slave's own ``do_step`` (``fallback``), the one authority on the state machine,
-the checks and the messages. The slave reads what the steps taken here changed before any
-later call enters Python (the header's ``stale``, :meth:`.shared_values.SharedValues.pull`).
+step the same one; the block's outputs it wrote are the slave's to overwrite).
+
+A step it takes is one the slave's Python path would have taken with fmi2OK and the same
+values; any other call (the first step, a step size that is not finite, an input out of
+range, a model's warning or failure to come) goes to the slave's own ``do_step``
+(``fallback``), the one authority on the state machine, the checks and the messages. The
+slave reads what the steps taken here changed before any later call enters Python (the
+header's ``stale``, :meth:`.shared_values.SharedValues.pull`).
 
 Written in Cython's pure-Python mode; the build compiles it (:mod:`servofmu.physics.compiled`).
 
@@ -132,6 +134,22 @@ class SharedStep:
         self.header[STALE] = 1
         self.time = t + h
         return True
+
+    @cython.cfunc
+    def temperatures(self, slots: tuple):
+        """The parts' temperatures [K] as the physics takes them from the inputs at ``slots``
+        (servofmu.fmus.part_temperatures: 1 slot, the uniform temperature, a float; 2, the
+        housing's and the shaft's, (h, s, h, s); 4, the parts')."""
+        values = self.values
+        k: cython.Py_ssize_t = slots[0]
+        if len(slots) == 1:
+            return values[k]
+        j: cython.Py_ssize_t = slots[1]
+        if len(slots) == 2:
+            return (values[k], values[j], values[k], values[j])
+        m: cython.Py_ssize_t = slots[2]
+        n: cython.Py_ssize_t = slots[3]
+        return (values[k], values[j], values[m], values[n])
 
     @cython.cfunc
     def inputs_changed(self) -> cython.bint:

@@ -853,3 +853,17 @@ def _finite_float(name: str, value, unit: str) -> float:
     if not math.isfinite(v):
         raise ValueError(f"{name} = {v!r} {unit} is outside the valid range (-inf, inf)")
     return v
+
+
+def shared_step(*args, implementation: str | None = None):
+    """The ActuatorStiffness FMU's step on the values it shares with servofmu's export
+    (:class:`.stepping.ActuatorSharedStep`; ``args``: those of
+    :class:`~servofmu.physics.shared_step.SharedStep`), of ``implementation`` ("compiled",
+    "python"; None: the one :mod:`servofmu.physics.compiled` chose, as
+    :class:`ActuatorModel`'s).
+
+    Returns
+    -------
+    ActuatorSharedStep
+    """
+    return compiled.module("drives.stepping", implementation).ActuatorSharedStep(*args)

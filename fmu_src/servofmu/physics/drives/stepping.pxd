@@ -1,6 +1,8 @@
 # Declarations of stepping.py for its compilation.
 cimport cython
 
+from servofmu.physics._shared_step cimport SharedStep
+
 cdef double _compliance(double k, int i)
 
 
@@ -29,3 +31,11 @@ cdef class ActuatorStepper:
     cpdef double output_angle(self, double motor_angle)
     cpdef tuple evaluate(self, double delta, double m, object temperature)
     cdef double _support(self, double f3, object temperature)
+
+
+@cython.final
+cdef class ActuatorSharedStep(SharedStep):
+    cdef ActuatorStepper stepper
+    cdef bint motor_side
+    cdef tuple inputs, temperature_slots, breakdown, infinite, outputs
+    cdef Py_ssize_t ratio_index

@@ -30,7 +30,8 @@ except ImportError:  # no Cython: its pure-Python mode's names as no-ops
     from ..kernels import _cython_shadow as cython
 
 if cython.compiled:
-    from cython.cimports.libc.math import copysign, fabs
+    from cython.cimports.libc.math import INFINITY, copysign, fabs, isfinite
+    from cython.cimports.servofmu.physics._shared_step import SharedStep
     from cython.cimports.servofmu.physics.kernels._elementary import (
         arccos,
         arcsin,
@@ -45,7 +46,8 @@ if cython.compiled:
         tan,
     )
 else:
-    from math import copysign
+    from math import copysign, isfinite
+    from math import inf as INFINITY
 
     from ..kernels.elementary import (
         arccos,
@@ -60,6 +62,7 @@ else:
         sqrt,
         tan,
     )
+    from ..shared_step import SharedStep
 
     fabs = abs  # floats or arrays
 
@@ -426,3 +429,75 @@ def _compliance(k: cython.double, i: cython.int) -> cython.double:
     if not k > 0.0:
         raise ValueError(f"stiffness[{i}] = {k!r} must be > 0")
     return 1.0 / k
+
+
+@cython.final
+@cython.cclass
+class ActuatorSharedStep(SharedStep):
+    """The ActuatorStiffness FMU's step on the values it shares with servofmu's export
+    (:class:`~servofmu.physics.shared_step.SharedStep`): when the inputs changed, the output
+    angle (the angle input, or the motor angle through :meth:`ActuatorStepper.output_angle`),
+    :meth:`ActuatorStepper.evaluate` and the outputs from it, as the slave computes them, read
+    from and written to the block. An output that is not finite is declined (the slave's
+    message); an exception (a linkage that cannot close) is the slave's failure mid-step."""
+
+    def bind(
+        self,
+        stepper: ActuatorStepper,
+        motor_side: cython.bint,
+        inputs: tuple,
+        temperatures: tuple,
+        breakdown: tuple,
+        infinite: tuple,
+        ratio: cython.Py_ssize_t,
+        outputs: tuple,
+    ):
+        """The slave's ``stepper``; whether the position is the motor's (``motor_side``); the
+        slots of the inputs (angle, motor angle, speed, motor speed, load torque; -1: none)
+        and of the ``temperatures`` (as :meth:`~.SharedStep.temperatures` reads them); the
+        slots of evaluate's values in its order (``breakdown``), whether each may be +inf
+        (``infinite``: the output allows it), the position of the reduction ratio among them,
+        and the slots of the motor load torque, output angle and output speed."""
+        self.stepper = stepper
+        self.motor_side = motor_side
+        self.inputs = inputs
+        self.temperature_slots = temperatures
+        self.breakdown = breakdown
+        self.infinite = infinite
+        self.ratio_index = ratio
+        self.outputs = outputs
+
+    @cython.cfunc
+    def advance(self, t: cython.double, h: cython.double) -> cython.bint:
+        if not self.inputs_changed():
+            return True
+        values = self.values
+        k: cython.Py_ssize_t
+        slot: cython.Py_ssize_t = self.inputs[1 if self.motor_side else 0]
+        angle: cython.double = values[slot]
+        if self.motor_side:
+            angle = self.stepper.output_angle(angle)
+        slot = self.inputs[4]
+        m: cython.double = values[slot]
+        result: tuple = self.stepper.evaluate(angle, m, self.temperatures(self.temperature_slots))
+        ratio: cython.double = result[self.ratio_index]
+        if ratio == 0.0:  # the slave's division fails, with Python's message
+            return False
+        slot = self.inputs[3 if self.motor_side else 2]
+        speed: cython.double = values[slot]
+        last: tuple = (m / ratio, angle, speed / ratio if self.motor_side else speed)
+        x: cython.double
+        for k in range(len(result)):
+            x = result[k]
+            if not (isfinite(x) or (x == INFINITY and self.infinite[k])):
+                return False
+        for k in range(3):
+            if not isfinite(last[k]):
+                return False
+        for k in range(len(result)):
+            slot = self.breakdown[k]
+            values[slot] = result[k]
+        for k in range(3):
+            slot = self.outputs[k]
+            values[slot] = last[k]
+        return True

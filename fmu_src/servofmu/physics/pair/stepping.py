@@ -71,7 +71,7 @@ class PairSharedStep(SharedStep):
         given) and ``below_flow(t)``, whether the lubricant at t [K] is below it."""
         self.model = model
         self.solver = model.solver
-        self.temperatures = temperatures
+        self.temperature_slots = temperatures
         self.axial, self.radial, self.speed = loads[0], loads[1], loads[2]
         self.state_outputs = state_outputs
         self.speed_slots = speed_outputs
@@ -116,7 +116,8 @@ class PairSharedStep(SharedStep):
         point = self.point
         state = None
         if self.inputs_changed():  # the outputs from the inputs
-            point = (self._temperatures(), values[self.axial], values[self.radial])
+            temps = self.temperatures(self.temperature_slots)
+            point = (temps, values[self.axial], values[self.radial])
             if point != self.point:
                 state = self.model.update(point[0], point[1], point[2])
                 if not self._keeps_flags(state, point[0]):
@@ -138,21 +139,6 @@ class PairSharedStep(SharedStep):
                 return False
         self.point = point
         return True
-
-    @cython.cfunc
-    def _temperatures(self):
-        """The temperatures [K] the model takes, from the block (as the slave reads them)."""
-        slots: tuple = self.temperatures
-        values = self.values
-        k: cython.Py_ssize_t = slots[0]
-        if len(slots) == 1:
-            return values[k]
-        j: cython.Py_ssize_t = slots[1]
-        if len(slots) == 2:
-            return (values[k], values[j], values[k], values[j])
-        m: cython.Py_ssize_t = slots[2]
-        n: cython.Py_ssize_t = slots[3]
-        return (values[k], values[j], values[m], values[n])
 
     @cython.cfunc
     def _keeps_flags(self, state, temps) -> cython.bint:
