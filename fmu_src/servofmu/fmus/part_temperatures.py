@@ -79,6 +79,10 @@ def temperature_inputs(mode: int) -> tuple[str, ...]:
     ``temperature``, the housing's and the shaft's, or the four parts' (a compiled step reads
     them from the shared values in this order).
 
+    Returns
+    -------
+    tuple of str
+
     Examples
     --------
     >>> temperature_inputs(2)

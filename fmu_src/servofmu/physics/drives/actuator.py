@@ -865,5 +865,11 @@ def shared_step(*args, implementation: str | None = None):
     Returns
     -------
     ActuatorSharedStep
+
+    Examples
+    --------
+    >>> step = shared_step(bytearray(32), 0, 0, 2, False, None, None)  # a block of no values
+    >>> type(step).__name__, step.armed
+    ('ActuatorSharedStep', False)
     """
     return compiled.module("drives.stepping", implementation).ActuatorSharedStep(*args)

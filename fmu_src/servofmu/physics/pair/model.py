@@ -216,5 +216,11 @@ def shared_step(*args, implementation: str | None = None):
     Returns
     -------
     PairSharedStep
+
+    Examples
+    --------
+    >>> step = shared_step(bytearray(32), 0, 0, 2, False, None, None)  # a block of no values
+    >>> type(step).__name__, step.armed
+    ('PairSharedStep', False)
     """
     return compiled.module("pair.stepping", implementation).PairSharedStep(*args)

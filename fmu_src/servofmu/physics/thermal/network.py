@@ -384,6 +384,12 @@ def shared_step(*args, implementation: str | None = None):
     Returns
     -------
     NetworkSharedStep
+
+    Examples
+    --------
+    >>> step = shared_step(bytearray(32), 0, 0, 2, False, None, None)  # a block of no values
+    >>> type(step).__name__, step.armed
+    ('NetworkSharedStep', False)
     """
     return compiled.module("thermal.stepping", implementation).NetworkSharedStep(*args)
 
