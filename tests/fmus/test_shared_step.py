@@ -17,6 +17,7 @@ from fmpy.fmi1 import FMICallException
 from fmu_helpers import Fmu
 
 from servofmu.build.exportlib import compiled_export
+from servofmu.build.fmu import FMUS
 from servofmu.fmus import shared_values
 from servofmu.fmus.part_temperatures import PARTS
 from servofmu.fmus.runtime import ServoSlave
@@ -98,6 +99,41 @@ def _motor_side(k):
     return {"motor_angle": 30.0 * math.sin(0.2 * k), "motor_speed": 6.0 * math.cos(0.2 * k)}
 
 
+def _stepped_script(name, inputs, huge, too_long):
+    """The script of a stepped FMU: ``inputs(k)`` at step k, a value out of range ``huge``
+    ({input: value}), and a step size holding too many sub-steps or samples (discarded)."""
+    return [
+        *_steps(inputs, 30, 1e-3),
+        *_steps(lambda k: {}, 3, 1e-3),  # the inputs kept
+        ("save",),
+        *_steps(lambda k: inputs(30 + k), 10, 0.5e-3),
+        ("restore",),
+        *_steps(lambda k: inputs(40 + k), 5, 2.5e-3),
+        *_steps(lambda k: inputs(50 + k), 1, too_long),  # discarded
+        ("restore",),
+        ("save",),
+        *_steps(lambda k: huge, 1, 1e-3),  # out of range: error
+        ("restore",),
+        *_steps(lambda k: inputs(60 + k), 3, 1e-3),
+        ("at", 1e6),  # does not continue the last step
+        *_steps(lambda k: inputs(60 + k), 1, 1e-3),
+    ]
+
+
+def _motor_inputs(k):
+    friction = 0.0 if k % 10 < 5 else 2e-3  # without friction, then with it
+    return {
+        "voltage": 6.0 * math.sin(0.3 * k),
+        "load_torque": 1e-3 * math.cos(0.2 * k),
+        "friction_running_torque": friction,
+        "friction_breakaway_torque": 1.5 * friction,
+    }
+
+
+def _controller_inputs(k):
+    return {"reference": 1.0 if k % 20 < 10 else 50.0, "measurement": 0.02 * k}
+
+
 #: Per case: (FMU, parameters and inputs at the start, the script of calls).
 #: ("step", {input: value}, h): set the inputs, fmi2DoStep, read every output;
 #: ("save",) / ("restore",): fmi2GetFMUstate / fmi2SetFMUstate; ("at", t): the next step's
@@ -127,6 +163,16 @@ SCRIPTS = {
         ],
     ),
     "BearingFriction": ("BearingFriction", {}, _bearing_script(_uniform)),
+    "DCMotor": (
+        "DCMotor",
+        {},
+        _stepped_script("DCMotor", _motor_inputs, {"voltage": 1e5}, 20.0),
+    ),
+    "ServoController": (
+        "ServoController",
+        {},
+        _stepped_script("ServoController", _controller_inputs, {"reference": 1e12}, 200.0),
+    ),
     "ActuatorStiffness": ("ActuatorStiffness", {}, _actuator_script(_output_side, _uniform)),
     "ActuatorStiffness, motor side, parts": (
         "ActuatorStiffness",
@@ -166,6 +212,8 @@ REACHES = {
         name: {"warning", "a Boolean set"} for name in SCRIPTS if name.startswith("BearingFriction")
     },
     "ActuatorStiffness, motor side, parts": {"discard"},
+    "DCMotor": {"discard"},
+    "ServoController": {"discard"},
 }
 
 
@@ -265,7 +313,7 @@ def test_the_compiled_step_takes_the_steady_steps(fmus, python_steps, name):
     fmu.close()
 
 
-def test_a_model_without_a_compiled_step_keeps_its_own(fmus):
-    for name in ("DCMotor", "ServoController"):
-        assert importlib.import_module(f"servofmu.fmus.{name}").__dict__[name].shared_step is None
-    assert math.isfinite(Fmu(fmus["DCMotor"], "inst").init().get("speed"))
+def test_every_fmu_has_a_compiled_step():
+    for name in FMUS:
+        assert importlib.import_module(f"servofmu.fmus.{name}").__dict__[name].shared_step
+    assert {model for model, _, _ in SCRIPTS.values()} == set(FMUS)

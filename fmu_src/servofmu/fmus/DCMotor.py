@@ -27,6 +27,8 @@ _P = DCMotorParameters()
 MAX_SUBSTEPS = 100_000
 _SRC = "assumed: a small brushed torque motor driving a gimbal axis"
 _STATE = ("current", "speed", "angle")  # the motor's state: outputs, set by initial_<name>
+#: the inputs a step takes, in the order of the compiled step's (motor_stepping.MotorSharedStep)
+_FORCING = ("voltage", "load_torque", "friction_running_torque", "friction_breakaway_torque")
 
 
 def _param(name, description, **kw):
@@ -238,6 +240,22 @@ class DCMotor(ServoSlave):
         if self._error:
             return False
         self._set_state(new)
+        return True
+
+    shared_step = staticmethod(motor.shared_step)
+
+    def _bind_shared_step(self, step):
+        slots = self._shared.slots
+        step.bind(
+            self.params,
+            motor.step_unchecked,
+            motor.step_with_friction_unchecked,
+            self.max_substep,
+            MAX_SUBSTEPS,
+            tuple(_RANGES[name][:2] for name in _STATE),
+            tuple(slots[name] for name in _FORCING),
+            tuple(slots[name] for name in (*_STATE, "motor_torque", "friction_torque")),
+        )
         return True
 
     def _set_state(self, x):

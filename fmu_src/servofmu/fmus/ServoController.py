@@ -12,6 +12,7 @@ servofmu.share_copy(Path(__file__).parent)  # first of all: see its docstring
 
 from servofmu.fmus.declarations import Item, Var, output, real_input, real_parameter  # noqa: E402
 from servofmu.fmus.runtime import ServoSlave  # noqa: E402
+from servofmu.physics.drives import control  # noqa: E402
 from servofmu.physics.drives.control import MODES, PIDParameters, PIDState, pid_sample  # noqa: E402
 
 #: The most samples one fmi2DoStep computes (the work per call is bounded: a longer step is
@@ -137,6 +138,25 @@ class ServoController(ServoSlave):
             )
         self.next_sample = max(self.next_sample, last)
         return True
+
+    shared_step = staticmethod(control.shared_step)
+
+    def _bind_shared_step(self, step):
+        slots = self._shared.slots
+        step.bind(
+            self.params,
+            pid_sample,
+            self.pid,
+            self.next_sample,
+            self._start_time,
+            MAX_SAMPLES,
+            (slots["reference"], slots["measurement"]),
+            slots["command"],
+        )
+        return True
+
+    def _read_shared_step(self, step):
+        self.pid, self.next_sample = step.pid, step.next_sample
 
     def state_problem(self):
         # every step leaves next_sample at the first sample instant not yet due

@@ -44,6 +44,7 @@ MODULES = (
     "thermal.stepping",
     "drives.stepping",
     "drives.motor_stepping",
+    "drives.control_stepping",
 )
 
 _HERE = Path(__file__).resolve().parent

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .. import compiled
 from .._checks import check_choice, check_finite, check_nonnegative, check_positive
 
 MODES = ("position", "speed")
@@ -96,3 +97,22 @@ def pid_sample(p: PIDParameters, s: PIDState, reference: float, measurement: flo
     winding_up = (v > p.output_max and e > 0) or (v < p.output_min and e < 0)
     integral = s.integral if winding_up else s.integral + p.ki * ts * e
     return u, PIDState(integral, d, measurement)
+
+
+def shared_step(*args, implementation: str | None = None):
+    """The ServoController FMU's step on the values it shares with servofmu's export
+    (:class:`.control_stepping.ControllerSharedStep`; ``args``: those of
+    :class:`~servofmu.physics.shared_step.SharedStep`), of ``implementation`` ("compiled",
+    "python"; None: the one :mod:`servofmu.physics.compiled` chose).
+
+    Returns
+    -------
+    ControllerSharedStep
+
+    Examples
+    --------
+    >>> step = shared_step(bytearray(32), 0, 0, 2, True, None, None)  # a block of no values
+    >>> type(step).__name__, step.armed
+    ('ControllerSharedStep', False)
+    """
+    return compiled.module("drives.control_stepping", implementation).ControllerSharedStep(*args)

@@ -281,3 +281,22 @@ def step_with_friction_unchecked(
     return _stepping.friction_substeps(
         phi, gamma, i, w, a, voltage, load_torque, n, running_friction, breakaway_friction
     )
+
+
+def shared_step(*args, implementation: str | None = None):
+    """The DCMotor FMU's step on the values it shares with servofmu's export
+    (:class:`.motor_stepping.MotorSharedStep`; ``args``: those of
+    :class:`~servofmu.physics.shared_step.SharedStep`), of ``implementation`` ("compiled",
+    "python"; None: the one :mod:`servofmu.physics.compiled` chose).
+
+    Returns
+    -------
+    MotorSharedStep
+
+    Examples
+    --------
+    >>> step = shared_step(bytearray(32), 0, 0, 2, True, None, None)  # a block of no values
+    >>> type(step).__name__, step.armed
+    ('MotorSharedStep', False)
+    """
+    return compiled.module("drives.motor_stepping", implementation).MotorSharedStep(*args)

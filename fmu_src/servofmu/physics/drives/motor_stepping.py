@@ -23,10 +23,13 @@ except ImportError:  # no Cython: its pure-Python mode's names as no-ops
     from ..kernels import _cython_shadow as cython
 
 if cython.compiled:
-    from cython.cimports.libc.math import copysign, fabs
+    from cython.cimports.libc.math import ceil, copysign, fabs, isfinite
+    from cython.cimports.servofmu.physics._shared_step import SharedStep
 else:
-    from math import copysign
+    from math import ceil, copysign, isfinite
     from math import fabs as fabs
+
+    from ..shared_step import SharedStep
 
 
 @cython.ccall
@@ -110,3 +113,76 @@ def friction_substeps(
         a = f2 + g21 * friction
         total += friction
     return (i, w, a), total / substeps
+
+
+@cython.final
+@cython.cclass
+class MotorSharedStep(SharedStep):
+    """The DCMotor FMU's step on the values it shares with servofmu's export
+    (:class:`~servofmu.physics.shared_step.SharedStep`): the motor's state (its outputs
+    current, speed and angle) over the step by the same functions as the slave (``plain``
+    without friction, ``with_friction`` with it: :mod:`.motor`'s ``step_unchecked`` and
+    ``step_with_friction_unchecked``), and motor_torque = k_t·i. A step of more sub-steps than
+    the slave allows, or one that leaves the state not finite or outside the ranges a state
+    can be given, is declined (the slave's message)."""
+
+    def bind(
+        self,
+        params,
+        plain,
+        with_friction,
+        substep: cython.double,
+        most: cython.double,
+        ranges: tuple,
+        inputs: tuple,
+        outputs: tuple,
+    ):
+        """The slave's motor ``params`` (DCMotorParameters); the step functions ``plain`` and
+        ``with_friction``; the longest sub-step [s] and the most sub-steps of a step; the
+        (lo, hi) of current [A], speed [rad/s] and angle [rad]; the slots of the inputs
+        (voltage, load torque, running and breakaway friction) and of the outputs (current,
+        speed, angle, motor torque, friction torque)."""
+        self.params = params
+        self.torque_constant = params.torque_constant
+        self.plain, self.with_friction = plain, with_friction
+        self.substep, self.most = substep, most
+        self.ranges, self.inputs, self.outputs = ranges, inputs, outputs
+
+    @cython.cfunc
+    def advance(self, t: cython.double, h: cython.double) -> cython.bint:
+        values = self.values
+        k: cython.Py_ssize_t
+        slot: cython.Py_ssize_t
+        x: cython.double
+        if ceil(h / self.substep - 1e-9) > self.most:
+            return False
+        state: list = [0.0, 0.0, 0.0]
+        for k in range(3):
+            slot = self.outputs[k]
+            state[k] = values[slot]
+        u: list = [0.0, 0.0, 0.0, 0.0]
+        for k in range(4):
+            slot = self.inputs[k]
+            u[k] = values[slot]
+        friction: cython.double = 0.0
+        if u[2] == 0.0 and u[3] == 0.0:
+            new = self.plain(self.params, tuple(state), u[0], u[1], h)
+        else:
+            new, friction = self.with_friction(
+                self.params, tuple(state), u[0], u[1], h, u[2], u[3], self.substep
+            )
+        for k in range(3):
+            x = new[k]
+            lo, hi = self.ranges[k]
+            if not (isfinite(x) and lo <= x <= hi):
+                return False
+        for k in range(3):
+            slot = self.outputs[k]
+            values[slot] = new[k]
+        slot = self.outputs[0]
+        x = values[slot]
+        slot = self.outputs[3]
+        values[slot] = self.torque_constant * x
+        slot = self.outputs[4]
+        values[slot] = friction
+        return True

@@ -20,6 +20,7 @@ compiled = False
 double = float
 bint = bool
 int = int
+longlong = int
 Py_ssize_t = int
 
 
