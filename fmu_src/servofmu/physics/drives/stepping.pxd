@@ -3,6 +3,9 @@ cimport cython
 
 from servofmu.physics._shared_step cimport SharedStep
 
+# the module's constants, as C values (its _NAME: cython.<type> = ... lines)
+cdef double _SMALLEST_MOMENT, _SMALLEST_SCREW_FORCE, _INF
+
 cdef double _compliance(double k, int i)
 
 

@@ -1,4 +1,8 @@
 # Declarations of contact.py for the compiled modules that call it in C.
+
+# the module's constants, as C values (its _NAME: cython.<type> = ... lines)
+cdef double _PI
+
 cpdef double diametral_clearance(double inner_groove, double outer_groove, double ball_diameter)
 cpdef double curvature_distance(double inner_radius, double outer_radius, double ball_diameter)
 cpdef double pitch_diameter(double inner_groove, double outer_groove)

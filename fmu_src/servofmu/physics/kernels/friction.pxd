@@ -1,4 +1,8 @@
 # Declarations of friction.py for the compiled modules that call it in C.
+
+# the module's constants, as C values (its _NAME: cython.<type> = ... lines)
+cdef double _HEATHCOTE, _THRESHOLD, _TWO_THIRDS, _CST, _MM, _NMM, _RPM
+
 cpdef double hysteresis_force(double load, double semi_minor_axis, double ball_diameter,
                               double loss_factor)
 cpdef double contact_spin_moment(double load, double semi_major_axis, double e_integral,

@@ -184,7 +184,7 @@ def palmgren_torque(
     """
     nu_n = kinematic_viscosity / _CST * abs(speed) / _RPM
     dm_mm = pitch_diameter / _MM
-    return 1e-7 * s0 * maximum(nu_n, _THRESHOLD) ** _TWO_THIRDS * dm_mm**3 * _NMM
+    return 1e-7 * s0 * power(maximum(nu_n, _THRESHOLD), _TWO_THIRDS) * dm_mm**3 * _NMM
 
 
 @cython.ccall

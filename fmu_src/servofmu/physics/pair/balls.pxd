@@ -3,6 +3,9 @@ cimport cython
 
 from servofmu.physics.pair._constants cimport PairConstants, Thermal
 
+# the module's constants, as C doubles (its _NAME: cython.double = ... lines)
+cdef double _DRIFT, _REDO, _G_SPAN, _F_SPAN, _THIRD
+
 ctypedef (double, double, double, double, double, double, double, double, double, double, double, double, double, double, double, double) Terms
 ctypedef (double, double, double, double, double, double, double, double) Ring
 ctypedef (double, double, double, double, double, double, double, double, double, bint) Sums

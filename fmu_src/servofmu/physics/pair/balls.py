@@ -527,6 +527,10 @@ def ring_point(th: Thermal, c: PairConstants, a: cython.double, dr: cython.doubl
     k21: cython.double
     k22: cython.double
     held: cython.double
+    ci: cython.double
+    co: cython.double
+    w: cython.double
+    wc: cython.double
     for b in balls:
         cp = b.cos_psi
         s, sin_a, cos_a, delta = ball_contact(a, a2_0 + dr * cp, dist)
@@ -685,6 +689,27 @@ def ring_sums(th: Thermal, c: PairConstants, balls: list, ehl: object = None) ->
     sp_o: cython.double
     anc_i: Anchor
     anc_o: Anchor
+    a_i: cython.double
+    a_o: cython.double
+    k_i: cython.double
+    k_o: cython.double
+    e_i: cython.double
+    e_o: cython.double
+    b_i: cython.double
+    b_o: cython.double
+    q3: cython.double
+    qa_i: cython.double
+    qa_o: cython.double
+    r_in: cython.double
+    r_out: cython.double
+    h_i: cython.double
+    h_o: cython.double
+    sl_i: cython.double
+    sl_o: cython.double
+    sin_abs: cython.double
+    p: cython.double
+    drift_i: cython.double
+    drift_o: cython.double
     for b in balls:
         q = b.load
         if q <= 0.0:

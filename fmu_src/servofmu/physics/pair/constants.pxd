@@ -3,6 +3,10 @@ cimport cython
 
 from servofmu.physics.pair._rows cimport PairRows
 
+# the module's constants, as C values (its _NAME: cython.<type> = ... lines)
+cdef double _INF, _CST
+cdef int _NO_LAW, _WALTHER, _VOGEL, _OTHER_LAW
+
 
 @cython.final
 cdef class PairConstants:

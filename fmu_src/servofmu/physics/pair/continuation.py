@@ -137,19 +137,20 @@ START_SMALLEST_STAGE = 1.0 / 256.0
 #: Rounds of anchor renewal within one step before the step starts again.
 MAX_ANCHOR_ROUNDS = 6
 
-# the same numbers as C doubles for the compiled path (module globals are Python objects)
-_ROUNDS: cython.int = MAX_ANCHOR_ROUNDS
-_ITERATIONS: cython.int = MAX_ITERATIONS
-_START_ITERATIONS: cython.int = START_ITERATIONS
+# the same numbers as C values for the compiled path (cython.declare: an annotated module
+# global would stay a Python object)
+_ROUNDS = cython.declare(cython.int, MAX_ANCHOR_ROUNDS)
+_ITERATIONS = cython.declare(cython.int, MAX_ITERATIONS)
+_START_ITERATIONS = cython.declare(cython.int, START_ITERATIONS)
 #: Newton stops at the first point whose next correction is below this fraction of the
 #: curvature distance A (≈ 1e-16 m for the catalogue bearings, the exact path's tolerance) ...
-_TOLERANCE: cython.double = 1e-12
+_TOLERANCE = cython.declare(cython.double, 1e-12)
 #: ... and below this fraction of the smallest deflection of a loaded ball (a ball load
 #: Q ∝ δ^1.5 and its stiffness ∝ δ^0.5 then move by less than 3e-10 of their value), unless it
 #: is below rounding (this fraction of A).
-_DEFLECTION_TOLERANCE: cython.double = 2e-10
-_ROUNDING: cython.double = 1e-15
-_INF: cython.double = math.inf
+_DEFLECTION_TOLERANCE = cython.declare(cython.double, 2e-10)
+_ROUNDING = cython.declare(cython.double, 1e-15)
+_INF = cython.declare(cython.double, math.inf)
 
 # The speed terms: a C struct compiled, a tuple uncompiled.
 Speed = cython.typedef(
@@ -226,8 +227,8 @@ def _parallel(
     return dot / n0
 
 
-_AXIAL: cython.int = 1
-_RADIAL: cython.int = 2
+_AXIAL = cython.declare(cython.int, 1)
+_RADIAL = cython.declare(cython.int, 2)
 _MODE_NAMES = {0: None, 1: "axial", 2: "radial"}
 
 

@@ -1,6 +1,10 @@
 # Declarations of rows.py for the compiled modules that call it in C.
 cimport cython
 
+# the module's constants, as C values (its _NAME: cython.<type> = ... lines)
+cdef double _INF
+cdef int _LOOP, _RIGID, _TANDEM
+
 ctypedef (bint, double, double, double, double) Step
 
 cpdef double preload_force(double force_a, double force_b)
