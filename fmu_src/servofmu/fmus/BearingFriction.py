@@ -120,6 +120,7 @@ from servofmu.physics import compiled as continuation  # noqa: E402
 from servofmu.physics.bearing import BearingModel  # noqa: E402
 from servofmu.physics.friction import prerolling, registry  # noqa: E402
 from servofmu.physics.pair import model as pair_model  # noqa: E402
+from servofmu.physics.pair import stepping as pair_stepping  # noqa: E402
 from servofmu.physics.pair.state import PointState  # noqa: E402
 
 if __doc__:  # the friction models' items, from the registry (absent under python -OO)
@@ -485,10 +486,12 @@ class BearingFriction(ServoSlave):
         # the outputs that do not move with speed: copied from the model's PointState
         self._copy_state = self.output_copier(PointState.__dataclass_fields__)
         if self._shared is not None:  # the same outputs, for the compiled step
-            state = [v for v in self._outputs if v.field in PointState.__dataclass_fields__]
+            by_field = {v.field: v.name for v in self._outputs}
             slots = self._shared.slots
-            self._state_slots = tuple((slots[v.name], v.field) for v in state if v.type == "Real")
-            self._state_flags = tuple(v for v in state if v.type == "Boolean")
+            self._state_slots = tuple(
+                slots[by_field[f]] if f in by_field else -1 for f in pair_stepping.STATE_FIELDS
+            )
+            self._state_flags = tuple(by_field[f] for f in pair_stepping.FLAG_FIELDS)
         # pre-rolling (physics/friction/prerolling.py): Dahl's state (rings' angle [rad],
         # torque [N·m]) from zero stress; with prerolling_model = 0 nothing of it runs (_carry None)
         self._pr_angle = self._pr_torque = 0.0
@@ -554,7 +557,7 @@ class BearingFriction(ServoSlave):
             (slots["axial_load"], slots["radial_load"], slots["speed"]),
             self._state_slots,
             tuple(slots[name] for name in self._SPEED_OUTPUTS),
-            tuple((v.field, getattr(self, v.name)) for v in self._state_flags),
+            pair_stepping.flag_bits(tuple(getattr(self, n) for n in self._state_flags)),
             self._point,
             self._below_flow_told,
             self.model.pair.lubricant.below_flow,

@@ -152,10 +152,19 @@ class BearingModel:
             t_h, t_s, t_o, t_i = _temperatures(temperature)
         fa, fr = float(axial_load), float(radial_load)
         point = self.solver.update(t_h, t_s, t_o, t_i, fa, fr)
-        if point is None:
-            self.exact_steps += 1
-            point = self._exact((t_h, t_s, t_o, t_i), fa, fr)
-        return point
+        return self.solve_exactly(t_h, t_s, t_o, t_i, fa, fr) if point is None else point
+
+    def solve_exactly(self, t_h: float, t_s: float, t_o: float, t_i: float, fa: float, fr: float):
+        """The state at the parts' temperatures [K] and loads [N] on the exact path, the
+        continuation seeded there (:meth:`update`, when the continuation fails; counted in
+        ``exact_steps``).
+
+        Returns
+        -------
+        PointState
+        """
+        self.exact_steps += 1
+        return self._exact((t_h, t_s, t_o, t_i), fa, fr)
 
     def evaluate(
         self, temperature, speed: float, axial_load: float = 0.0, radial_load: float = 0.0

@@ -30,11 +30,34 @@ if cython.compiled:
         dahl_torque_step,
         stribeck_torque,
     )
+    from cython.cimports.servofmu.physics.pair._point import PointState
 else:
     from math import isfinite
 
     from ..kernels.friction import dahl_torque_step, stribeck_torque
     from ..shared_step import SharedStep
+    from .point import PointState
+
+from .._checks import TEMPERATURE_RANGE
+
+#: The PointState fields a step copies to the block, read in C (:meth:`PairSharedStep.bind`):
+#: the Real ones, then the flags (Boolean outputs).
+STATE_FIELDS = (
+    "breakaway_torque",
+    "hysteresis_torque",
+    "spin_torque",
+    "sliding_torque",
+    "preload",
+    "contact_angle",
+    "radial_clearance",
+    "kinematic_viscosity",
+    "axial_stiffness",
+    "max_contact_pressure",
+    "outer_interference",
+    "inner_interference",
+    "axial_play",
+)
+FLAG_FIELDS = ("overloaded", "locked", "unloaded", "reverse_loaded", "outside_lubricant_range")
 
 
 @cython.final
@@ -56,21 +79,23 @@ class PairSharedStep(SharedStep):
         loads: tuple,
         state_outputs: tuple,
         speed_outputs: tuple,
-        flags: tuple,
+        flags: cython.int,
         point,
         checked_flow: cython.bint,
         below_flow,
     ):
         """The slave's ``model`` (:class:`.model.BearingModel`); the slots of the
         ``temperatures`` inputs (1: uniform, 2: housing and shaft, 4: the parts) and of the
-        ``loads`` (axial, radial, speed); ``state_outputs``: (slot, PointState field) of the
-        Real outputs of the state; the slots of the speed terms (friction, running, sliding,
-        viscous and grease torque, power loss); ``flags``: (PointState field, its output's
-        value) of the Boolean outputs; the last operating ``point`` ((temperatures, axial [N],
+        ``loads`` (axial, radial, speed); ``state_outputs``: the slot of each field of
+        :data:`STATE_FIELDS` (-1: not an output); the slots of the speed terms (friction,
+        running, sliding, viscous and grease torque, power loss); ``flags``: the values of the
+        Boolean outputs of :data:`FLAG_FIELDS`, bit k the k-th (:func:`flag_bits`); the last
+        operating ``point`` ((temperatures, axial [N],
         radial [N]) or None: none yet); whether the flow limit was checked (its warning
         given) and ``below_flow(t)``, whether the lubricant at t [K] is below it."""
         self.model = model
         self.solver = model.solver
+        self.lowest, self.highest = TEMPERATURE_RANGE
         self.temperature_slots = temperatures
         self.axial, self.radial, self.speed = loads[0], loads[1], loads[2]
         self.state_outputs = state_outputs
@@ -119,19 +144,19 @@ class PairSharedStep(SharedStep):
             temps = self.temperatures(self.temperature_slots)
             point = (temps, values[self.axial], values[self.radial])
             if point != self.point:
-                state = self.model.update(point[0], point[1], point[2])
+                state = self._update(point)
                 if not self._keeps_flags(state, point[0]):
                     return False
-                for slot, name in self.state_outputs:
-                    values[slot] = getattr(state, name)
+                self._write_state(state)
             terms: tuple = self.solver.speed_outputs(speed)
             for k in range(6):
                 slot = self.speed_slots[k]
                 values[slot] = terms[k]
         if self.prerolling and not self._roll(state, point, speed, h):
             return False
-        for slot, _ in self.state_outputs:
-            if not isfinite(values[slot]):
+        for k in range(len(self.state_outputs)):
+            slot = self.state_outputs[k]
+            if slot >= 0 and not isfinite(values[slot]):
                 return False
         for k in range(6):
             slot = self.speed_slots[k]
@@ -141,13 +166,66 @@ class PairSharedStep(SharedStep):
         return True
 
     @cython.cfunc
-    def _keeps_flags(self, state, temps) -> cython.bint:
-        """Whether ``state`` leaves every Boolean output as it is and the lubricant at
+    def _update(self, point: tuple):
+        """The model's state at ``point`` (:meth:`.model.BearingModel.update`: the solver's,
+        or the exact path's where it fails; temperatures outside the model's range go to the
+        model itself, which names them)."""
+        temps = point[0]
+        t_h: cython.double
+        t_s: cython.double
+        t_o: cython.double
+        t_i: cython.double
+        if type(temps) is float:
+            t_h = t_s = t_o = t_i = temps
+        else:
+            t_h, t_s, t_o, t_i = temps
+        lo: cython.double = self.lowest
+        hi: cython.double = self.highest
+        if not (lo <= t_h <= hi and lo <= t_s <= hi and lo <= t_o <= hi and lo <= t_i <= hi):
+            return self.model.update(temps, point[1], point[2])
+        state = self.solver.update(t_h, t_s, t_o, t_i, point[1], point[2])
+        if state is None:
+            state = self.model.solve_exactly(t_h, t_s, t_o, t_i, point[1], point[2])
+        return state
+
+    @cython.cfunc
+    def _write_state(self, s: PointState):
+        """The Real outputs of the state ``s`` (:data:`STATE_FIELDS`, in order) to the block."""
+        slots: tuple = self.state_outputs
+        self._put(slots[0], s.breakaway_torque)
+        self._put(slots[1], s.hysteresis_torque)
+        self._put(slots[2], s.spin_torque)
+        self._put(slots[3], s.sliding_torque)
+        self._put(slots[4], s.preload)
+        self._put(slots[5], s.contact_angle)
+        self._put(slots[6], s.radial_clearance)
+        self._put(slots[7], s.kinematic_viscosity)
+        self._put(slots[8], s.axial_stiffness)
+        self._put(slots[9], s.max_contact_pressure)
+        self._put(slots[10], s.outer_interference)
+        self._put(slots[11], s.inner_interference)
+        self._put(slots[12], s.axial_play)
+
+    @cython.cfunc
+    def _put(self, slot: cython.Py_ssize_t, x: cython.double):
+        """values[slot] = x, unless slot < 0 (not an output)."""
+        if slot >= 0:
+            self.values[slot] = x
+
+    @cython.cfunc
+    def _keeps_flags(self, s: PointState, temps) -> cython.bint:
+        """Whether the state ``s`` leaves every Boolean output as it is and the lubricant at
         ``temps`` [K] is not below its flow limit unsaid (else the slave's warnings are due)."""
-        for name, value in self.flags:
-            if bool(getattr(state, name)) != value:
-                return False
-        if state.outside_lubricant_range and not self.checked_flow:
+        bits: cython.int = (  # as flag_bits, in C
+            s.overloaded
+            | s.locked << 1
+            | s.unloaded << 2
+            | s.reverse_loaded << 3
+            | s.outside_lubricant_range << 4
+        )
+        if bits != self.flags:
+            return False
+        if s.outside_lubricant_range and not self.checked_flow:
             t = temps if type(temps) is float else 0.5 * (temps[2] + temps[3])
             return not self.below_flow(t)
         return True
@@ -188,3 +266,25 @@ class PairSharedStep(SharedStep):
         self.excess, self.sigma0, self.coulomb = excess, sigma0, tc
         self.prerolling_angle, self.prerolling_torque = angle, torque
         return True
+
+
+@cython.ccall
+def flag_bits(flags: tuple) -> cython.int:
+    """The Boolean values ``flags`` (those of :data:`FLAG_FIELDS`, in order) as bits: bit k
+    set when the k-th is true.
+
+    Returns
+    -------
+    int
+
+    Examples
+    --------
+    >>> flag_bits((True, False, False, True, False))
+    9
+    """
+    bits: cython.int = 0
+    k: cython.int
+    for k in range(len(flags)):
+        if flags[k]:
+            bits |= 1 << k
+    return bits
