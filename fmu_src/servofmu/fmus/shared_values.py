@@ -217,9 +217,7 @@ class SharedValues:
         if ints[_STALE]:
             self._read_steps(slave)
         if ints[_PENDING]:
-            if self._inputs is not None:
-                packer, offset, _, assign = self._inputs
-                assign(slave, packer.unpack_from(self.buffer, offset))
+            self._assign(slave, self._inputs)
             slave._dirty = True
             ints[_PENDING] = 0
 
@@ -286,15 +284,20 @@ class SharedValues:
     def _read_steps(self, slave) -> None:
         """Bring the slave up to the steps taken in compiled code: its inputs and outputs
         from the block, its time, its dirty flag and its model's state (``_read_shared_step``)."""
-        for packer in (self._inputs, self._outputs):
-            if packer is not None:
-                values, offset, _, assign = packer
-                assign(slave, values.unpack_from(self.buffer, offset))
+        self._assign(slave, self._inputs)
+        self._assign(slave, self._outputs)
         ints = self._ints
         slave._dirty = bool(ints[_DIRTY])
         slave._time = self.step.time
         slave._read_shared_step(self.step)
         ints[_STALE] = 0
+
+    def _assign(self, slave, packer) -> None:
+        """Set the slave's attributes of one group of values from the block (``packer``: the
+        group's (packer, offset, getter, setter); None: an empty group)."""
+        if packer is not None:
+            values, offset, _, assign = packer
+            assign(slave, values.unpack_from(self.buffer, offset))
 
     def stop(self) -> None:
         """Send every later call through Python (the state code -1).

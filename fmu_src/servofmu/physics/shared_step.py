@@ -127,8 +127,7 @@ class SharedStep:
             return self.failed(exc)
         if not taken:
             return self.fallback(t, h)
-        if self.header[PENDING]:
-            self.header[PENDING] = 0
+        self.header[PENDING] = 0  # the inputs were read here
         if not self.stepped:
             self.header[DIRTY] = 0
         self.header[STALE] = 1
